@@ -1,0 +1,25 @@
+include(CMakePackageConfigHelpers)
+
+set(TEXSPLAT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/texsplat)
+
+install(TARGETS texsplat_scenegraph texsplat_nodes texsplat_octree
+        EXPORT texsplatTargets
+        ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
+        RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+foreach(folder scenegraph nodes octree)
+    install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/
+            DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/texsplat/${folder}
+            FILES_MATCHING PATTERN "*.h"
+            PATTERN "detail" EXCLUDE)
+endforeach()
+install(EXPORT texsplatTargets NAMESPACE texsplat:: DESTINATION ${TEXSPLAT_INSTALL_CMAKEDIR})
+
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/texsplatConfig.cmake.in
+    ${PROJECT_BINARY_DIR}/texsplatConfig.cmake
+    INSTALL_DESTINATION ${TEXSPLAT_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/texsplatConfigVersion.cmake
+    COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/texsplatConfig.cmake
+              ${PROJECT_BINARY_DIR}/texsplatConfigVersion.cmake
+        DESTINATION ${TEXSPLAT_INSTALL_CMAKEDIR})

@@ -1,0 +1,15 @@
+#!/usr/bin/env bash
+# Installs everything texsplat needs to build, test and run, from Debian 12's packages.
+# Run as root on a fresh Debian 12 machine. Safe to run again.
+set -euo pipefail
+export DEBIAN_FRONTEND=noninteractive
+packages=(
+    cmake ninja-build g++ pkg-config
+    libglm-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0
+    libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libopenexr-dev libstb-dev
+    libcli11-dev libglfw3-dev libimgui-dev
+    libgtest-dev libbenchmark-dev libcoin-dev
+    clang libclang-rt-14-dev xvfb
+)
+apt-get update
+apt-get install -y --no-install-recommends "${packages[@]}"

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Builds and runs the whole test suite (the README's second command; CI runs it too).
+# Stages: ci (optimized, -Werror, asserts on), asan (ASan + UBSan over the same tests),
+# fuzz (clang libFuzzer targets, a bounded run each). Each stage prints its own timing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+jobs=$(nproc)
+stage() { printf '\n=== %s (%s) ===\n' "$1" "$(date -u +%H:%M:%S)"; }
+
+stage "build and test: ci preset"
+cmake --preset ci
+cmake --build --preset ci -j "$jobs"
+ctest --preset ci -j "$jobs"
+
+stage "build and test: asan preset (AddressSanitizer + UndefinedBehaviorSanitizer)"
+cmake --preset asan
+cmake --build --preset asan -j "$jobs"
+ctest --preset asan -j "$jobs"
+
+stage "fuzz: bounded libFuzzer runs"
+cmake --preset fuzz
+cmake --build --preset fuzz -j "$jobs"
+bash scripts/fuzz.sh build/fuzz "${TEXSPLAT_FUZZ_SECONDS:-60}"
+stage "done"
