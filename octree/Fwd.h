@@ -1,0 +1,21 @@
+#pragma once
+
+/// @file
+/// @brief Forward declarations of the octree library (namespace texsplat::octree).
+
+namespace texsplat::octree {
+
+class ClassifiedGrid;
+class Cut;
+class Octree;
+class Refiner;
+class SliceOrder;
+class SplatList;
+class View;
+struct NodeRef;
+struct OctreeNode;
+struct RefineBudget;
+struct Splat;
+struct SplatVector;
+
+} // namespace texsplat::octree

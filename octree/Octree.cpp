@@ -1,0 +1,179 @@
+#include "octree/Octree.h"
+
+#include "scenegraph/Assert.h"
+#include "scenegraph/Error.h"
+
+#include <glm/common.hpp>
+
+#include <algorithm>
+#include <utility>
+
+namespace texsplat::octree {
+
+/// Running statistics of a block of voxels: enough to merge children exactly into a parent.
+/// The per-channel minimum and maximum give the exact largest deviation from the mean, which a
+/// bound built from the children's errors alone would only overestimate.
+struct Octree::Statistics {
+    glm::dvec4 sum{0.0};
+    glm::vec4 minimum{0.0f};
+    glm::vec4 maximum{0.0f};
+    std::uint64_t count = 0;
+    OctreeNode record;
+
+    void merge(const Statistics& other) {
+        minimum = count == 0 ? other.minimum : glm::min(minimum, other.minimum);
+        maximum = count == 0 ? other.maximum : glm::max(maximum, other.maximum);
+        sum += other.sum;
+        count += other.count;
+        record.nonEmptyCount += other.record.nonEmptyCount;
+    }
+
+    void finish() {
+        const glm::dvec4 mean = sum / static_cast<double>(count);
+        record.meanColor = glm::vec3(mean);
+        record.meanExtinction = static_cast<float>(mean.w);
+        double error = 0.0;
+        for (int channel = 0; channel < 4; ++channel) {
+            error = std::max({error, static_cast<double>(maximum[channel]) - mean[channel],
+                              mean[channel] - static_cast<double>(minimum[channel])});
+        }
+        record.error = static_cast<float>(error);
+    }
+};
+
+namespace {
+
+// Levels above 62 would overflow the 64-bit voxel coordinates of a node's block.
+constexpr int kMaxLevel = 62;
+
+} // namespace
+
+Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(grid)) {
+    if (!mGrid) {
+        throw DataError("Octree: no grid to build from");
+    }
+    const glm::u64vec3 dims = mGrid->dims();
+    const std::uint64_t largest = std::max({dims.x, dims.y, dims.z});
+    while ((std::uint64_t{1} << mRootLevel) < largest) {
+        ++mRootLevel;
+    }
+    TEXSPLAT_ASSERT(mRootLevel <= kMaxLevel, "Octree::Octree(): grid too large for 64 bits");
+    const Statistics root = build(mRootLevel, glm::u64vec3(0));
+    mIsEmpty = root.record.nonEmptyCount == 0;
+    if (mRootLevel > 0 && !mIsEmpty) {
+        mNodes.push_back(root.record);
+    }
+    mNodes.shrink_to_fit();
+}
+
+Octree::Statistics Octree::voxelStatistics(std::uint64_t index) const {
+    const glm::vec4 value = mGrid->voxel(index);
+    Statistics statistics;
+    statistics.sum = glm::dvec4(value);
+    statistics.minimum = value;
+    statistics.maximum = value;
+    statistics.count = 1;
+    statistics.record.meanColor = glm::vec3(value);
+    statistics.record.meanExtinction = value.w;
+    statistics.record.nonEmptyCount = mGrid->isEmptyVoxel(index) ? 0 : 1;
+    return statistics;
+}
+
+// Depth-first and post-order: a node's children are finished (and their own subtrees stored)
+// before the node appends its non-empty children contiguously, so siblings stay adjacent.
+Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
+    if (level == 0) {
+        return voxelStatistics(mGrid->index(coord));
+    }
+    const glm::u64vec3 dims = mGrid->dims();
+    Statistics statistics;
+    std::array<OctreeNode, 8> childRecords;
+    int childCount = 0;
+    for (int octant = 0; octant < 8; ++octant) {
+        const glm::u64vec3 child = childCoord(coord, octant);
+        const glm::u64vec3 begin = child << glm::u64vec3(level - 1);
+        if (begin.x >= dims.x || begin.y >= dims.y || begin.z >= dims.z) {
+            continue;
+        }
+        const Statistics childStatistics = build(level - 1, child);
+        statistics.merge(childStatistics);
+        if (childStatistics.record.nonEmptyCount > 0) {
+            statistics.record.childMask |= static_cast<std::uint8_t>(1u << octant);
+            childRecords[static_cast<std::size_t>(childCount++)] = childStatistics.record;
+        }
+    }
+    if (level >= 2) {
+        statistics.record.firstChild = mNodes.size();
+        mNodes.insert(mNodes.end(), childRecords.begin(), childRecords.begin() + childCount);
+    }
+    statistics.finish();
+    return statistics;
+}
+
+NodeRef Octree::root() const {
+    TEXSPLAT_ASSERT(!mIsEmpty, "Octree::root(): an empty octree has no root");
+    NodeRef root;
+    root.level = mRootLevel;
+    root.index = mRootLevel == 0 ? 0 : mNodes.size() - 1;
+    return root;
+}
+
+OctreeNode Octree::node(const NodeRef& node) const {
+    if (node.level > 0) {
+        return mNodes[static_cast<std::size_t>(node.index)];
+    }
+    const glm::vec4 value = mGrid->voxel(node.index);
+    OctreeNode voxel;
+    voxel.meanColor = glm::vec3(value);
+    voxel.meanExtinction = value.w;
+    voxel.nonEmptyCount = mGrid->isEmptyVoxel(node.index) ? 0 : 1;
+    return voxel;
+}
+
+int Octree::children(const NodeRef& node, std::array<NodeRef, 8>& children) const {
+    if (node.level == 0) {
+        return 0;
+    }
+    const unsigned mask = mNodes[static_cast<std::size_t>(node.index)].childMask;
+    int count = 0;
+    for (int octant = 0; octant < 8; ++octant) {
+        if ((mask & (1u << octant)) != 0) {
+            children[static_cast<std::size_t>(count++)] = child(node, octant);
+        }
+    }
+    return count;
+}
+
+glm::u64vec3 Octree::voxelBegin(const NodeRef& node) const {
+    return node.coord << glm::u64vec3(node.level);
+}
+
+glm::u64vec3 Octree::voxelEnd(const NodeRef& node) const {
+    return glm::min((node.coord + std::uint64_t{1}) << glm::u64vec3(node.level), mGrid->dims());
+}
+
+std::uint64_t Octree::voxelCount(const NodeRef& node) const {
+    const glm::u64vec3 extent = voxelEnd(node) - voxelBegin(node);
+    return extent.x * extent.y * extent.z;
+}
+
+glm::dvec3 Octree::center(const NodeRef& node) const {
+    return mGrid->toWorld(
+        (glm::dvec3(voxelBegin(node)) + glm::dvec3(voxelEnd(node)) - 1.0) * 0.5);
+}
+
+glm::dvec3 Octree::cellMin(const NodeRef& node) const {
+    return mGrid->toWorld(glm::dvec3(voxelBegin(node)) - 0.5);
+}
+
+glm::dvec3 Octree::cellMax(const NodeRef& node) const {
+    return mGrid->toWorld(glm::dvec3(voxelEnd(node)) - 0.5);
+}
+
+glm::dvec3 Octree::splitPlanes(const NodeRef& node) const {
+    TEXSPLAT_ASSERT(node.level > 0, "Octree::splitPlanes(): a voxel has no children");
+    const glm::u64vec3 half = voxelBegin(node) + (std::uint64_t{1} << (node.level - 1));
+    return mGrid->toWorld(glm::dvec3(glm::min(half, voxelEnd(node))) - 0.5);
+}
+
+} // namespace texsplat::octree

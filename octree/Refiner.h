@@ -1,0 +1,81 @@
+#pragma once
+
+#include "octree/Cut.h"
+#include "octree/NodeRef.h"
+#include "octree/View.h"
+
+#include <cstdint>
+#include <limits>
+#include <queue>
+#include <vector>
+
+namespace texsplat::octree {
+
+/// @brief How far one `Refiner::refine()` step may go.
+struct RefineBudget {
+    /// @brief The cut never grows beyond this many splats. A time budget is turned into splats
+    /// by the caller from the backend's measured rate (splats per second), which keeps the cut a
+    /// function of its inputs: the same budget always gives the same cut.
+    std::uint64_t maxSplats = std::numeric_limits<std::uint64_t>::max();
+    /// @brief At most this many splits in this step, so an idle callback stays short.
+    std::uint64_t maxSplits = std::numeric_limits<std::uint64_t>::max();
+
+    /// @brief The splat budget of a frame that may take @p seconds on a backend that draws
+    /// @p splatsPerSecond (measured by the caller), with no limit on splits per step.
+    /// @throws DataError when either value is negative or not finite, or the rate is zero.
+    [[nodiscard]] static RefineBudget forTime(double seconds, double splatsPerSecond);
+};
+
+/// @brief Progressive refinement of a cut for one view (Laur & Hanrahan 1991): repeatedly
+/// split the node of the cut with the largest `error * projected size` until the budget is met.
+///
+/// Made to be driven in steps by an IdleSensor: the viewer shows the coarse cut while the user
+/// interacts and calls `refine()` while idle, redrawing `cut()` after each step. The order is
+/// deterministic: ties in priority are broken by node index, so equal inputs give equal cuts.
+/// Nodes with zero priority (uniform blocks, blocks behind the eye) are never split: splitting
+/// them would cost splats without reducing any error.
+class Refiner {
+public:
+    /// @brief Starts from the coarsest cut (the root alone) of @p octree.
+    Refiner(const Octree& octree, const View& view);
+
+    /// @brief Continues from @p cut, e.g. one chosen by error threshold.
+    Refiner(Cut cut, const View& view);
+
+    /// @brief Splits nodes, largest priority first, while the next split keeps the cut within
+    /// `budget.maxSplats` and fewer than `budget.maxSplits` splits were made. Stops at the
+    /// first node whose split does not fit, so a larger budget refines the same cut further.
+    /// @return the number of splits made.
+    std::uint64_t refine(const RefineBudget& budget);
+
+    /// @brief Whether no node is left worth splitting (every candidate has priority 0).
+    [[nodiscard]] bool isComplete() const;
+
+    /// @brief The current cut.
+    [[nodiscard]] const Cut& cut() const { return mCut; }
+
+    /// @brief `error * projected size` of @p node for this refiner's view: the node's error
+    /// times its largest cell extent (orthographic) or that extent over its distance to the eye
+    /// (perspective, at most 2 for a node around the eye; 0 behind the eye).
+    [[nodiscard]] double priority(const NodeRef& node) const;
+
+private:
+    struct Candidate {
+        double priority;
+        NodeRef node;
+    };
+    struct LowerPriority {
+        bool operator()(const Candidate& a, const Candidate& b) const {
+            return a.priority < b.priority ||
+                   (a.priority == b.priority && a.node.index > b.node.index);
+        }
+    };
+
+    void push(const NodeRef& node);
+
+    Cut mCut;
+    View mView;
+    std::priority_queue<Candidate, std::vector<Candidate>, LowerPriority> mCandidates;
+};
+
+} // namespace texsplat::octree

@@ -1,0 +1,70 @@
+#include "octree/View.h"
+
+#include "scenegraph/Error.h"
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <string>
+
+namespace texsplat::octree {
+
+namespace {
+
+std::string vectorText(glm::dvec3 v) {
+    std::ostringstream text;
+    text << "(" << v.x << ", " << v.y << ", " << v.z << ")";
+    return text.str();
+}
+
+bool isFinite(glm::dvec3 v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::dvec3 checkedDirection(glm::dvec3 direction) {
+    // Scaling by the largest component first keeps huge and denormal directions normalizable.
+    const glm::dvec3 magnitude = glm::abs(direction);
+    const double largest = std::max({magnitude.x, magnitude.y, magnitude.z});
+    if (!isFinite(direction) || !(largest > 0.0)) {
+        throw DataError("View: direction must be finite and non-zero, got " +
+                        vectorText(direction));
+    }
+    return glm::normalize(direction / largest);
+}
+
+} // namespace
+
+View::View(Projection projection, glm::dvec3 direction, glm::dvec3 eye)
+    : mProjection(projection), mDirection(direction), mEye(eye) {}
+
+View View::orthographic(glm::dvec3 direction) {
+    return View(Projection::Orthographic, checkedDirection(direction), glm::dvec3(0.0));
+}
+
+View View::perspective(glm::dvec3 eye, glm::dvec3 direction) {
+    if (!isFinite(eye)) {
+        throw DataError("View: eye must be finite, got " + vectorText(eye));
+    }
+    return View(Projection::Perspective, checkedDirection(direction), eye);
+}
+
+double View::depth(glm::dvec3 point) const {
+    return glm::dot(point - mEye, mDirection);
+}
+
+bool View::isBoxBehindEye(glm::dvec3 low, glm::dvec3 high) const {
+    if (!isPerspective()) {
+        return false;
+    }
+    // The corner farthest along the direction takes, per axis, the upper face when the
+    // direction's component is positive.
+    const glm::dvec3 farthest(mDirection.x > 0.0 ? high.x : low.x,
+                              mDirection.y > 0.0 ? high.y : low.y,
+                              mDirection.z > 0.0 ? high.z : low.z);
+    return depth(farthest) <= 0.0;
+}
+
+} // namespace texsplat::octree

@@ -1,0 +1,58 @@
+#pragma once
+
+#include <glm/ext/vector_double3.hpp>
+
+namespace texsplat::octree {
+
+/// @brief What the octree needs to know of a camera to order and cull splats: the projection,
+/// the viewing direction and, for a perspective camera, the eye position (world space).
+class View {
+public:
+    /// @brief The two projections of Inventor's cameras.
+    enum class Projection { Orthographic, Perspective };
+
+    /// @brief A parallel projection looking along @p direction.
+    /// @throws DataError when the direction is zero or not finite.
+    [[nodiscard]] static View orthographic(glm::dvec3 direction);
+
+    /// @brief A perspective projection from @p eye, looking along @p direction.
+    /// @throws DataError when the eye is not finite or the direction is zero or not finite.
+    [[nodiscard]] static View perspective(glm::dvec3 eye, glm::dvec3 direction);
+
+    /// @brief The projection.
+    [[nodiscard]] Projection projection() const { return mProjection; }
+
+    /// @brief Whether the projection is perspective.
+    [[nodiscard]] bool isPerspective() const { return mProjection == Projection::Perspective; }
+
+    /// @brief Unit viewing direction (from the eye into the scene).
+    [[nodiscard]] glm::dvec3 direction() const { return mDirection; }
+
+    /// @brief Eye position; meaningful for a perspective view only.
+    [[nodiscard]] glm::dvec3 eye() const { return mEye; }
+
+    /// @brief Whether, along world axis @p axis, the far side of the plane `axis = planePosition`
+    /// is the upper side (larger coordinates). For an orthographic view this depends only on the
+    /// direction; for a perspective view on which side of the plane the eye is. A view parallel
+    /// to the plane, or an eye on it, sees neither side behind the other: the answer is "upper".
+    [[nodiscard]] bool isUpperSideFar(int axis, double planePosition) const {
+        return isPerspective() ? mEye[axis] <= planePosition : mDirection[axis] >= 0.0;
+    }
+
+    /// @brief Signed distance of @p point in front of the eye plane along the view direction
+    /// (perspective) or its depth along the direction (orthographic, from the world origin).
+    [[nodiscard]] double depth(glm::dvec3 point) const;
+
+    /// @brief Whether the axis-aligned box [@p low, @p high] lies wholly behind the eye plane of
+    /// a perspective view (never for an orthographic view): nothing in it can be projected.
+    [[nodiscard]] bool isBoxBehindEye(glm::dvec3 low, glm::dvec3 high) const;
+
+private:
+    View(Projection projection, glm::dvec3 direction, glm::dvec3 eye);
+
+    Projection mProjection;
+    glm::dvec3 mDirection;
+    glm::dvec3 mEye;
+};
+
+} // namespace texsplat::octree

@@ -1,0 +1,70 @@
+#include "octree/ClassifiedGrid.h"
+
+#include "scenegraph/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+using texsplat::DataError;
+using texsplat::octree::ClassifiedGrid;
+
+namespace {
+
+template <typename Function> std::string errorOf(Function function) {
+    try {
+        function();
+    } catch (const DataError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+} // namespace
+
+TEST(ClassifiedGrid, startsEmptyWithLinearIndexXFastest) {
+    ClassifiedGrid grid({5, 7, 3}, {1.0, 2.0, 0.5}, {10.0, 0.0, -1.0});
+    EXPECT_EQ(grid.voxelCount(), 105u);
+    EXPECT_EQ(grid.index({1, 2, 1}), 1u + 5u * (2u + 7u * 1u));
+    EXPECT_TRUE(grid.isEmptyVoxel(grid.index({4, 6, 2})));
+    grid.setVoxel({4, 6, 2}, {0.0f, 0.0f, 0.0f}, 0.25f);
+    EXPECT_FALSE(grid.isEmptyVoxel(grid.index({4, 6, 2})));
+    EXPECT_EQ(grid.voxel(grid.index({4, 6, 2})).w, 0.25f);
+    EXPECT_EQ(grid.toWorld({4.0, 6.0, 2.0}), glm::dvec3(14.0, 12.0, 0.0));
+}
+
+TEST(ClassifiedGrid, rejectsZeroDimensions) {
+    EXPECT_EQ(errorOf([] { ClassifiedGrid({4, 0, 2}, glm::dvec3(1.0), glm::dvec3(0.0)); }),
+              "ClassifiedGrid: dimensions must be positive, got 4x0x2");
+}
+
+TEST(ClassifiedGrid, rejectsUnaddressableVoxelCounts) {
+    const std::uint64_t huge = std::uint64_t{1} << 40;
+    EXPECT_EQ(errorOf([&] {
+                  ClassifiedGrid({huge, huge, 2}, glm::dvec3(1.0), glm::dvec3(0.0));
+              }),
+              "ClassifiedGrid: 1099511627776x1099511627776x2 voxels exceed the addressable "
+              "memory");
+}
+
+TEST(ClassifiedGrid, rejectsBadSpacingAndOrigin) {
+    EXPECT_EQ(errorOf([] { ClassifiedGrid({2, 2, 2}, {1.0, 0.0, 1.0}, glm::dvec3(0.0)); }),
+              "ClassifiedGrid: spacing must be finite and positive, got (1, 0, 1)");
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_EQ(errorOf([&] { ClassifiedGrid({2, 2, 2}, glm::dvec3(1.0), {0.0, nan, 0.0}); }),
+              "ClassifiedGrid: origin must be finite, got (0, nan, 0)");
+}
+
+TEST(ClassifiedGrid, rejectsNegativeOrNonFiniteValues) {
+    ClassifiedGrid grid({2, 2, 2}, glm::dvec3(1.0), glm::dvec3(0.0));
+    EXPECT_EQ(errorOf([&] { grid.setVoxel({1, 0, 1}, {0.0f, -1.0f, 0.0f}, 1.0f); }),
+              "ClassifiedGrid: voxel (1, 0, 1): color must be finite and >= 0, got -1");
+    EXPECT_EQ(errorOf([&] {
+                  grid.setVoxel({0, 1, 0}, glm::vec3(0.5f),
+                                std::numeric_limits<float>::infinity());
+              }),
+              "ClassifiedGrid: voxel (0, 1, 0): extinction must be finite and >= 0, got inf");
+    EXPECT_TRUE(grid.isEmptyVoxel(grid.index({1, 0, 1})));
+}

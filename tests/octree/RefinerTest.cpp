@@ -1,0 +1,162 @@
+#include "octree/Refiner.h"
+
+#include "OctreeTestSupport.h"
+#include "octree/CutTraversal.h"
+#include "octree/Octree.h"
+#include "scenegraph/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <limits>
+#include <vector>
+
+using texsplat::octree::ClassifiedGrid;
+using texsplat::octree::Cut;
+using texsplat::octree::NodeRef;
+using texsplat::octree::Octree;
+using texsplat::octree::RefineBudget;
+using texsplat::octree::Refiner;
+using texsplat::octree::View;
+using texsplat::octree::test::randomGrid;
+
+namespace {
+
+RefineBudget splats(std::uint64_t maxSplats) {
+    RefineBudget budget;
+    budget.maxSplats = maxSplats;
+    return budget;
+}
+
+std::vector<NodeRef> nodesOf(const Cut& cut) {
+    std::vector<NodeRef> nodes;
+    traverseBackToFront(cut, View::orthographic({0.0, 0.0, 1.0}),
+                        [&](const NodeRef& node) { nodes.push_back(node); });
+    return nodes;
+}
+
+} // namespace
+
+TEST(Refiner, meetsTheSplatBudgetAndStopsAtTheFirstSplitThatDoesNotFit) {
+    const Octree octree(randomGrid(glm::u64vec3(16), 2));
+    const View view = View::orthographic({1.0, 0.5, 0.2});
+    std::uint64_t previous = 0;
+    for (const std::uint64_t budget : {1u, 7u, 50u, 400u, 2000u}) {
+        SCOPED_TRACE(budget);
+        Refiner refiner(octree, view);
+        refiner.refine(splats(budget));
+        const Cut& cut = refiner.cut();
+        EXPECT_LE(cut.splatCount(), budget);
+        EXPECT_GE(cut.splatCount(), previous) << "a larger budget refines the same cut further";
+        previous = cut.splatCount();
+        EXPECT_EQ(nodesOf(cut).size(), cut.splatCount());
+        ASSERT_FALSE(refiner.isComplete());
+        // It stopped because the best remaining split does not fit; one split adds at most 7.
+        EXPECT_EQ(refiner.refine(splats(budget)), 0u);
+        EXPECT_GT(cut.splatCount() + 7, budget);
+        EXPECT_EQ(refiner.refine(RefineBudget{budget + 7, 1}), 1u);
+    }
+}
+
+TEST(Refiner, splitsTheLargestErrorTimesSizeFirst) {
+    // Two 8^3 halves: the upper one varies, the lower one is uniform. The coarsest refinement
+    // step splits the root, the next one the varying half, never the uniform half.
+    auto grid = std::make_shared<ClassifiedGrid>(glm::u64vec3(16, 8, 8), glm::dvec3(1.0),
+                                                 glm::dvec3(0.0));
+    for (std::uint64_t k = 0; k < 8; ++k) {
+        for (std::uint64_t j = 0; j < 8; ++j) {
+            for (std::uint64_t i = 0; i < 16; ++i) {
+                const float value = i < 8 ? 0.5f : static_cast<float>((i + j + k) % 3) * 0.5f;
+                grid->setVoxel({i, j, k}, glm::vec3(value), 1.0f);
+            }
+        }
+    }
+    const Octree octree(grid);
+    Refiner refiner(octree, View::orthographic({0.0, 0.0, 1.0}));
+    EXPECT_EQ(refiner.refine(RefineBudget{1000, 2}), 2u);
+    const std::vector<NodeRef> nodes = nodesOf(refiner.cut());
+    std::uint64_t uniformLeft = 0;
+    for (const NodeRef& node : nodes) {
+        if (octree.voxelBegin(node).x == 0) {
+            EXPECT_EQ(node.level, 3) << "the uniform half stays one splat";
+            EXPECT_EQ(refiner.priority(node), 0.0);
+            ++uniformLeft;
+        } else {
+            EXPECT_EQ(node.level, 2);
+        }
+    }
+    EXPECT_EQ(uniformLeft, 1u);
+    EXPECT_EQ(nodes.size(), 9u);
+}
+
+TEST(Refiner, stepsAddUpToOneLargeRefinement) {
+    const Octree octree(randomGrid({13, 16, 11}, 4));
+    const View view = View::perspective({30.0, 20.0, -15.0}, {-1.0, -0.5, 1.0});
+    Refiner stepped(octree, view);
+    std::uint64_t steps = 0;
+    while (!stepped.isComplete() && stepped.refine(RefineBudget{800, 5}) > 0) {
+        ++steps;
+    }
+    Refiner once(octree, view);
+    once.refine(splats(800));
+    EXPECT_GT(steps, 10u);
+    EXPECT_TRUE(stepped.cut() == once.cut()) << "the same cut, however it is reached";
+    EXPECT_EQ(stepped.cut().splatCount(), once.cut().splatCount());
+}
+
+TEST(Refiner, unlimitedBudgetReachesTheZeroErrorCut) {
+    const Octree octree(randomGrid({5, 7, 3}, 8));
+    Refiner refiner(octree, View::orthographic({0.2, 0.3, -1.0}));
+    refiner.refine(RefineBudget{});
+    EXPECT_TRUE(refiner.isComplete());
+    EXPECT_TRUE(refiner.cut() == Cut::byError(octree, 0.0));
+}
+
+TEST(Refiner, continuesFromAThresholdCut) {
+    const Octree octree(randomGrid(glm::u64vec3(16), 10));
+    const Cut start = Cut::byError(octree, 0.7);
+    Refiner refiner(start, View::orthographic({0.0, 1.0, 0.0}));
+    EXPECT_EQ(refiner.cut().splatCount(), start.splatCount());
+    refiner.refine(splats(start.splatCount() + 100));
+    EXPECT_GT(refiner.cut().splatCount(), start.splatCount());
+    EXPECT_LE(refiner.cut().splatCount(), start.splatCount() + 100);
+}
+
+TEST(Refiner, neverSplitsNodesBehindTheEye) {
+    const Octree octree(randomGrid(glm::u64vec3(16), 10));
+    // The eye looks away from the whole grid: nothing is worth refining.
+    Refiner refiner(octree, View::perspective({-5.0, 8.0, 8.0}, {-1.0, 0.0, 0.0}));
+    EXPECT_TRUE(refiner.isComplete());
+    EXPECT_EQ(refiner.refine(RefineBudget{}), 0u);
+    EXPECT_EQ(refiner.cut().splatCount(), 1u);
+}
+
+TEST(Refiner, isDeterministic) {
+    const Octree first(randomGrid(glm::u64vec3(16), 31));
+    const Octree second(randomGrid(glm::u64vec3(16), 31));
+    const View view = View::perspective({8.0, 7.0, 6.0}, {1.0, 0.0, 0.0});
+    Refiner a(first, view);
+    Refiner b(first, view);
+    Refiner c(second, view);
+    a.refine(splats(777));
+    b.refine(splats(777));
+    c.refine(splats(777));
+    EXPECT_TRUE(a.cut() == b.cut());
+    std::vector<std::uint64_t> orderA;
+    std::vector<std::uint64_t> orderC;
+    traverseBackToFront(a.cut(), view, [&](const NodeRef& node) { orderA.push_back(node.index); });
+    traverseBackToFront(c.cut(), view, [&](const NodeRef& node) { orderC.push_back(node.index); });
+    EXPECT_EQ(orderA, orderC) << "rebuilding the octree from the same data gives the same cut";
+}
+
+TEST(Refiner, timeBudgetBecomesASplatBudget) {
+    EXPECT_EQ(RefineBudget::forTime(0.02, 2.0e6).maxSplats, 40000u);
+    EXPECT_EQ(RefineBudget::forTime(1.0e300, 1.0e300).maxSplats,
+              std::numeric_limits<std::uint64_t>::max());
+    try {
+        (void)RefineBudget::forTime(-1.0, 1.0e6);
+        FAIL() << "expected a DataError";
+    } catch (const texsplat::DataError& error) {
+        EXPECT_STREQ(error.what(), "RefineBudget: time budget needs finite seconds >= 0 and a "
+                                   "finite rate > 0, got -1 s at 1e+06 splats/s");
+    }
+}

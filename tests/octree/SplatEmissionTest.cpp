@@ -1,0 +1,105 @@
+#include "octree/SplatEmission.h"
+
+#include "OctreeTestSupport.h"
+#include "octree/Cut.h"
+#include "octree/CutTraversal.h"
+#include "octree/Octree.h"
+#include "octree/Refiner.h"
+#include "octree/Splat.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+using texsplat::octree::ClassifiedGrid;
+using texsplat::octree::Cut;
+using texsplat::octree::NodeRef;
+using texsplat::octree::Octree;
+using texsplat::octree::Splat;
+using texsplat::octree::SplatList;
+using texsplat::octree::View;
+using texsplat::octree::test::randomGrid;
+
+TEST(SplatEmission, emitsOneSplatPerCutNodeInTraversalOrder) {
+    const Octree octree(randomGrid({13, 16, 11}, 4, 0.2f, true, {1.0, 0.5, 2.0}, {3.0, 0.0, 0.0}));
+    const Cut cut = Cut::byError(octree, 0.55);
+    const View view = View::orthographic({0.4, -1.0, 0.3});
+    SplatList splats;
+    emitSplats(cut, view, splats);
+    std::vector<NodeRef> nodes;
+    traverseBackToFront(cut, view, [&](const NodeRef& node) { nodes.push_back(node); });
+    ASSERT_EQ(splats.size(), cut.splatCount());
+    ASSERT_EQ(splats.size(), nodes.size());
+    EXPECT_FALSE(splats.hasVectors());
+    bool coarse = false;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+        const Splat& splat = splats.splats()[i];
+        const glm::u64vec3 extent = octree.voxelEnd(nodes[i]) - octree.voxelBegin(nodes[i]);
+        EXPECT_EQ(splat.position, glm::vec3(octree.center(nodes[i])));
+        EXPECT_EQ(splat.size, static_cast<float>(std::max({extent.x, extent.y, extent.z})));
+        EXPECT_EQ(splat.color, octree.node(nodes[i]).meanColor);
+        EXPECT_EQ(splat.extinction, octree.node(nodes[i]).meanExtinction);
+        coarse = coarse || splat.size > 1.0f;
+    }
+    EXPECT_TRUE(coarse) << "the cut has coarse nodes";
+}
+
+TEST(SplatEmission, coarseSplatOfAFullNodeIsSizedByItsLevel) {
+    auto grid = std::make_shared<ClassifiedGrid>(glm::u64vec3(4), glm::dvec3(0.5),
+                                                 glm::dvec3(1.0));
+    grid->setVoxel({0, 0, 0}, glm::vec3(0.8f), 1.6f);
+    const Octree octree(grid);
+    SplatList splats;
+    emitSplats(Cut(octree), View::orthographic({0.0, 0.0, 1.0}), splats);
+    ASSERT_EQ(splats.size(), 1u);
+    const Splat& root = splats.splats()[0];
+    EXPECT_EQ(root.size, 4.0f);
+    EXPECT_EQ(root.position, glm::vec3(1.75f));
+    EXPECT_FLOAT_EQ(root.color.x, 0.8f / 64.0f);
+    EXPECT_FLOAT_EQ(root.extinction, 1.6f / 64.0f);
+}
+
+TEST(SplatEmission, voxelSplatsSkipEmptyVoxelsAndFollowTheSliceOrder) {
+    const auto grid = randomGrid({5, 7, 3}, 3, 0.4f, false, {1.0, 2.0, 0.5});
+    const View view = View::orthographic({0.0, 0.0, -1.0});
+    SplatList splats;
+    emitVoxelSplats(*grid, view, splats);
+    std::uint64_t nonEmpty = 0;
+    for (std::uint64_t index = 0; index < grid->voxelCount(); ++index) {
+        nonEmpty += grid->isEmptyVoxel(index) ? 0 : 1;
+    }
+    ASSERT_EQ(splats.size(), nonEmpty);
+    float previousZ = -1.0f;
+    for (const Splat& splat : splats.splats()) {
+        EXPECT_EQ(splat.size, 1.0f);
+        EXPECT_GT(splat.extinction, 0.0f);
+        EXPECT_GE(splat.position.z, previousZ) << "looking down -z, low z is far";
+        previousZ = splat.position.z;
+    }
+}
+
+TEST(SplatEmission, voxelSplatsBehindTheEyeAreCulled) {
+    const auto grid = randomGrid({6, 6, 6}, 3, 0.0f, false);
+    SplatList splats;
+    emitVoxelSplats(*grid, View::perspective({2.5, 2.0, 2.0}, {1.0, 0.0, 0.0}), splats);
+    EXPECT_EQ(splats.size(), 3u * 36u) << "only the voxels with x > 2.5";
+    for (const Splat& splat : splats.splats()) {
+        EXPECT_GT(splat.position.x, 2.5f);
+    }
+}
+
+// The example of docs/octree.md, compiled here so that it cannot rot.
+TEST(SplatEmission, documentationExample) {
+    auto grid = std::make_shared<ClassifiedGrid>(glm::u64vec3(64, 64, 32), glm::dvec3(1.0),
+                                                 glm::dvec3(0.0));
+    grid->setVoxel({10, 20, 5}, {0.2f, 0.1f, 0.0f}, 0.5f); // normally from a TransferFunction
+    const Octree octree(grid);                             // build once, rebuild on change
+
+    const View view = View::perspective({32.0, -100.0, 16.0}, {0.0, 1.0, 0.0});
+    texsplat::octree::Refiner refiner(octree, view);       // coarse first ...
+    refiner.refine({/*maxSplats=*/5000, /*maxSplits=*/100}); // ... then refine while idle
+
+    SplatList splats;
+    emitSplats(refiner.cut(), view, splats); // back to front, ready to upload
+    EXPECT_EQ(splats.size(), refiner.cut().splatCount());
+}

@@ -1,0 +1,64 @@
+#include "octree/View.h"
+
+#include "scenegraph/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+using texsplat::octree::View;
+
+namespace {
+
+template <typename Function> std::string errorOf(Function function) {
+    try {
+        function();
+    } catch (const texsplat::DataError& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+} // namespace
+
+TEST(View, normalizesTheDirection) {
+    const View view = View::orthographic({0.0, 3.0, 4.0});
+    EXPECT_FALSE(view.isPerspective());
+    EXPECT_DOUBLE_EQ(view.direction().y, 0.6);
+    EXPECT_DOUBLE_EQ(view.direction().z, 0.8);
+}
+
+TEST(View, farSideFollowsTheDirectionOrTheEye) {
+    const View orthographic = View::orthographic({-1.0, 0.0, 1.0});
+    EXPECT_FALSE(orthographic.isUpperSideFar(0, 100.0));
+    EXPECT_TRUE(orthographic.isUpperSideFar(2, -100.0));
+    const View perspective = View::perspective({5.0, 5.0, 5.0}, {0.0, 0.0, 1.0});
+    EXPECT_TRUE(perspective.isUpperSideFar(0, 6.0));
+    EXPECT_FALSE(perspective.isUpperSideFar(0, 4.0));
+}
+
+TEST(View, boxesBehindTheEyePlane) {
+    const View view = View::perspective({0.0, 0.0, 0.0}, {0.0, 0.0, 1.0});
+    EXPECT_TRUE(view.isBoxBehindEye({-1.0, -1.0, -3.0}, {1.0, 1.0, -0.5}));
+    EXPECT_FALSE(view.isBoxBehindEye({-1.0, -1.0, -3.0}, {1.0, 1.0, 0.5}));
+    EXPECT_FALSE(View::orthographic({0.0, 0.0, 1.0}).isBoxBehindEye(glm::dvec3(-2.0),
+                                                                    glm::dvec3(-1.0)));
+    EXPECT_DOUBLE_EQ(view.depth({3.0, 4.0, 2.0}), 2.0);
+}
+
+TEST(View, rejectsZeroOrNonFiniteVectors) {
+    EXPECT_EQ(errorOf([] { (void)View::orthographic(glm::dvec3(0.0)); }),
+              "View: direction must be finite and non-zero, got (0, 0, 0)");
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_EQ(errorOf([&] { (void)View::perspective({0.0, inf, 0.0}, {1.0, 0.0, 0.0}); }),
+              "View: eye must be finite, got (0, inf, 0)");
+}
+
+TEST(View, normalizesHugeAndTinyDirections) {
+    const View huge = View::orthographic({1.0e308, 1.0e308, 0.0});
+    EXPECT_DOUBLE_EQ(huge.direction().x, std::sqrt(0.5));
+    const View tiny = View::orthographic({0.0, 0.0, -1.0e-320});
+    EXPECT_DOUBLE_EQ(tiny.direction().z, -1.0);
+}
