@@ -1,0 +1,27 @@
+#pragma once
+
+/// @file
+/// @brief Forward declarations of the OpenGL layer (namespace texsplat::gl), for headers that
+/// only pass its objects by reference (the RenderAction's state, the viewer).
+
+namespace texsplat::gl {
+
+class Buffer;
+class Context;
+class EglContext;
+class Framebuffer;
+class ObjectName;
+class Program;
+class Texture2D;
+class Texture2DArray;
+class VertexArray;
+struct ContextInfo;
+struct EglContextOptions;
+struct TextureSampling;
+enum class EglPlatform;
+enum class FramebufferColor;
+enum class FramebufferDepth;
+enum class RowOrder;
+enum class TextureFormat;
+
+} // namespace texsplat::gl

@@ -1,0 +1,18 @@
+#include "scenegraph/gl/TextureFormat.h"
+
+namespace texsplat::gl {
+
+const char* toString(TextureFormat format) {
+    switch (format) {
+    case TextureFormat::R32F: return "R32F";
+    case TextureFormat::RG32F: return "RG32F";
+    case TextureFormat::RGBA32F: return "RGBA32F";
+    case TextureFormat::RGBA16F: return "RGBA16F";
+    case TextureFormat::RGBA8: return "RGBA8";
+    case TextureFormat::Depth24: return "DEPTH24";
+    case TextureFormat::Depth32F: return "DEPTH32F";
+    }
+    return "?";
+}
+
+} // namespace texsplat::gl
