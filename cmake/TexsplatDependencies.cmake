@@ -10,7 +10,10 @@ if(TEXSPLAT_WITH_OPENVDB)
     # Debian's OpenVDB 10 ships its Find module, not a config package; it also needs Boost
     # iostreams, which must be installed (libboost-iostreams-dev) or configuration fails.
     list(APPEND CMAKE_MODULE_PATH /usr/lib/x86_64-linux-gnu/cmake/OpenVDB)
+    # FindOpenVDB.cmake sets BUILD_SHARED_LIBS ON for its caller; keep the user's choice.
+    set(texsplat_shared_libs ${BUILD_SHARED_LIBS})
     find_package(OpenVDB REQUIRED)
+    set(BUILD_SHARED_LIBS ${texsplat_shared_libs})
 endif()
 if(TEXSPLAT_WITH_GLTF)
     find_package(TinyGLTF REQUIRED)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
+#include <unistd.h>
 
 namespace texsplat::test {
 
@@ -17,9 +18,11 @@ struct CommandOutput {
 };
 
 /// @brief Runs `texsplat <arguments>` through the shell (arguments are passed as written) and
-/// captures stdout and stderr separately.
+/// captures stdout and stderr separately. ctest runs tests in parallel processes, so the file
+/// that catches stderr is named after this process.
 inline CommandOutput runTexsplat(const std::string& arguments) {
-    const std::string errorFile = ::testing::TempDir() + "texsplat_stderr.txt";
+    const std::string errorFile =
+        ::testing::TempDir() + "texsplat_stderr_" + std::to_string(getpid()) + ".txt";
     const std::string command =
         std::string(TEXSPLAT_EXECUTABLE) + " " + arguments + " 2>" + errorFile;
     CommandOutput output;
@@ -37,6 +40,7 @@ inline CommandOutput runTexsplat(const std::string& arguments) {
             output.standardError.append(buffer.data(), count);
         fclose(errors);
     }
+    std::remove(errorFile.c_str());
     return output;
 }
 

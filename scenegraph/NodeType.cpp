@@ -1,0 +1,26 @@
+#include "scenegraph/NodeType.h"
+
+#include "scenegraph/Error.h"
+
+namespace texsplat::sg {
+
+NodeType::NodeType(std::string name, const NodeType* parent, Factory factory)
+    : mName(std::move(name)), mParent(parent), mFactory(factory) {}
+
+bool NodeType::isDerivedFrom(const NodeType& other) const {
+    for (const NodeType* type = this; type != nullptr; type = type->mParent) {
+        if (type == &other) {
+            return true;
+        }
+    }
+    return false;
+}
+
+std::shared_ptr<FieldContainer> NodeType::create() const {
+    if (mFactory == nullptr) {
+        throw DataError("cannot create a " + mName + ": it is an abstract type");
+    }
+    return mFactory();
+}
+
+} // namespace texsplat::sg

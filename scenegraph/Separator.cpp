@@ -1,0 +1,18 @@
+#include "scenegraph/Separator.h"
+
+#include "scenegraph/actions/Action.h"
+
+namespace texsplat::sg {
+
+void Separator::doAction(Action& action) {
+    State& state = action.state();
+    state.push();
+    // Pop also when a child throws, so the action's state stays balanced.
+    struct Pop {
+        State& state;
+        ~Pop() { state.pop(); }
+    } pop{state};
+    Group::doAction(action);
+}
+
+} // namespace texsplat::sg

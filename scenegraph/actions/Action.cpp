@@ -1,0 +1,48 @@
+#include "scenegraph/actions/Action.h"
+
+#include "scenegraph/Error.h"
+
+#include <string>
+
+namespace texsplat::sg {
+
+Action::~Action() = default;
+
+void Action::apply(Node& root) {
+    mState.reset();
+    mPath.clear();
+    mHasTerminated = false;
+    beginTraversal(root);
+    traverse(root);
+}
+
+void Action::traverse(Node& node) {
+    if (mPath.size() >= kMaxDepth) {
+        throw DataError("scene graph is nested deeper than the limit of " +
+                        std::to_string(kMaxDepth) + " levels (reached at " + node.describe() +
+                        " under " + mPath.front()->describe() + ")");
+    }
+    mPath.push_back(&node);
+    struct PopPath {
+        std::vector<Node*>& path;
+        ~PopPath() { path.pop_back(); }
+    } popPath{mPath};
+    if (MethodTable::Method method = mMethods->find(node.type())) {
+        method(*this, node);
+    } else {
+        node.doAction(*this);
+    }
+}
+
+Path Action::currentPath() const {
+    std::vector<Node::Ptr> nodes;
+    nodes.reserve(mPath.size());
+    for (Node* node : mPath) {
+        nodes.push_back(node->sharedNode());
+    }
+    return Path(std::move(nodes));
+}
+
+void Action::beginTraversal(Node& /*root*/) {}
+
+} // namespace texsplat::sg

@@ -1,0 +1,126 @@
+#pragma once
+
+#include "scenegraph/actions/Action.h"
+#include "scenegraph/gl/Framebuffer.h"
+
+#include <glm/vec4.hpp>
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <string_view>
+#include <vector>
+
+namespace texsplat::sg {
+
+/// @brief The steps a frame spends its time in, as `texsplat render --time-report` lists them.
+enum class RenderPhase {
+    Load,       ///< reading or generating volume data and meshes
+    Classify,   ///< transfer function over the grid, octree build
+    Order,      ///< back-to-front splat list for the view (slice order or octree cut)
+    Upload,     ///< buffers and textures to GL
+    Draw,       ///< both passes, until the GL finished them (glFinish)
+    ReadBack,   ///< framebuffer to CPU memory
+};
+
+/// @brief Number of RenderPhase values.
+inline constexpr std::size_t kRenderPhaseCount = 6;
+
+/// @brief Lower-case name of a phase ("read back"), for reports.
+std::string_view toString(RenderPhase phase);
+
+/// @brief Where one frame's time went and how much it drew.
+struct RenderStatistics {
+    std::array<double, kRenderPhaseCount> seconds{}; ///< wall seconds per RenderPhase
+    std::size_t splats = 0;    ///< splats drawn (instances)
+    std::size_t triangles = 0; ///< opaque triangles drawn (splat quads not counted)
+
+    /// @brief Seconds spent in `phase`.
+    double time(RenderPhase phase) const { return seconds[static_cast<std::size_t>(phase)]; }
+};
+
+/// @brief Draws a scene with OpenGL into an off-screen float framebuffer (DESIGN.md, "Data flow
+/// of one frame").
+///
+/// The traversal only *collects* work: node methods registered in `methods()` (by the nodes
+/// library) read the traversal state (camera, transform, transfer function, volume) and hand
+/// the action closures with everything they need, in two ordered lists. `render()` then draws:
+/// 1. the opaque list in traversal order, depth test and depth write on, no blending;
+/// 2. the splat list in traversal order, depth-tested against pass 1 but not writing depth,
+///    blended with premultiplied-alpha "over" (glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA)),
+///    each splat node's batch already back to front (Crawfis & Max 1993, section 3: "the
+///    splats are built up in back to front order").
+/// So a splat behind an opaque surface is hidden and one in front blends over it, whatever
+/// the order of the nodes in the graph. Splat batches of different nodes are composited in
+/// graph order, not interleaved by depth: put the farther volume first.
+///
+/// The action needs a current GL context for its whole life; it owns the framebuffer and
+/// keeps it between frames (the viewer re-renders into the same one).
+class RenderAction : public Action {
+public:
+    /// @brief A unit of work a node hands to the action; called once, with the framebuffer
+    /// bound and the pass's GL state set.
+    using DrawFunction = std::function<void()>;
+
+    /// @brief An action drawing into a new `width` x `height` framebuffer of `color` storage
+    /// and 32-bit float depth.
+    /// @throws GlError when no context is current or the size is beyond the driver's limit.
+    RenderAction(int width, int height,
+                 gl::FramebufferColor color = gl::FramebufferColor::Rgba32F);
+
+    /// @brief The table of this action; the nodes library adds its node types' render methods
+    /// (`nodes::registerNodeTypes()`). Unregistered nodes use `Node::doAction()`.
+    static MethodTable& methods();
+
+    /// @brief Traverses `root` to collect work, clears the framebuffer to the background and
+    /// runs the opaque pass, then the splat pass. Statistics start from zero.
+    /// @throws GlError when the GL reports an error during the frame.
+    void render(Node& root);
+
+    /// @brief Queues opaque geometry for pass 1 (during traversal).
+    void addOpaque(DrawFunction draw) { mOpaque.push_back(std::move(draw)); }
+
+    /// @brief Queues a back-to-front splat batch for pass 2 (during traversal).
+    void addSplats(DrawFunction draw) { mSplats.push_back(std::move(draw)); }
+
+    /// @brief The premultiplied color the framebuffer is cleared to; default transparent black.
+    void setBackground(const glm::vec4& color) { mBackground = color; }
+
+    /// @brief The clear color.
+    const glm::vec4& background() const { return mBackground; }
+
+    /// @brief The render target (color and depth of the last frame).
+    const gl::Framebuffer& framebuffer() const { return mFramebuffer; }
+
+    /// @brief Width over height of the framebuffer, what cameras need for their projection.
+    float aspectRatio() const;
+
+    /// @brief The last frame's statistics; nodes add their times and counts while traversing.
+    RenderStatistics& statistics() { return mStatistics; }
+
+    /// @brief Adds `seconds` to `phase` of the current frame's statistics.
+    void addTime(RenderPhase phase, double seconds);
+
+    /// @brief The color of the last frame, premultiplied RGBA floats, top row first; the time
+    /// counts as RenderPhase::ReadBack.
+    std::vector<float> readColor();
+
+    /// @brief Window-space depth in [0, 1] of the last frame (1: nothing opaque), top row
+    /// first; the time counts as RenderPhase::ReadBack.
+    std::vector<float> readDepth();
+
+protected:
+    /// @brief Empties the work lists.
+    void beginTraversal(Node& root) override;
+
+private:
+    void drawPasses();
+
+    gl::Framebuffer mFramebuffer;
+    glm::vec4 mBackground{0.0f};
+    std::vector<DrawFunction> mOpaque;
+    std::vector<DrawFunction> mSplats;
+    RenderStatistics mStatistics;
+};
+
+} // namespace texsplat::sg

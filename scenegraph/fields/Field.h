@@ -1,0 +1,118 @@
+#pragma once
+
+#include "scenegraph/Notifier.h"
+
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace texsplat::sg {
+
+/// @brief Base of every field type (SFFloat, MFVec3f, SFNode, ...): a named, typed value of a
+/// node or engine that can be observed, connected, read and written.
+///
+/// Generic code (reader, writer) handles any field through this interface: `typeName()`
+/// ("SFFloat"), `name()`, `isDefault()`, `readValue()`, `writeValue()`. Typed access is on the
+/// concrete field (`SFFloat::value()`, `setValue()`).
+///
+/// Setting a value clears the default flag and notifies, in order: the field's observers, the
+/// fields connected from it, and its container (which passes it on to parent nodes).
+///
+/// Connections: `connectFrom(field)` or `connectFrom(engineOutput)` makes this field follow a
+/// source of the same type; a connection that would close a cycle throws DataError naming the
+/// fields. A field connected from an engine output keeps that engine alive; a field-to-field
+/// connection does not own the source (it is dropped when the source dies).
+class Field : public Notifier {
+public:
+    ~Field() override;
+
+    /// @brief The Inventor type name, e.g. "SFFloat", "MFVec3f".
+    virtual std::string_view typeName() const = 0;
+
+    /// @brief The name under which the container registered it ("size"); empty if standalone.
+    const std::string& name() const { return mName; }
+
+    /// @brief The owning node or engine, nullptr for a standalone field.
+    FieldContainer* container() const { return mContainer; }
+
+    /// @brief "Type(name).field" for error messages, e.g. "Cube(box).size" ("Cube.size" for an
+    /// unnamed node, "<standalone>" without container).
+    std::string fullName() const;
+
+    /// @brief True while the field holds the default its container gave it (never set since);
+    /// the writer writes only fields that are not default. Values arriving through a
+    /// connection leave the flag as it is: the connection, not the value, is what is written.
+    bool isDefault() const { return mIsDefault; }
+
+    /// @brief Marks the value as default (or not) without changing it.
+    void setDefault(bool isDefault) { mIsDefault = isDefault; }
+
+    /// @brief Parses a value in Inventor ASCII syntax and sets it. Throws ParseError.
+    virtual void readValue(FieldValueReader& reader) = 0;
+
+    /// @brief Writes the value in Inventor ASCII syntax.
+    virtual void writeValue(FieldValueWriter& writer) const = 0;
+
+    /// @brief The value as one line of Inventor ASCII (`1 0 0`, `[ 1, 2 ]`); nodes appear as
+    /// `NULL` or their type name. For messages and tests; files are written by the writer.
+    std::string valueText() const;
+
+    /// @brief Copies the value of a field of the same type (`typeName()` equal).
+    virtual void copyValueFrom(const Field& other) = 0;
+
+    /// @brief Notifies as if the value had changed (without clearing the default flag).
+    void touch();
+
+    /// @brief Follows `source` from now on (takes its value now). Throws DataError if the
+    /// types differ or the connection would make a cycle.
+    void connectFrom(Field& source);
+
+    /// @brief Follows an engine output (keeps the engine alive). Throws DataError if the types
+    /// differ or the connection would make a cycle.
+    void connectFrom(EngineOutputBase& output);
+
+    /// @brief Removes the incoming connection, if any; the value stays.
+    void disconnect();
+
+    /// @brief True when connected from a field or an engine output.
+    bool isConnected() const { return mSourceField != nullptr || mSourceOutput != nullptr; }
+
+    /// @brief The field this one follows, or nullptr.
+    Field* connectedField() const { return mSourceField; }
+
+    /// @brief The engine output this one follows, or nullptr.
+    EngineOutputBase* connectedOutput() const { return mSourceOutput; }
+
+protected:
+    Field() = default;
+
+    /// @brief Call after every change of the value: clears the default flag and notifies.
+    void valueChanged();
+
+    /// @brief Throws DataError unless `other` has this field's type; used by copyValueFrom().
+    void checkSameType(const Field& other) const;
+
+    /// @brief Called once the container has registered the field (container() is set).
+    virtual void attached() {}
+
+private:
+    friend class FieldContainer;
+    friend class EngineOutputBase;
+
+    void propagate(bool clearDefault);
+    void receive(const Field& source);
+    void checkConnectable(std::string_view sourceType, const std::string& sourceName,
+                          const Field* sourceField, const EngineOutputBase* sourceOutput) const;
+
+    FieldContainer* mContainer = nullptr;
+    std::string mName;
+    bool mIsDefault = true;
+    bool mIsReceiving = false;
+    Field* mSourceField = nullptr;
+    EngineOutputBase* mSourceOutput = nullptr;
+    std::shared_ptr<FieldContainer> mSourceEngine;
+    std::vector<Field*> mTargets;
+};
+
+} // namespace texsplat::sg

@@ -1,0 +1,34 @@
+#pragma once
+
+#include "scenegraph/Fwd.h"
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace texsplat::sg {
+
+/// @brief Reads Open Inventor ASCII scene files (`#Inventor V2.1 ascii`) into a node graph.
+///
+/// The syntax is Inventor's: `#` comments; nodes as `Type { fields… children… }`;
+/// `DEF name` / `USE name` (a USEd node is the same shared node, not a copy); field values as
+/// each field type defines them (`[ … ]` lists, a single MF value without brackets);
+/// connections `field = Engine { … } . output` and `field = USE name . field`. Types come from
+/// the NodeRegistry; a node of an unregistered type is read when it describes itself
+/// (`fields [ SFFloat size ]`) and becomes an UnknownNode that writes back identically.
+///
+/// Every problem throws ParseError naming file, line, column and what was expected, e.g.
+/// `scene.iv:12:5: expected '}' to close Separator opened at 3:1`; nothing of the graph is
+/// returned then. A file with several top-level nodes is read as a Separator holding them.
+class SceneReader {
+public:
+    /// @brief Reads the file at `path`. Throws IoError when it cannot be read, ParseError when
+    /// its content is not a valid scene.
+    static std::shared_ptr<Node> readFile(const std::string& path);
+
+    /// @brief Reads scene text; `fileName` names it in messages.
+    static std::shared_ptr<Node> readString(std::string_view text,
+                                            const std::string& fileName = "<string>");
+};
+
+} // namespace texsplat::sg

@@ -1,0 +1,84 @@
+#pragma once
+
+#include "scenegraph/fields/FieldValueReader.h"
+#include "scenegraph/io/detail/SceneLexer.h"
+
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+namespace texsplat::sg::detail {
+
+/// @brief The grammar of Inventor ASCII files: nodes, engines, DEF/USE, fields, field
+/// descriptions and connections. Fields parse their own values through the FieldValueReader
+/// interface this class implements; any error throws a located ParseError, and since the
+/// graph is only returned at the end, a failed parse leaves nothing behind.
+class SceneParser final : public FieldValueReader {
+public:
+    /// @brief Deepest nesting of nodes and engines a file may have. Each level costs a few
+    /// stack frames of this recursive-descent parser; the limit keeps hostile input from
+    /// exhausting the stack (also under AddressSanitizer) and leaves room below the actions'
+    /// own limit, so everything read can be traversed.
+    static constexpr int kMaxNesting = 1000;
+
+    /// @brief A parser for `text`, which came from `fileName` (for messages).
+    SceneParser(std::string_view text, std::string fileName);
+
+    /// @brief Parses the whole file: one top-level node is the result; several are put under
+    /// a new Separator (as Inventor's SoDB::readAll does).
+    std::shared_ptr<Node> parseFile();
+
+    // FieldValueReader: what fields call to parse their values. Messages name the field being
+    // read and point at the token.
+    float readFloat() override;
+    std::int32_t readInt32() override;
+    std::string readString() override;
+    std::string readName() override;
+    bool readChar(char c) override;
+    std::shared_ptr<Node> readNode() override;
+    [[noreturn]] void fail(const std::string& message) override;
+
+private:
+    // One entry of a `fields [ … ]`, `inputs [ … ]` or `outputs [ … ]` description.
+    struct DescribedField {
+        std::string type;
+        std::string name;
+        SourceLocation where;
+    };
+    using Description = std::vector<DescribedField>;
+
+    std::shared_ptr<FieldContainer> readContainer();
+    std::shared_ptr<FieldContainer> readContainerAfter(const std::string& word,
+                                                       SourceLocation where);
+    std::shared_ptr<FieldContainer> readInstance(const std::string& typeName,
+                                                 SourceLocation where,
+                                                 const std::string& defName);
+    std::shared_ptr<FieldContainer> createInstance(const std::string& typeName,
+                                                   SourceLocation where);
+    std::optional<Description> readDescription(std::string_view keyword);
+    void checkDescription(const FieldContainer& container, const Description& description,
+                          bool describesOutputs);
+    void readBody(FieldContainer& container, SourceLocation opened);
+    void readFieldEntry(Field& field);
+    void readConnection(Field& field);
+    void checkNoExtraValue(const Field& field);
+    std::string readIdentifier(const std::string& what);
+    std::string valueWord(const std::string& what);
+    void checkListNotTruncated();
+    std::string fieldContext() const;
+    [[noreturn]] void failExpected(const std::string& what, const std::string& got);
+
+    SceneLexer mLexer;
+    std::map<std::string, std::shared_ptr<FieldContainer>, std::less<>> mDefinitions;
+    int mNesting = 0;
+    const Field* mCurrentField = nullptr;
+    SourceLocation mTokenStart;
+    std::optional<SourceLocation> mOpenList;
+    bool mHasReadList = false;
+};
+
+} // namespace texsplat::sg::detail
