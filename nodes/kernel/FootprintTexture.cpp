@@ -1,0 +1,116 @@
+#include "nodes/kernel/FootprintTexture.h"
+
+#include "nodes/kernel/detail/AtomicFile.h"
+#include "scenegraph/Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+
+namespace texsplat::kernel {
+
+namespace {
+
+constexpr int kMaxResolution = 8192;
+
+} // namespace
+
+FootprintTexture::FootprintTexture(int resolution, double extent, std::vector<float> texels)
+    : mResolution(resolution), mExtent(extent), mTexels(std::move(texels)) {}
+
+FootprintTexture::FootprintTexture(const RadialKernel& kernel, int resolution, double extent)
+    : mResolution(resolution), mExtent(extent) {
+    if (resolution < 2 || resolution > kMaxResolution) {
+        std::ostringstream message;
+        message << "footprint texture: resolution " << resolution << " must be in [2, "
+                << kMaxResolution << "]";
+        throw DataError(message.str());
+    }
+    if (!std::isfinite(extent) || !(extent > 0.0)) {
+        std::ostringstream message;
+        message << "footprint texture: extent " << extent << " must be a finite number > 0";
+        throw DataError(message.str());
+    }
+    const double texel = 2.0 * extent / resolution;
+    mTexels.resize(static_cast<size_t>(resolution) * resolution);
+    for (int row = 0; row < resolution; ++row)
+        for (int column = 0; column < resolution; ++column)
+            mTexels[static_cast<size_t>(row) * resolution + column] = static_cast<float>(
+                kernel.footprint(std::hypot(-extent + (column + 0.5) * texel,
+                                            -extent + (row + 0.5) * texel)));
+}
+
+FootprintTexture FootprintTexture::quantizedTo8Bits() const {
+    const float peak = *std::max_element(mTexels.begin(), mTexels.end());
+    std::vector<float> levels(mTexels.size());
+    std::transform(mTexels.begin(), mTexels.end(), levels.begin(), [peak](float value) {
+        return peak > 0.0f ? std::round(value / peak * 255.0f) / 255.0f * peak : value;
+    });
+    return FootprintTexture(mResolution, mExtent, std::move(levels));
+}
+
+double FootprintTexture::sample(const std::array<double, 2>& point) const {
+    if (!(std::fabs(point[0]) <= mExtent && std::fabs(point[1]) <= mExtent))
+        return 0.0;
+    const auto texelCoordinate = [&](double x) {
+        return (x + mExtent) / (2.0 * mExtent) * mResolution - 0.5;
+    };
+    const double u = texelCoordinate(point[0]);
+    const double v = texelCoordinate(point[1]);
+    const double column = std::floor(u);
+    const double row = std::floor(v);
+    const double fu = u - column;
+    const double fv = v - row;
+    const auto texel = [&](double r, double c) {
+        const auto clamp = [&](double index) {
+            return static_cast<size_t>(std::clamp(index, 0.0, mResolution - 1.0));
+        };
+        return static_cast<double>(mTexels[clamp(r) * mResolution + clamp(c)]);
+    };
+    return (1.0 - fv) * ((1.0 - fu) * texel(row, column) + fu * texel(row, column + 1)) +
+           fv * ((1.0 - fu) * texel(row + 1, column) + fu * texel(row + 1, column + 1));
+}
+
+TextureRipple FootprintTexture::measureLayerRipple(const RadialKernel& kernel,
+                                                   int samplesPerSide) const {
+    TextureRipple ripple{-HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, 0.0};
+    const int reach = static_cast<int>(std::ceil(std::max(mExtent, kernel.support()))) + 1;
+    for (int a = 0; a < samplesPerSide; ++a)
+        for (int b = 0; b < samplesPerSide; ++b) {
+            // Points of [0, ½]², the fundamental region of the layer sum's symmetry.
+            const double x = 0.5 * a / (samplesPerSide - 1);
+            const double y = 0.5 * b / (samplesPerSide - 1);
+            double textured = 0.0;
+            double exact = 0.0;
+            for (int i = -reach; i <= reach; ++i)
+                for (int j = -reach; j <= reach; ++j) {
+                    textured += sample({x - i, y - j});
+                    exact += kernel.footprint(std::hypot(x - i, y - j));
+                }
+            ripple.max = std::max(ripple.max, textured);
+            ripple.min = std::min(ripple.min, textured);
+            ripple.exactMax = std::max(ripple.exactMax, exact);
+            ripple.exactMin = std::min(ripple.exactMin, exact);
+            ripple.maxError = std::max(ripple.maxError, std::fabs(textured - exact));
+        }
+    return ripple;
+}
+
+void FootprintTexture::writePfm(const std::string& path) const {
+    std::ostringstream header;
+    header << "Pf\n" << mResolution << " " << mResolution << "\n-1.0\n";
+    std::string contents = header.str();
+    // A negative scale declares little-endian floats; the bytes are taken from the IEEE bit
+    // pattern least significant first, so the file is the same on any host.
+    for (float value : mTexels) {
+        std::uint32_t bits = 0;
+        std::memcpy(&bits, &value, sizeof(bits));
+        for (int shift = 0; shift < 32; shift += 8)
+            contents.push_back(static_cast<char>((bits >> shift) & 0xffu));
+    }
+    detail::writeFileAtomically(path, contents);
+}
+
+} // namespace texsplat::kernel

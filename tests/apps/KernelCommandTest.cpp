@@ -1,0 +1,263 @@
+#include "RunCommand.h"
+
+#include <gtest/gtest.h>
+
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using texsplat::test::runTexsplat;
+
+namespace {
+
+// A small strict JSON reader, enough to check that `texsplat kernel --json` prints one valid
+// object and to look numbers up by path.
+struct Json {
+    enum class Type { Null, Boolean, Number, String, Array, Object } type = Type::Null;
+    double number = 0.0;
+    std::string text;
+    std::vector<Json> items;
+    std::map<std::string, Json> members;
+
+    const Json& operator[](const std::string& key) const {
+        const auto it = members.find(key);
+        if (type != Type::Object || it == members.end())
+            throw std::runtime_error("no member " + key);
+        return it->second;
+    }
+    const Json& operator[](size_t index) const { return items.at(index); }
+};
+
+class JsonReader {
+public:
+    explicit JsonReader(const std::string& text) : mText(text) {}
+
+    Json document() {
+        Json value = parseValue();
+        skipSpace();
+        if (mAt != mText.size())
+            fail("trailing characters");
+        return value;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw std::runtime_error("JSON at " + std::to_string(mAt) + ": " + what);
+    }
+    void skipSpace() {
+        while (mAt < mText.size() && std::isspace(static_cast<unsigned char>(mText[mAt])))
+            ++mAt;
+    }
+    bool take(char c) {
+        skipSpace();
+        if (mAt < mText.size() && mText[mAt] == c) {
+            ++mAt;
+            return true;
+        }
+        return false;
+    }
+    void expect(char c) {
+        if (!take(c))
+            fail(std::string("expected ") + c);
+    }
+    bool takeWord(const std::string& word) {
+        skipSpace();
+        if (mText.compare(mAt, word.size(), word) != 0)
+            return false;
+        mAt += word.size();
+        return true;
+    }
+    std::string parseString() {
+        expect('"');
+        std::string result;
+        while (mAt < mText.size() && mText[mAt] != '"') {
+            if (mText[mAt] == '\\')
+                ++mAt;
+            result += mText[mAt++];
+        }
+        expect('"');
+        return result;
+    }
+    Json parseValue() {
+        Json value;
+        skipSpace();
+        if (take('{')) {
+            value.type = Json::Type::Object;
+            if (take('}'))
+                return value;
+            do {
+                skipSpace();
+                const std::string key = parseString();
+                expect(':');
+                value.members[key] = parseValue();
+            } while (take(','));
+            expect('}');
+        } else if (take('[')) {
+            value.type = Json::Type::Array;
+            if (take(']'))
+                return value;
+            do
+                value.items.push_back(parseValue());
+            while (take(','));
+            expect(']');
+        } else if (mAt < mText.size() && mText[mAt] == '"') {
+            value.type = Json::Type::String;
+            value.text = parseString();
+        } else if (takeWord("null")) {
+            value.type = Json::Type::Null;
+        } else if (takeWord("true") || takeWord("false")) {
+            value.type = Json::Type::Boolean;
+        } else {
+            size_t used = 0;
+            try {
+                value.number = std::stod(mText.substr(mAt), &used);
+            } catch (const std::exception&) {
+                fail("expected a value");
+            }
+            value.type = Json::Type::Number;
+            mAt += used;
+        }
+        return value;
+    }
+
+    const std::string& mText;
+    size_t mAt = 0;
+};
+
+Json kernelJson(const std::string& arguments) {
+    const auto output = runTexsplat("kernel --json " + arguments);
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    return JsonReader(output.standardOutput).document();
+}
+
+constexpr double kHalfUnit5 = 0.5e-5;
+
+} // namespace
+
+TEST(KernelCommand, jsonHoldsThePapersNumbersForThePrintedKernel) {
+    const Json json = kernelJson("");
+    EXPECT_EQ(json["kernel"].text, "paper");
+    EXPECT_EQ(json["t"].number, 1.556228);
+    EXPECT_EQ(json["s"].number, 0.889392);
+    EXPECT_EQ(json["coefficients"]["p"][0].number, 0.557526);
+    EXPECT_EQ(json["coefficients"]["p"][1].number, -1.157743);
+    EXPECT_EQ(json["coefficients"]["p"][2].number, 0.671033);
+    EXPECT_EQ(json["coefficients"]["q"][0].number, 0.067599);
+    EXPECT_EQ(json["coefficients"]["q"][1].number, 0.282474);
+    const Json& lattice = json["lattice3d"];
+    EXPECT_NEAR(lattice["relative_rms"].number, 0.00119, kHalfUnit5);
+    EXPECT_NEAR(lattice["min_deviation"].number, -0.00233, kHalfUnit5);
+    EXPECT_NEAR(lattice["max_deviation"].number, 0.00534, kHalfUnit5);
+    for (size_t i = 0; i < 3; ++i)
+        EXPECT_NEAR(lattice["min_at"][i].number, 0.26, 0.005);
+    EXPECT_NEAR(lattice["max_at"][0].number, 0.5, 1e-6);
+    EXPECT_NEAR(lattice["max_at"][1].number, 0.5, 1e-6);
+    EXPECT_NEAR(lattice["max_at"][2].number, 0.0, 1e-6);
+    const Json& layer = json["layer2d"];
+    EXPECT_NEAR(layer["max"].number, 1.00249, kHalfUnit5);
+    EXPECT_NEAR(layer["min"].number, 0.99845, kHalfUnit5);
+    EXPECT_NEAR(layer["max_at"][0].number, 0.5, 1e-6);
+    EXPECT_NEAR(layer["min_at"][0].number, 0.25, 0.005);
+}
+
+TEST(KernelCommand, jsonOfTheOptimizedKernelIsThePapersMinimum) {
+    const Json json = kernelJson("--kernel optimized");
+    EXPECT_EQ(json["kernel"].text, "optimized");
+    EXPECT_NEAR(json["t"].number, 1.556228, 5e-6);
+    EXPECT_NEAR(json["s"].number, 0.889392, 5e-6);
+    EXPECT_NEAR(json["coefficients"]["p"][0].number, 0.557526, 2e-6);
+    EXPECT_NEAR(json["lattice3d"]["relative_rms"].number, 0.00119, kHalfUnit5);
+    EXPECT_GT(json["optimizer"]["path"].items.size(), 1u);
+}
+
+TEST(KernelCommand, jsonOfTheGaussianHasNoCubicCoefficients) {
+    const Json json = kernelJson("--kernel gaussian");
+    EXPECT_EQ(json["coefficients"].type, Json::Type::Null);
+    EXPECT_EQ(json["t"].number, 1.556228);
+    EXPECT_GT(json["lattice3d"]["relative_rms"].number, 0.01);
+}
+
+TEST(KernelCommand, tablePrintsThePaperSideBySide) {
+    const auto output = runTexsplat("kernel");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find("support t                    1.556228     1.556228"),
+              std::string::npos)
+        << output.standardOutput;
+    EXPECT_NE(output.standardOutput.find("Gaussian of the same extent"), std::string::npos);
+}
+
+TEST(KernelCommand, optimizeReportsProgressAndResult) {
+    const auto output = runTexsplat("kernel --optimize");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find("result: t = 1.55622"), std::string::npos)
+        << output.standardOutput;
+    EXPECT_NE(output.standardError.find("texsplat kernel: restart 0 iteration 0"),
+              std::string::npos);
+}
+
+TEST(KernelCommand, spacingReportsBothAnisotropicAnswers) {
+    const auto output = runTexsplat("kernel --spacing 1,1,1.2");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find("(a) paper kernel scaled by the spacing"),
+              std::string::npos);
+    EXPECT_NE(output.standardOutput.find("(b) rotationally symmetric kernel"), std::string::npos);
+}
+
+TEST(KernelCommand, writesTextureAndPlot) {
+    const std::string texture = ::testing::TempDir() + "kernel_command_texture.pfm";
+    const std::string plot = ::testing::TempDir() + "kernel_command_plot.svg";
+    const auto output =
+        runTexsplat("kernel --json --texture " + texture + " --resolution 32 --plot " + plot);
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    std::ifstream pfm(texture, std::ios::binary | std::ios::ate);
+    const size_t header = std::string("Pf\n32 32\n-1.0\n").size();
+    EXPECT_EQ(static_cast<size_t>(pfm.tellg()), header + 32 * 32 * 4);
+    std::ifstream svg(plot);
+    std::string first;
+    std::getline(svg, first);
+    EXPECT_EQ(first.rfind("<svg", 0), 0u);
+    EXPECT_NE(output.standardError.find("texture adds up to"), std::string::npos);
+    std::remove(texture.c_str());
+    std::remove(plot.c_str());
+}
+
+TEST(KernelCommand, badOptionsFailWithClearMessages) {
+    const struct {
+        const char* arguments;
+        const char* message;
+    } cases[] = {
+        {"kernel --optimize --start 0.9,0.8,-2,0.1",
+         "texsplat: error: optimizer start: support t = 0.8 must be > knot s = 0.9\n"},
+        {"kernel --optimize --start -1,1.5,-2,0.1",
+         "texsplat: error: optimizer start: knot s = -1 must be > 0\n"},
+        {"kernel --optimize --start nan,1.5,-2,0.1",
+         "texsplat: error: optimizer start: knot s = nan is not finite\n"},
+        {"kernel --optimize --start 1,2",
+         "texsplat: error: --start: expected 4 comma-separated numbers, got '1,2'\n"},
+        {"kernel --spacing 1,x,1", "texsplat: error: --spacing: 'x' is not a number\n"},
+        {"kernel --spacing 1,0,1",
+         "texsplat: error: lattice spacing: 0 must be a finite number > 0\n"},
+        {"kernel --texture /nonexistent-directory/t.pfm",
+         "texsplat: error: /nonexistent-directory/t.pfm: cannot open for writing\n"},
+        {"kernel --json --support 2",
+         "texsplat: error: --support: needs --kernel optimized|gaussian or --optimize with "
+         "--json (the paper's kernel has its own support)\n"},
+    };
+    for (const auto& badCase : cases) {
+        const auto output = runTexsplat(badCase.arguments);
+        EXPECT_EQ(output.exitCode, 1) << badCase.arguments;
+        EXPECT_EQ(output.standardError, badCase.message) << badCase.arguments;
+    }
+    const auto unknownKernel = runTexsplat("kernel --kernel foo");
+    EXPECT_NE(unknownKernel.exitCode, 0);
+    EXPECT_NE(unknownKernel.standardError.find("--kernel: foo not in {paper,optimized,gaussian}"),
+              std::string::npos);
+    const auto badResolution = runTexsplat("kernel --texture x.pfm --resolution 1");
+    EXPECT_NE(badResolution.exitCode, 0);
+    EXPECT_NE(badResolution.standardError.find("--resolution"), std::string::npos);
+}
