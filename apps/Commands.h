@@ -1,0 +1,34 @@
+#pragma once
+
+/// @file
+/// @brief The `texsplat` subcommands. Each lives in its own `<Name>Command.cpp` and registers
+/// itself on the CLI11 app; the command parses, calls the libraries, prints, and returns the
+/// process exit code through `CommandResult`.
+
+namespace CLI {
+class App;
+} // namespace CLI
+
+namespace texsplat::apps {
+
+/// @brief Exit codes shared by every subcommand.
+enum ExitCode : int {
+    kExitOk = 0,
+    kExitFailure = 1, ///< an input or runtime error (texsplat::Error); the message says where
+    kExitUsage = 2,   ///< bad command-line usage (CLI11's own code for parse errors)
+};
+
+/// @brief Adds `texsplat kernel` (the reconstruction kernel and the paper's table).
+void addKernelCommand(CLI::App& app, int& exitCode);
+
+/// @brief Adds `texsplat info` (a scene file's graph, or the generated scene-file reference).
+void addInfoCommand(CLI::App& app, int& exitCode);
+
+/// @brief Adds `texsplat compare` (RMSE, PSNR and max abs error between two images, and a
+/// false-color difference image).
+void addCompareCommand(CLI::App& app, int& exitCode);
+
+/// @brief Adds `texsplat render` (a scene, or the built-in one, to a PNG or EXR image).
+void addRenderCommand(CLI::App& app, int& exitCode);
+
+} // namespace texsplat::apps

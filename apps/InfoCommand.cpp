@@ -1,0 +1,97 @@
+#include "apps/Commands.h"
+
+#include "scenegraph/AtomicFile.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Node.h"
+#include "scenegraph/NodeRegistry.h"
+#include "scenegraph/engines/EngineTypes.h"
+#include "scenegraph/io/SceneReader.h"
+#include "scenegraph/io/SceneReference.h"
+#include "scenegraph/io/SceneSummary.h"
+#include "scenegraph/io/WriteAction.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+namespace texsplat::apps {
+
+namespace {
+
+struct InfoArguments {
+    std::string scene;
+    bool reference = false;
+    std::string update;
+};
+
+// The types a scene file may name: the core's nodes and engines.
+void registerTypes() { sg::registerEngineTypes(sg::NodeRegistry::instance()); }
+
+std::string readText(const std::string& path) {
+    std::ifstream file(path, std::ios::binary);
+    if (!file) {
+        throw IoError(path + ": cannot open");
+    }
+    std::ostringstream text;
+    text << file.rdbuf();
+    return text.str();
+}
+
+// The graph as the writer writes it (so the output is itself a valid scene file), with a
+// summary comment after the header.
+void printScene(const std::string& path) {
+    const std::shared_ptr<sg::Node> root = sg::SceneReader::readFile(path);
+    std::string text = sg::WriteAction::writeString(*root);
+    const std::string summary = "# " + path + ": " + sg::SceneSummary(*root).text() + "\n";
+    text.insert(text.find('\n') + 1, summary);
+    std::fputs(text.c_str(), stdout);
+}
+
+void runInfo(const InfoArguments& arguments) {
+    registerTypes();
+    if (!arguments.reference) {
+        printScene(arguments.scene);
+        return;
+    }
+    const std::string reference = sg::sceneReferenceMarkdown();
+    if (arguments.update.empty()) {
+        std::fputs(reference.c_str(), stdout);
+        return;
+    }
+    writeFileAtomically(arguments.update,
+                        sg::replaceGeneratedReference(readText(arguments.update), reference,
+                                                      arguments.update));
+}
+
+} // namespace
+
+void addInfoCommand(CLI::App& app, int& exitCode) {
+    auto arguments = std::make_shared<InfoArguments>();
+    CLI::App* command = app.add_subcommand(
+        "info", "Print a scene file's graph (types, names, fields that differ from their "
+                "defaults), or the scene-file reference of every node and engine type");
+    CLI::Option* scene =
+        command->add_option("scene", arguments->scene, "Inventor scene file (.iv) to describe");
+    CLI::Option* reference = command->add_flag(
+        "--reference", arguments->reference,
+        "Print the Markdown reference of every node and engine type, generated from the types");
+    command
+        ->add_option("--update", arguments->update,
+                     "With --reference: rewrite the generated section of this Markdown file "
+                     "(docs/scene-files.md) instead of printing")
+        ->needs(reference);
+    reference->excludes(scene);
+    command->callback([arguments, scene, &exitCode] {
+        if (!arguments->reference && scene->count() == 0) {
+            throw CLI::RequiredError("scene (or --reference)");
+        }
+        runInfo(*arguments);
+        exitCode = kExitOk;
+    });
+}
+
+} // namespace texsplat::apps

@@ -1,0 +1,144 @@
+#include "nodes/ScalarSplat.h"
+
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "nodes/detail/NodeContext.h"
+#include "nodes/elements/TransferFunctionElement.h"
+#include "nodes/elements/VolumeElement.h"
+#include "nodes/render/CameraView.h"
+#include "nodes/render/SplatBatch.h"
+#include "nodes/render/SplatView.h"
+#include "nodes/render/detail/ClassificationCache.h"
+#include "octree/Cut.h"
+#include "octree/Refiner.h"
+#include "octree/Splat.h"
+#include "octree/SplatEmission.h"
+#include "scenegraph/Assert.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/actions/ModelMatrixElement.h"
+#include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/gl/Context.h"
+
+#include <chrono>
+#include <cmath>
+#include <string>
+
+namespace texsplat::nodes {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Runs `step` and adds its wall time to `phase`.
+template <class Step> auto timed(sg::RenderAction& action, sg::RenderPhase phase, Step&& step) {
+    const Clock::time_point start = Clock::now();
+    struct AddTime {
+        sg::RenderAction& action;
+        sg::RenderPhase phase;
+        Clock::time_point start;
+        ~AddTime() {
+            action.addTime(phase, std::chrono::duration<double>(Clock::now() - start).count());
+        }
+    } addTime{action, phase, start};
+    return step();
+}
+
+} // namespace
+
+ScalarSplat::ScalarSplat() : mCache(std::make_unique<render::detail::ClassificationCache>()) {
+    addField(size, "size", 1.6f);
+    addField(errorThreshold, "errorThreshold", 0.0f);
+    addField(maxSplats, "maxSplats", 0);
+}
+
+ScalarSplat::~ScalarSplat() = default;
+
+void ScalarSplat::checkFields() const {
+    if (!std::isfinite(size.value()) || !(size.value() > 0.0f)) {
+        throw DataError("size must be finite and > 0, got " + size.valueText());
+    }
+    if (!std::isfinite(errorThreshold.value()) || errorThreshold.value() < 0.0f) {
+        throw DataError("errorThreshold must be finite and >= 0, got " +
+                        errorThreshold.valueText());
+    }
+    if (maxSplats.value() < 0) {
+        throw DataError("maxSplats must be >= 0, got " + maxSplats.valueText());
+    }
+}
+
+void ScalarSplat::render(sg::RenderAction& action) {
+    detail::withNodeContext(*this, [this] { checkFields(); });
+    const VolumeData* volume = action.state().get<VolumeElement>().volume;
+    const TransferFunction* transfer =
+        action.state().get<TransferFunctionElement>().transferFunction;
+    if (!volume) {
+        throw DataError(detail::nodeContext(*this) + ": no VolumeData before this node");
+    }
+    if (!transfer) {
+        throw DataError(detail::nodeContext(*this) + ": no TransferFunction before this node");
+    }
+    const render::CameraView camera = render::CameraView::current(action, *this);
+    const volume::ScalarGridPtr grid =
+        timed(action, sg::RenderPhase::Load, [volume] { return volume->scalarGrid(); });
+    const std::shared_ptr<const octree::ClassifiedGrid> classified = timed(
+        action, sg::RenderPhase::Classify, [&] { return mCache->classified(grid, *transfer); });
+
+    const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
+    const render::SplatView view = render::SplatView::fromMatrices(
+        model, camera.view, camera.projection, glm::vec3(classified->spacing()));
+    auto splats = std::make_shared<octree::SplatList>();
+    const bool fullResolution = errorThreshold.value() == 0.0f && maxSplats.value() == 0;
+    if (!fullResolution) {
+        // The octree is part of the cached classification; build it outside the ordering time.
+        timed(action, sg::RenderPhase::Classify, [this] { mCache->octree(); });
+    }
+    timed(action, sg::RenderPhase::Order, [&] {
+        const octree::View order = view.octreeView();
+        if (fullResolution) {
+            octree::emitVoxelSplats(*classified, order, *splats);
+            return;
+        }
+        octree::Cut cut = errorThreshold.value() > 0.0f
+                              ? octree::Cut::byError(mCache->octree(), errorThreshold.value())
+                              : octree::Cut(mCache->octree());
+        if (maxSplats.value() > 0) {
+            octree::Refiner refiner(std::move(cut), order);
+            octree::RefineBudget budget;
+            budget.maxSplats = static_cast<std::uint64_t>(maxSplats.value());
+            refiner.refine(budget);
+            cut = refiner.cut();
+        }
+        octree::emitSplats(cut, order, *splats);
+    });
+
+    TEXSPLAT_ASSERT(gl::Context::current(), "ScalarSplat::render(): no current GL context");
+    const std::uint64_t context = gl::Context::current()->serial();
+    if (!mBatch || mBatchContext != context) {
+        mBatch = timed(action, sg::RenderPhase::Upload,
+                       [this] { return detail::withNodeContext(*this, [this] { return makeBatch(); }); });
+        mBatchContext = context;
+    }
+    action.statistics().splats += splats->size();
+    // Upload at draw time: a node used twice in the graph (DEF/USE) draws two lists with one
+    // batch, one after the other.
+    action.addSplats([&action, batch = mBatch, splats, view] {
+        timed(action, sg::RenderPhase::Upload, [&] { batch->upload(*splats); });
+        batch->draw(view);
+    });
+}
+
+void ScalarSplat::getBoundingBox(sg::BoundingBoxAction& action) {
+    if (const VolumeData* volume = action.state().get<VolumeElement>().volume) {
+        action.extendBy(volume->bounds());
+    }
+}
+
+void ScalarSplat::notify(const sg::Field* source) {
+    // The cut fields only change which splats are drawn, not how.
+    if (source != &errorThreshold && source != &maxSplats) {
+        mBatch.reset();
+    }
+    sg::Node::notify(source);
+}
+
+} // namespace texsplat::nodes

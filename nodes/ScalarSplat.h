@@ -1,0 +1,85 @@
+#pragma once
+
+#include "scenegraph/Declare.h"
+#include "scenegraph/Node.h"
+#include "scenegraph/fields/Fields.h"
+
+#include <cstdint>
+#include <memory>
+
+namespace texsplat::sg {
+class RenderAction;
+} // namespace texsplat::sg
+
+namespace texsplat::render {
+class SplatBatch;
+namespace detail {
+class ClassificationCache;
+} // namespace detail
+} // namespace texsplat::render
+
+namespace texsplat::nodes {
+
+/// @brief Base of the scalar splat nodes (TextureSplat, GaussianSplat): renders the current
+/// VolumeData, classified by the current TransferFunction, as one splat per non-empty voxel or
+/// per node of an octree cut, back to front for the camera, in RenderAction's splat pass.
+///
+/// Per frame: the scalar grid of the VolumeData (loaded on first use), classified into emission
+/// C and extinction τ per unit length (cached with its octree until the volume's grid or the
+/// transfer function changes; voxels that classify to zero make no splat), ordered for the view
+/// (see below), uploaded and drawn as instanced splats (render::SplatBatch) facing the eye.
+/// Optical properties are per unit length of the volume's local space; a Transform above the
+/// node places the volume. Anisotropic spacing uses the ellipsoidal kernel h(S⁻¹x).
+///
+/// Order and resolution:
+/// - `errorThreshold` 0 and `maxSplats` 0: every non-empty voxel, in octree::SliceOrder (back to
+///   front per voxel cell, no sort), culled behind the eye for a perspective camera.
+/// - `maxSplats` > 0: the octree cut the Laur–Hanrahan refiner reaches within that many splats,
+///   starting from the `errorThreshold` cut (the root when 0); `errorThreshold` > 0 alone: the
+///   threshold cut. Cuts are drawn in the octree's back-to-front traversal order.
+///
+/// File format (fields common to the splat nodes):
+/// @code
+/// size            1.6   # the splat's extent: its quad reaches this many voxels from the centre
+/// errorThreshold  0     # octree cut by error (0: full resolution)
+/// maxSplats       0     # octree cut by splat budget (0: no budget)
+/// @endcode
+class ScalarSplat : public sg::Declare<ScalarSplat, sg::Node> {
+public:
+    /// @brief The abstract type's name.
+    static constexpr const char* kTypeName = "ScalarSplat";
+
+    sg::SFFloat size;           ///< extent of the splat in voxels (paper: 1.6), > 0
+    sg::SFFloat errorThreshold; ///< octree cut: largest error a splat may carry, >= 0
+    sg::SFInt32 maxSplats;      ///< octree cut: splat budget, >= 0 (0: none)
+
+    ~ScalarSplat() override;
+
+    /// @brief RenderAction: queues this frame's splats (registered by registerNodeTypes()).
+    /// @throws DataError naming the node when there is no camera, VolumeData or
+    /// TransferFunction before it, or a field is out of range; what loading the volume throws.
+    void render(sg::RenderAction& action);
+
+    /// @brief Extends the box by the current VolumeData's bounds under this node's model matrix
+    /// (a splat node under its own Transform draws the volume there); nothing without a volume.
+    void getBoundingBox(sg::BoundingBoxAction& action) override;
+
+    /// @brief Drops the GL batch when a field changes, then notifies as every node does.
+    void notify(const sg::Field* source) override;
+
+protected:
+    ScalarSplat();
+
+    /// @brief The batch this node draws with, for the current field values (called with a
+    /// context current, again after a field changed).
+    virtual std::shared_ptr<render::SplatBatch> makeBatch() const = 0;
+
+private:
+    void checkFields() const;
+
+    std::unique_ptr<render::detail::ClassificationCache> mCache;
+    std::shared_ptr<render::SplatBatch> mBatch;
+    std::uint64_t mBatchContext = 0;
+};
+
+} // namespace texsplat::nodes

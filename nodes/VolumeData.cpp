@@ -1,0 +1,198 @@
+#include "nodes/VolumeData.h"
+
+#include "nodes/detail/NodeContext.h"
+#include "nodes/elements/VolumeElement.h"
+#include "nodes/volume/Blob.h"
+#include "nodes/volume/JetStream.h"
+#include "nodes/volume/Magnitude.h"
+#include "nodes/volume/MarschnerLobb.h"
+#include "nodes/volume/RawVolume.h"
+#include "nodes/volume/Tornado.h"
+#include "nodes/volume/VdbVolume.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/actions/Action.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace texsplat::nodes {
+
+// What one load of the source yields.
+struct VolumeData::Loaded {
+    volume::AnyGrid grid;
+    // Further scalar grids a generator makes along with the main one, by name.
+    std::map<std::string, volume::ScalarGridPtr> scalars;
+    std::vector<volume::Fiber> fibers;
+};
+
+VolumeData::VolumeData() {
+    addField(source, "source", VolumeSource::Blob, kVolumeSourceNames);
+    addField(fileName, "fileName", std::string());
+    addField(gridName, "gridName", std::string());
+    addField(resolution, "resolution", glm::vec3(64.0f));
+    addField(time, "time", 0.0f);
+    addField(component, "component", VolumeComponent::Magnitude, kVolumeComponentNames);
+}
+
+glm::i64vec3 VolumeData::dims() const {
+    // Beyond this a grid could not be held anyway, and the conversion stays exact.
+    constexpr float kMaxSamples = 1e9f;
+    const glm::vec3 samples = resolution.value();
+    for (int axis = 0; axis < 3; ++axis) {
+        const float n = samples[axis];
+        if (!(n >= 1.0f && n <= kMaxSamples) || std::floor(n) != n) {
+            throw DataError("resolution must hold whole numbers from 1 to 1e9, got " +
+                            resolution.valueText());
+        }
+    }
+    return glm::i64vec3(samples);
+}
+
+std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
+    auto result = std::make_shared<Loaded>();
+    const auto kind = source.as<VolumeSource>();
+    const auto requireFile = [this]() -> const std::string& {
+        if (fileName.value().empty()) {
+            throw DataError("fileName is empty; source " +
+                            *kVolumeSourceNames.name(source.value()) + " reads a file");
+        }
+        return fileName.value();
+    };
+    switch (kind) {
+    case VolumeSource::FileRaw:
+        result->grid = volume::readRawVolume(requireFile());
+        break;
+    case VolumeSource::FileVdb: {
+        const std::string& path = requireFile();
+        if (gridName.value().empty()) {
+            throw DataError("gridName is empty; source FILE_VDB needs the name of a grid in " +
+                            path);
+        }
+        result->grid = volume::readVdbGrid(path, gridName.value());
+        break;
+    }
+    case VolumeSource::Tornado:
+        result->grid = volume::generateTornado({dims(), double(time.value())});
+        break;
+    case VolumeSource::MarschnerLobb: {
+        volume::MarschnerLobbParameters parameters;
+        parameters.dims = dims();
+        result->grid = volume::generateMarschnerLobb(parameters);
+        break;
+    }
+    case VolumeSource::Blob: {
+        volume::BlobParameters parameters;
+        parameters.dims = dims();
+        result->grid = volume::generateBlob(parameters);
+        break;
+    }
+    case VolumeSource::JetStream: {
+        volume::JetStreamParameters parameters;
+        parameters.dims = dims();
+        parameters.time = double(time.value());
+        volume::JetStreamField field = volume::generateJetStream(parameters);
+        result->grid = std::move(field.wind);
+        result->scalars.emplace("cloudiness", std::move(field.cloudiness));
+        break;
+    }
+    case VolumeSource::Aerogel: {
+        volume::AerogelParameters parameters;
+        parameters.dims = dims();
+        volume::AerogelField field = volume::generateAerogel(parameters);
+        result->grid = std::move(field.velocity);
+        result->fibers = std::move(field.fibers);
+        break;
+    }
+    }
+    return result;
+}
+
+std::shared_ptr<const VolumeData::Loaded> VolumeData::loaded() const {
+    // Called with mMutex held.
+    if (!mLoaded) {
+        mLoaded = detail::withNodeContext(*this, [this] { return load(); });
+    }
+    return mLoaded;
+}
+
+volume::ScalarGridPtr VolumeData::scalarGrid() const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    const std::shared_ptr<const Loaded> data = loaded();
+    if (mScalar) {
+        return mScalar;
+    }
+    if (const auto* scalar = std::get_if<volume::ScalarGridPtr>(&data->grid)) {
+        mScalar = *scalar;
+        return mScalar;
+    }
+    const volume::VectorGridPtr& vectors = std::get<volume::VectorGridPtr>(data->grid);
+    mScalar = detail::withNodeContext(*this, [&]() -> volume::ScalarGridPtr {
+        if (component.as<VolumeComponent>() == VolumeComponent::Magnitude) {
+            return volume::magnitudeGrid(*vectors);
+        }
+        const auto found = data->scalars.find(gridName.value());
+        if (found == data->scalars.end()) {
+            std::string names;
+            for (const auto& [name, grid] : data->scalars) {
+                names += (names.empty() ? "" : ", ") + name;
+            }
+            throw DataError("component SCALAR: source " +
+                            *kVolumeSourceNames.name(source.value()) + " has no scalar grid '" +
+                            gridName.value() + "' (" +
+                            (names.empty() ? "it has vectors only; use MAGNITUDE"
+                                           : "it has: " + names) +
+                            ")");
+        }
+        return found->second;
+    });
+    return mScalar;
+}
+
+volume::VectorGridPtr VolumeData::vectorGrid() const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    const std::shared_ptr<const Loaded> data = loaded();
+    const auto* vectors = std::get_if<volume::VectorGridPtr>(&data->grid);
+    return vectors != nullptr ? *vectors : nullptr;
+}
+
+std::vector<volume::Fiber> VolumeData::fibers() const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    return loaded()->fibers;
+}
+
+sg::Box3 VolumeData::bounds() const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    const std::shared_ptr<const Loaded> data = loaded();
+    const volume::GridGeometry& geometry =
+        std::visit([](const auto& grid) -> const volume::GridGeometry& { return grid->geometry(); },
+                   data->grid);
+    return sg::Box3(glm::vec3(geometry.boundsMin()), glm::vec3(geometry.boundsMax()));
+}
+
+bool VolumeData::isLoaded() const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    return mLoaded != nullptr;
+}
+
+void VolumeData::getBoundingBox(sg::BoundingBoxAction& action) {
+    // Also the element: shapes after it (Fibers) bound what they draw from this volume.
+    doAction(action);
+    action.extendBy(bounds());
+}
+
+void VolumeData::doAction(sg::Action& action) {
+    action.state().modify<VolumeElement>().volume = this;
+}
+
+void VolumeData::notify(const sg::Field* changed) {
+    {
+        const std::lock_guard<std::mutex> lock(mMutex);
+        mLoaded.reset();
+        mScalar.reset();
+    }
+    sg::Node::notify(changed);
+}
+
+} // namespace texsplat::nodes

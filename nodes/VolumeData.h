@@ -1,0 +1,140 @@
+#pragma once
+
+#include "nodes/volume/Aerogel.h"
+#include "nodes/volume/Grid.h"
+#include "scenegraph/Box3.h"
+#include "scenegraph/Declare.h"
+#include "scenegraph/EnumNames.h"
+#include "scenegraph/Node.h"
+#include "scenegraph/fields/Fields.h"
+#include "scenegraph/fields/SFEnum.h"
+
+#include <memory>
+#include <mutex>
+#include <vector>
+
+namespace texsplat::nodes {
+
+/// @brief Where VolumeData takes its grid from.
+enum class VolumeSource {
+    FileRaw,       ///< a texsplat-raw file (`fileName`), scalar or vector
+    FileVdb,       ///< grid `gridName` of an OpenVDB file (`fileName`), scalar or vector
+    Tornado,       ///< Crawfis's tornado (vectors; `resolution`, `time`)
+    MarschnerLobb, ///< the Marschner-Lobb test signal (scalar; `resolution`)
+    Blob,          ///< a sum of seeded Gaussians (scalar; `resolution`)
+    JetStream,     ///< synthetic climate data: wind vectors, scalar "cloudiness" (`time` in days)
+    Aerogel,       ///< flow through random fibers (vectors; fibers())
+};
+
+/// @brief Scene-file names of VolumeSource.
+inline const sg::EnumNames kVolumeSourceNames{{"FILE_RAW", VolumeSource::FileRaw},
+                                              {"FILE_VDB", VolumeSource::FileVdb},
+                                              {"TORNADO", VolumeSource::Tornado},
+                                              {"MARSCHNER_LOBB", VolumeSource::MarschnerLobb},
+                                              {"BLOB", VolumeSource::Blob},
+                                              {"JET_STREAM", VolumeSource::JetStream},
+                                              {"AEROGEL", VolumeSource::Aerogel}};
+
+/// @brief How VolumeData makes the scalar that scalar splats classify, from vector data.
+enum class VolumeComponent {
+    Magnitude, ///< |v| (paper, Figures 5-7: opacity from the vector magnitude)
+    Scalar,    ///< a scalar grid of the source, named by `gridName` (JET_STREAM: "cloudiness")
+};
+
+/// @brief Scene-file names of VolumeComponent.
+inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::Magnitude},
+                                                 {"SCALAR", VolumeComponent::Scalar}};
+
+/// @brief A volume for the splat nodes that follow: a grid read from a file or made by a
+/// generator (nodes/volume/, docs/data.md), loaded on first use and cached.
+///
+/// Nothing is read or generated until something asks (scalarGrid(), vectorGrid(), fibers(), a
+/// bounding box): a scene pays only for the grids it references. Any change of a field drops the
+/// cache, and the next use loads again. Errors name the node and then the source:
+/// "VolumeData 'cloud': cloud.raw: cannot open file (No such file or directory)".
+///
+/// Fields:
+/// - `source`: see VolumeSource.
+/// - `fileName`: the file for FILE_RAW and FILE_VDB (relative to the working directory).
+/// - `gridName`: FILE_VDB: the grid in the file; with `component SCALAR`: the generator's scalar
+///   grid (JET_STREAM: "cloudiness").
+/// - `resolution`: samples along x, y, z for the generators, as an SFVec3f of whole numbers >= 1
+///   (Inventor has no integer vector field); files bring their own.
+/// - `time`: animation time of TORNADO (frames) and JET_STREAM (days).
+/// - `component`: how scalarGrid() is made from vector data (VolumeComponent); scalar data is
+///   used as it is with either value.
+///
+/// The node's bounding box is the box the grid's voxel cells cover (GridGeometry bounds) under
+/// the model matrix. During a traversal the node puts itself into VolumeElement. The accessors
+/// may be called from several threads; each answers a consistent grid.
+///
+/// File format:
+/// @code
+/// VolumeData {
+///     source      BLOB   # FILE_RAW, FILE_VDB, TORNADO, MARSCHNER_LOBB, BLOB, JET_STREAM, AEROGEL
+///     fileName    ""
+///     gridName    ""
+///     resolution  64 64 64
+///     time        0
+///     component   MAGNITUDE   # MAGNITUDE, SCALAR
+/// }
+/// @endcode
+class VolumeData : public sg::Declare<VolumeData, sg::Node> {
+public:
+    /// @brief The scene-file name.
+    static constexpr const char* kTypeName = "VolumeData";
+
+    sg::SFEnum source;      ///< VolumeSource
+    sg::SFString fileName;  ///< FILE_RAW / FILE_VDB file
+    sg::SFString gridName;  ///< VDB grid, or the generator's scalar for component SCALAR
+    sg::SFVec3f resolution; ///< generator samples per axis (whole numbers)
+    sg::SFFloat time;       ///< generator time
+    sg::SFEnum component;   ///< VolumeComponent
+
+    /// @brief The scalar field for scalar splats: scalar data as it is, vector data as
+    /// `component` says. Loads on first use.
+    /// @throws IoError, ParseError or DataError (prefixed with the node) when loading fails or
+    /// the component cannot be made.
+    volume::ScalarGridPtr scalarGrid() const;
+
+    /// @brief The vector field, or nullptr when the source gives scalar data. Loads on first use.
+    /// @throws as scalarGrid().
+    volume::VectorGridPtr vectorGrid() const;
+
+    /// @brief The fibers of the AEROGEL source (polygon geometry inside the volume, paper
+    /// Figure 7); empty for the other sources. Loads on first use.
+    /// @throws as scalarGrid().
+    std::vector<volume::Fiber> fibers() const;
+
+    /// @brief The box the voxel cells cover, in the node's local space. Loads on first use.
+    /// @throws as scalarGrid().
+    sg::Box3 bounds() const;
+
+    /// @brief Whether the source is loaded now (the cache holds it).
+    bool isLoaded() const;
+
+    /// @brief Puts this node into VolumeElement and extends the action's box by bounds().
+    void getBoundingBox(sg::BoundingBoxAction& action) override;
+
+    /// @brief Puts this node into VolumeElement.
+    void doAction(sg::Action& action) override;
+
+    /// @brief Drops the cached grids, then notifies as every node does.
+    void notify(const sg::Field* source) override;
+
+protected:
+    VolumeData();
+
+private:
+    struct Loaded;
+
+    std::shared_ptr<const Loaded> loaded() const;
+    std::shared_ptr<const Loaded> load() const;
+    glm::i64vec3 dims() const;
+
+    mutable std::mutex mMutex;
+    mutable std::shared_ptr<const Loaded> mLoaded;
+    mutable volume::ScalarGridPtr mScalar;
+};
+
+} // namespace texsplat::nodes

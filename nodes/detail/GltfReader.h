@@ -1,0 +1,21 @@
+#pragma once
+
+#include "nodes/TriangleMesh.h"
+
+#include <string>
+
+namespace texsplat::nodes::detail {
+
+/// @brief Whether this build reads glTF files (CMake option TEXSPLAT_WITH_GLTF).
+bool isGltfAvailable();
+
+/// @brief The triangles of every mesh of a glTF 2.0 file (`.gltf` text or `.glb` binary) that the
+/// default scene (else the first scene, else every mesh as it is) places, with the nodes'
+/// transforms applied: positions, normals (computed when the file has none), indices, and each
+/// primitive's material base colour (white without material).
+/// @throws IoError "path: cannot open file (...)" or when built without glTF; ParseError
+/// "path: <tinygltf's message>" for a file tinygltf rejects, or for accessors that do not fit
+/// their buffers; DataError for a primitive that is not made of triangles.
+TriangleMesh readGltf(const std::string& path);
+
+} // namespace texsplat::nodes::detail

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "nodes/image/Image.h"
+
+#include <string>
+
+namespace texsplat::image {
+
+/// @brief The image file formats texsplat reads and writes, chosen by file extension.
+enum class ImageFormat {
+    Png, ///< `.png`: 8-bit RGBA, straight alpha, sRGB-encoded, for people to look at
+    Exr, ///< `.exr`: OpenEXR float32 RGBA (premultiplied) + optional Z, for numbers
+};
+
+/// @brief The format of `path` from its extension, case-insensitively (`.png`, `.exr`).
+///
+/// Throws IoError("out.tif: unknown image extension '.tif' (supported: .png, .exr)").
+ImageFormat imageFormatOf(const std::string& path);
+
+/// @brief Whether this build can read and write OpenEXR (the TEXSPLAT_WITH_EXR option).
+bool isExrSupported();
+
+/// @brief Writes `image` to `path` in the format its extension names.
+///
+/// The file appears all at once: the image is written to a temporary file in the same
+/// directory and renamed over `path`, so a failed write leaves no partial output and no
+/// temporary file, and an existing file is replaced only by a complete one. Every failure
+/// throws IoError("path: what") (unknown extension, unwritable or missing directory, full
+/// disk, a build without OpenEXR).
+void writeImage(const Image& image, const std::string& path);
+
+/// @brief Reads the image at `path` (format from its extension): PNG is converted to linear
+/// premultiplied floats, OpenEXR is read as float32. Throws IoError("path: what") for a missing,
+/// unreadable or malformed file and DataError for an EXR without R, G, B channels.
+Image readImage(const std::string& path);
+
+} // namespace texsplat::image

@@ -1,0 +1,100 @@
+#pragma once
+
+namespace texsplat::render::detail {
+
+/// The splat vertex shader: one instanced template (a textured square, or the polygonal
+/// Gaussian's fan) turned to face the eye per splat.
+///
+/// The kernel is isotropic in voxel-index space (the ellipsoidal kernel h(S⁻¹x) for voxel
+/// spacing S, as docs/kernel.md recommends for anisotropic grids), so the template is laid out
+/// there: in the plane perpendicular to e = S⁻¹d (d the unit viewing direction of the splat
+/// centre, in the volume's local space), `extent · size` voxels from the centre, and mapped back
+/// with S. Projection is linear, so the square's image is exactly the projected ellipse and its
+/// texture coordinates are the voxel-space offsets the footprint texture is tabulated over.
+/// The line integral of h(S⁻¹x) along the unit direction d is f(r)/|e| (in local length units),
+/// and a coarse splat of `size` k (h(x/k)) integrates to k·f(r/k): lengthScale = size / |e|.
+constexpr const char* kSplatVertexShader = R"(
+layout(location = 0) in vec3 corner;          // xy: template vertex in units of the extent; z: footprint (polygon template)
+layout(location = 1) in vec4 positionSize;    // octree::Splat: centre (local space), size in voxels
+layout(location = 2) in vec4 colorExtinction; // octree::Splat: emission C per unit length, extinction tau
+
+uniform mat4 localToClip;
+uniform vec3 spacing;
+uniform bool perspective;
+uniform vec3 eye;        // local space, perspective
+uniform vec3 direction;  // local space, unit
+uniform float extent;    // template half-width in voxels at size 1
+uniform bool gouraud;    // polygonal template: shade per vertex (Crawfis & Max 1993, figure 4a)
+
+out vec2 texCoord;
+out float lengthScale;
+flat out vec4 medium;
+out vec4 vertexColor;
+
+void main() {
+    vec3 centre = positionSize.xyz;
+    float size = positionSize.w;
+    vec3 d = direction;
+    if (perspective) {
+        vec3 toCentre = centre - eye;
+        float distance = length(toCentre);
+        if (distance > 0.0) d = toCentre / distance;
+    }
+    vec3 e = d / spacing;
+    float eLength = length(e);
+    vec3 axis = e / eLength;
+    // Any basis of the plane does for a radial kernel; switch helpers before they degenerate.
+    vec3 helper = abs(axis.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+    vec3 u = normalize(cross(helper, axis));
+    vec3 v = cross(axis, u);
+    vec3 offset = (corner.x * u + corner.y * v) * (extent * size);
+    gl_Position = localToClip * vec4(centre + spacing * offset, 1.0);
+    texCoord = corner.xy * 0.5 + 0.5;
+    lengthScale = size / eLength;
+    medium = colorExtinction;
+    vertexColor = gouraud ? shadeSplat(colorExtinction.rgb, colorExtinction.a,
+                                       corner.z * lengthScale)
+                          : vec4(0.0);
+}
+)";
+
+/// The splat fragment shader: the footprint texture's value, or the Gouraud-interpolated
+/// color of the polygonal template.
+constexpr const char* kSplatFragmentShader = R"(
+in vec2 texCoord;
+in float lengthScale;
+flat in vec4 medium;
+in vec4 vertexColor;
+
+uniform sampler2D footprint;
+uniform bool gouraud;
+
+out vec4 fragColor;
+
+void main() {
+    fragColor = gouraud ? vertexColor
+                        : shadeSplat(medium.rgb, medium.a, texture(footprint, texCoord).r * lengthScale);
+}
+)";
+
+/// Emission-absorption through one splat (put in front of both stages by `splatStageSource()`): a slab of length f (the
+/// footprint) with emission C and extinction tau has opacity alpha = 1 - exp(-tau f) and
+/// premultiplied color C f phi(tau f), phi(x) = (1 - exp(-x)) / x. For tau f < 1/8 the series
+/// of phi is used (1 - exp(-x) cancels in float); above, C (1 - exp(-x)) / tau, which never
+/// forms 0/0 or inf*0: tau -> 0 leaves pure emission C f, tau f >> 1 saturates to C / tau,
+/// alpha = 1.
+constexpr const char* kSplatShading = R"(#version 330 core
+vec4 shadeSplat(vec3 emission, float tau, float footprint) {
+    float f = max(footprint, 0.0);
+    float x = tau * f;
+    if (x < 0.125) {
+        float phi = 1.0 - x / 2.0 * (1.0 - x / 3.0 * (1.0 - x / 4.0 * (1.0 - x / 5.0 *
+                    (1.0 - x / 6.0 * (1.0 - x / 7.0)))));
+        return vec4(emission * (f * phi), x * phi);
+    }
+    float alpha = 1.0 - exp(-x);
+    return vec4(emission * (alpha / tau), alpha);
+}
+)";
+
+} // namespace texsplat::render::detail

@@ -1,0 +1,87 @@
+#pragma once
+
+#include "nodes/volume/GridGeometry.h"
+#include "nodes/volume/GridStatistics.h"
+
+#include <glm/glm.hpp>
+
+#include <cmath>
+#include <cstddef>
+#include <functional>
+#include <memory>
+#include <variant>
+
+namespace texsplat::volume {
+
+/// @brief Whether a voxel value is usable: finite, or for vectors finite in every component.
+inline bool isFiniteValue(float value) { return std::isfinite(value); }
+/// @brief Whether a voxel value is usable: finite, or for vectors finite in every component.
+inline bool isFiniteValue(const glm::vec3& value) {
+    return std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z);
+}
+
+/// @brief The one interface the splat, octree and ray-cast code read volumes through, whatever
+/// the storage (DenseGrid for raw files and generators, SparseGrid for OpenVDB files).
+///
+/// A voxel is *non-empty* when it is stored (every voxel of a dense grid, an active voxel of a
+/// sparse one) and its value is finite. Empty voxels produce no splats, so consumers iterate
+/// the non-empty ones with forEachActive() and never see NaN or infinity: value() answers the
+/// background for an empty voxel. Grids are filled by their source and then shared read-only
+/// (`std::shared_ptr<const Grid>`); const member functions may be called from several threads.
+template <typename T>
+class Grid {
+public:
+    /// @brief The voxel value type: float for scalar grids, glm::vec3 for vector grids.
+    using ValueType = T;
+    /// @brief Receives one voxel: its index and its value.
+    using VoxelVisitor = std::function<void(const glm::i64vec3& index, const T& value)>;
+
+    virtual ~Grid() = default;
+    Grid(const Grid&) = delete;
+    Grid& operator=(const Grid&) = delete;
+
+    /// @brief Dimensions, origin and spacing.
+    const GridGeometry& geometry() const { return mGeometry; }
+    /// @brief The value value() answers for empty voxels.
+    const T& background() const { return mBackground; }
+
+    /// @brief Random access: the value of voxel `index`, or background() when the voxel is
+    /// empty. `index` must lie inside the grid.
+    virtual T value(const glm::i64vec3& index) const = 0;
+    /// @brief Whether voxel `index` is non-empty (stored and finite).
+    virtual bool isActive(const glm::i64vec3& index) const = 0;
+    /// @brief Calls `visit` for every stored voxel, finite or not, in storage order.
+    virtual void forEachStored(const VoxelVisitor& visit) const = 0;
+    /// @brief Bytes of voxel storage held (for sparse grids proportional to the active blocks).
+    virtual std::size_t memoryBytes() const = 0;
+
+    /// @brief Calls `visit` for every non-empty voxel (stored and finite), in storage order.
+    void forEachActive(const VoxelVisitor& visit) const;
+    /// @brief Value range and counts; scans the stored voxels on each call, so cache the result.
+    GridStatistics statistics() const;
+
+protected:
+    /// @brief For subclasses: a grid with this geometry whose empty voxels read as `background`.
+    Grid(const GridGeometry& geometry, const T& background)
+        : mGeometry(geometry), mBackground(background) {}
+
+private:
+    GridGeometry mGeometry;
+    T mBackground;
+};
+
+extern template class Grid<float>;
+extern template class Grid<glm::vec3>;
+
+/// @brief A grid of float values.
+using ScalarGrid = Grid<float>;
+/// @brief A grid of 3D vectors.
+using VectorGrid = Grid<glm::vec3>;
+/// @brief Shared read-only scalar grid, as nodes hold it.
+using ScalarGridPtr = std::shared_ptr<const ScalarGrid>;
+/// @brief Shared read-only vector grid, as nodes hold it.
+using VectorGridPtr = std::shared_ptr<const VectorGrid>;
+/// @brief What a file source yields: a scalar or a vector grid, decided by the file.
+using AnyGrid = std::variant<ScalarGridPtr, VectorGridPtr>;
+
+} // namespace texsplat::volume

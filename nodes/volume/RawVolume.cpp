@@ -1,0 +1,183 @@
+#include "nodes/volume/RawVolume.h"
+
+#include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/RawHeader.h"
+#include "nodes/volume/detail/SourceSupport.h"
+#include "scenegraph/Error.h"
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <vector>
+
+namespace texsplat::volume {
+namespace {
+
+constexpr bool kHostIsLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
+constexpr std::int64_t kChunkBytes = std::int64_t{1} << 22;
+
+template <typename Stored>
+void decode(const unsigned char* bytes, std::size_t count, bool swapBytes, float* out) {
+    unsigned char word[sizeof(Stored)];
+    for (std::size_t i = 0; i < count; ++i, bytes += sizeof(Stored)) {
+        std::memcpy(word, bytes, sizeof(Stored));
+        if (swapBytes)
+            std::reverse(word, word + sizeof(Stored));
+        Stored value;
+        std::memcpy(&value, word, sizeof(Stored));
+        out[i] = static_cast<float>(value);
+    }
+}
+
+void decode(RawValueType type, const unsigned char* bytes, std::size_t count, bool swapBytes,
+            float* out) {
+    switch (type) {
+    case RawValueType::Float32: decode<float>(bytes, count, swapBytes, out); break;
+    case RawValueType::Float64: decode<double>(bytes, count, swapBytes, out); break;
+    case RawValueType::UInt8: decode<std::uint8_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::UInt16: decode<std::uint16_t>(bytes, count, swapBytes, out); break;
+    }
+}
+
+std::string sizeDescription(const RawHeader& header) {
+    return "the header asks for " + std::to_string(header.dims.x) + " x " +
+           std::to_string(header.dims.y) + " x " + std::to_string(header.dims.z) + " voxels x " +
+           std::to_string(header.components) +
+           (header.components == 1 ? " component x " : " components x ") +
+           std::to_string(header.bytesPerValue()) + " bytes (" + toString(header.type) +
+           ") = " + std::to_string(header.dataBytes()) + " bytes";
+}
+
+// Reads the values chunk by chunk into `store(firstValue, values, count)`, reporting progress.
+template <typename Store>
+void readValues(std::ifstream& in, const std::string& path, const RawHeader& header,
+                const ProgressCallback& progress, Store store) {
+    const std::int64_t valueBytes = header.bytesPerValue();
+    const std::int64_t totalValues = header.dataBytes() / valueBytes;
+    // Whole voxels per chunk, so a vector never straddles two chunks.
+    const std::int64_t voxelBytes = valueBytes * header.components;
+    const std::int64_t chunkValues = std::max<std::int64_t>(1, kChunkBytes / voxelBytes) *
+                                     header.components;
+    const bool swapBytes = (header.endian == RawEndian::Little) != kHostIsLittleEndian;
+    std::vector<unsigned char> bytes;
+    std::vector<float> values;
+    const std::string message = "reading " + path;
+    reportProgress(progress, path, 0.0, message);
+    for (std::int64_t done = 0; done < totalValues;) {
+        const std::int64_t count = std::min(chunkValues, totalValues - done);
+        bytes.resize(static_cast<std::size_t>(count * valueBytes));
+        values.resize(static_cast<std::size_t>(count));
+        if (!in.read(reinterpret_cast<char*>(bytes.data()),
+                     static_cast<std::streamsize>(bytes.size())))
+            throw IoError(path + ": read failed after " + std::to_string(done * valueBytes) +
+                          " bytes of data");
+        decode(header.type, bytes.data(), values.size(), swapBytes, values.data());
+        store(done, values.data(), count);
+        done += count;
+        reportProgress(progress, path, double(done) / double(totalValues), message);
+    }
+}
+
+template <typename T>
+void writeGrid(const std::string& path, const Grid<T>& grid, int components) {
+    const GridGeometry& geometry = grid.geometry();
+    RawHeader header;
+    header.dims = geometry.dims();
+    header.components = components;
+    header.spacing = geometry.spacing();
+    header.origin = geometry.origin();
+    const std::string temporary = path + ".partial";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out)
+            throw IoError(path + ": cannot write file (" + std::strerror(errno) + ")");
+        out << header.format();
+        std::vector<float> row(static_cast<std::size_t>(geometry.dims().x * components));
+        glm::i64vec3 index;
+        for (index.z = 0; index.z < geometry.dims().z; ++index.z)
+            for (index.y = 0; index.y < geometry.dims().y; ++index.y) {
+                for (index.x = 0; index.x < geometry.dims().x; ++index.x) {
+                    const T value = grid.value(index);
+                    std::memcpy(&row[static_cast<std::size_t>(index.x * components)], &value,
+                                sizeof(float) * components);
+                }
+                if constexpr (!kHostIsLittleEndian)
+                    for (float& value : row)
+                        std::reverse(reinterpret_cast<char*>(&value),
+                                     reinterpret_cast<char*>(&value) + sizeof(float));
+                out.write(reinterpret_cast<const char*>(row.data()),
+                          static_cast<std::streamsize>(row.size() * sizeof(float)));
+            }
+        if (!out.flush()) {
+            std::filesystem::remove(temporary);
+            throw IoError(path + ": cannot write file (write failed)");
+        }
+    }
+    std::error_code error;
+    std::filesystem::rename(temporary, path, error);
+    if (error) {
+        std::filesystem::remove(temporary);
+        throw IoError(path + ": cannot write file (" + error.message() + ")");
+    }
+}
+
+} // namespace
+
+AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress) {
+    std::ifstream in = detail::openForReading(path);
+    const RawHeader header = RawHeader::parse(in, path);
+    const std::int64_t dataStart = in.tellg();
+    std::error_code sizeError;
+    const auto fileSize = static_cast<std::int64_t>(std::filesystem::file_size(path, sizeError));
+    if (sizeError)
+        throw IoError(path + ": cannot read file size (" + sizeError.message() + ")");
+    const std::int64_t available = fileSize - dataStart;
+    const std::int64_t needed = [&] {
+        try {
+            return header.dataBytes();
+        } catch (const DataError& error) {
+            throw DataError(path + ": " + error.what());
+        }
+    }();
+    if (available < needed)
+        throw DataError(path + ": truncated data: " + sizeDescription(header) + ", but only " +
+                        std::to_string(available) + " bytes follow it");
+    if (available > needed)
+        throw DataError(path + ": data size mismatch: " + sizeDescription(header) + ", but " +
+                        std::to_string(available) + " bytes follow it");
+
+    const GridGeometry geometry(header.dims, header.origin, header.spacing);
+    AnyGrid result;
+    if (header.components == 1) {
+        auto grid = std::make_shared<DenseScalarGrid>(geometry);
+        float* target = grid->values().data();
+        readValues(in, path, header, progress,
+                   [target](std::int64_t first, const float* values, std::int64_t count) {
+                       std::copy(values, values + count, target + first);
+                   });
+        detail::warnAboutNonFiniteVoxels(path, grid->statistics());
+        result = grid;
+    } else {
+        auto grid = std::make_shared<DenseVectorGrid>(geometry);
+        glm::vec3* target = grid->values().data();
+        readValues(in, path, header, progress,
+                   [target](std::int64_t first, const float* values, std::int64_t count) {
+                       for (std::int64_t i = 0; i < count; i += 3)
+                           target[(first + i) / 3] = glm::vec3(values[i], values[i + 1],
+                                                               values[i + 2]);
+                   });
+        detail::warnAboutNonFiniteVoxels(path, grid->statistics());
+        result = grid;
+    }
+    return result;
+}
+
+void writeRawVolume(const std::string& path, const ScalarGrid& grid) { writeGrid(path, grid, 1); }
+
+void writeRawVolume(const std::string& path, const VectorGrid& grid) { writeGrid(path, grid, 3); }
+
+} // namespace texsplat::volume

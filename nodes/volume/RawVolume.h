@@ -1,0 +1,31 @@
+#pragma once
+
+#include "nodes/volume/Grid.h"
+#include "nodes/volume/Progress.h"
+
+#include <string>
+
+namespace texsplat::volume {
+
+/// @brief Reads a texsplat-raw file (RawHeader, docs/data.md) into a dense grid: a ScalarGrid
+/// for `components 1`, a VectorGrid for `components 3`. Values of every type become float as
+/// they are (uint8 255 reads as 255.0); NaN or infinite values become empty voxels and are
+/// reported in one warning through texsplat::log.
+///
+/// `progress` is called as the data is read (about every 4 MiB) and may cancel.
+/// @throws IoError when the file cannot be opened or read; ParseError for a malformed header;
+/// DataError for a zero-size grid or when the data after the header is shorter or longer than
+/// the header says; LoadCancelled when `progress` answered false.
+AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress = {});
+
+/// @brief Writes `grid` as a texsplat-raw file of float32, little endian, 1 component; empty
+/// voxels are written as the background. The file appears complete or not at all (written to a
+/// temporary file, then renamed).
+/// @throws IoError when the file cannot be written.
+void writeRawVolume(const std::string& path, const ScalarGrid& grid);
+
+/// @brief Writes `grid` as a texsplat-raw file of float32, little endian, 3 components;
+/// otherwise as the scalar overload.
+void writeRawVolume(const std::string& path, const VectorGrid& grid);
+
+} // namespace texsplat::volume

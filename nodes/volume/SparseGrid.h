@@ -1,0 +1,80 @@
+#pragma once
+
+#include "nodes/volume/Grid.h"
+
+#include <array>
+#include <bitset>
+#include <cstdint>
+#include <memory>
+#include <unordered_map>
+#include <vector>
+
+namespace texsplat::volume {
+
+/// @brief A block-sparse grid: only 8³ blocks that hold an active voxel are allocated, so memory
+/// is proportional to the active voxels (as in OpenVDB's leaf nodes, which map onto the blocks
+/// one to one when the OpenVDB reader passes the matching block offset).
+///
+/// A voxel is active once setValue() stored a value in it; inactive voxels read as the
+/// background. An active voxel with a non-finite value is still empty (see Grid).
+template <typename T>
+class SparseGrid final : public Grid<T> {
+public:
+    /// @brief Edge length of a block, in voxels.
+    static constexpr std::int64_t kBlockSize = 8;
+
+    /// @brief An empty grid of `geometry`. Block boundaries lie where (index + blockOffset) is a
+    /// multiple of kBlockSize; blockOffset components must be in [0, kBlockSize).
+    explicit SparseGrid(const GridGeometry& geometry, const T& background = T(0.0f),
+                        const glm::i64vec3& blockOffset = glm::i64vec3(0));
+
+    /// @brief Stores `value` in voxel `index` (inside the grid) and makes it active.
+    void setValue(const glm::i64vec3& index, const T& value);
+    /// @brief The offset passed to the constructor.
+    const glm::i64vec3& blockOffset() const { return mBlockOffset; }
+    /// @brief Number of allocated blocks.
+    std::size_t blockCount() const { return mBlocks.size(); }
+    /// @brief Number of active voxels (finite or not).
+    std::int64_t activeVoxelCount() const;
+
+    /// @copydoc Grid::value
+    T value(const glm::i64vec3& index) const override;
+    /// @copydoc Grid::isActive
+    bool isActive(const glm::i64vec3& index) const override;
+    /// @copydoc Grid::forEachStored
+    void forEachStored(const typename Grid<T>::VoxelVisitor& visit) const override;
+    /// @copydoc Grid::memoryBytes
+    std::size_t memoryBytes() const override;
+
+private:
+    static constexpr std::size_t kBlockVoxels = 512;
+    struct Block {
+        glm::i64vec3 first; // grid index of the block's voxel (0,0,0); may be negative
+        std::bitset<kBlockVoxels> active;
+        std::array<T, kBlockVoxels> values;
+    };
+
+    struct Location {
+        std::int64_t key;   // which block, as a linear index over the block lattice
+        glm::i64vec3 first; // grid index of that block's voxel (0,0,0)
+        std::size_t slot;   // which voxel inside it, x fastest
+    };
+
+    Location locate(const glm::i64vec3& index) const;
+    const Block* findBlock(const Location& location) const;
+
+    glm::i64vec3 mBlockOffset;
+    glm::i64vec3 mBlockDims;
+    std::vector<std::unique_ptr<Block>> mBlocks;
+    std::unordered_map<std::int64_t, std::size_t> mBlockByKey;
+};
+
+extern template class SparseGrid<float>;
+extern template class SparseGrid<glm::vec3>;
+
+/// @brief A sparse grid of float values.
+using SparseScalarGrid = SparseGrid<float>;
+/// @brief A sparse grid of 3D vectors.
+using SparseVectorGrid = SparseGrid<glm::vec3>;
+
+} // namespace texsplat::volume

@@ -1,0 +1,161 @@
+#include "nodes/volume/VdbVolume.h"
+
+#include "scenegraph/Error.h"
+
+#ifdef TEXSPLAT_WITH_OPENVDB
+#include "nodes/volume/SparseGrid.h"
+#include "nodes/volume/detail/SourceSupport.h"
+
+#include <openvdb/openvdb.h>
+
+#include <memory>
+#endif
+
+namespace texsplat::volume {
+
+#ifdef TEXSPLAT_WITH_OPENVDB
+namespace {
+
+constexpr std::int64_t kProgressInterval = std::int64_t{1} << 16;
+
+glm::vec3 toGlm(const openvdb::Vec3f& v) { return {v.x(), v.y(), v.z()}; }
+float toGlm(float v) { return v; }
+
+// Opens with OpenVDB after checking the path ourselves, so a missing file gets the same message
+// as from the raw reader instead of OpenVDB's wording.
+std::unique_ptr<openvdb::io::File> openVdb(const std::string& path) {
+    openvdb::initialize();
+    detail::openForReading(path);
+    auto file = std::make_unique<openvdb::io::File>(path);
+    try {
+        file->open(false);
+    } catch (const openvdb::Exception& error) {
+        throw IoError(path + ": cannot read OpenVDB file (" + error.what() + ")");
+    }
+    return file;
+}
+
+std::vector<VdbGridInfo> gridInfos(openvdb::io::File& file) {
+    std::vector<VdbGridInfo> infos;
+    const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
+    for (const openvdb::GridBase::Ptr& grid : *grids)
+        infos.push_back({grid->getName(), grid->valueType()});
+    return infos;
+}
+
+// Index (0,0,0) of our grid is the low corner of the active bounding box; its world position and
+// the voxel size come from the OpenVDB transform, which must be diagonal.
+GridGeometry geometryOf(const openvdb::GridBase& grid, const openvdb::CoordBBox& box,
+                        const std::string& where) {
+    const openvdb::math::Transform& transform = grid.transform();
+    const openvdb::Mat4d matrix = transform.baseMap()->getAffineMap()->getMat4();
+    bool axisAligned = transform.isLinear();
+    for (int row = 0; row < 3; ++row)
+        for (int column = 0; column < 3; ++column)
+            axisAligned = axisAligned && (row == column ? matrix(row, column) > 0.0
+                                                        : matrix(row, column) == 0.0);
+    if (!axisAligned)
+        throw DataError(where + " has a rotated, sheared, mirrored or non-linear transform; "
+                                "only axis-aligned scale and translation are supported");
+    const openvdb::Vec3d origin = transform.indexToWorld(box.min());
+    const openvdb::Coord dims = box.dim();
+    try {
+        return GridGeometry(glm::i64vec3(dims.x(), dims.y(), dims.z()),
+                            glm::dvec3(origin.x(), origin.y(), origin.z()),
+                            glm::dvec3(matrix(0, 0), matrix(1, 1), matrix(2, 2)));
+    } catch (const DataError& error) {
+        throw DataError(where + ": " + error.what());
+    }
+}
+
+template <typename VdbGrid>
+auto convert(const VdbGrid& source, const std::string& path, const std::string& gridName,
+             const ProgressCallback& progress) {
+    using Value = decltype(toGlm(source.background()));
+    const std::string where = path + ": grid '" + gridName + "'";
+    const openvdb::CoordBBox box = source.evalActiveVoxelBoundingBox();
+    if (box.empty())
+        throw DataError(where + " has no active voxels");
+    const GridGeometry geometry = geometryOf(source, box, where);
+    // Align our 8^3 blocks with OpenVDB's leaf nodes, whose origins are multiples of 8: our
+    // index is OpenVDB's minus `low`, so an offset of (low mod 8) puts block boundaries on
+    // leaf boundaries and each leaf becomes exactly one block.
+    constexpr std::int64_t kBlock = SparseGrid<Value>::kBlockSize;
+    const glm::i64vec3 low(box.min().x(), box.min().y(), box.min().z());
+    const glm::i64vec3 blockOffset = ((low % kBlock) + kBlock) % kBlock;
+    auto grid = std::make_shared<SparseGrid<Value>>(geometry, toGlm(source.background()),
+                                                    blockOffset);
+    const auto total = static_cast<double>(source.activeVoxelCount());
+    const std::string message = "copying grid '" + gridName + "'";
+    std::int64_t copied = 0;
+    reportProgress(progress, path, 0.0, message);
+    for (auto value = source.tree().cbeginValueOn(); value; ++value) {
+        openvdb::CoordBBox voxels;
+        value.getBoundingBox(voxels); // one voxel, or the extent of an active tile
+        const Value stored = toGlm(*value);
+        for (auto coord = voxels.begin(); coord; ++coord) {
+            grid->setValue(glm::i64vec3((*coord).x(), (*coord).y(), (*coord).z()) - low, stored);
+            if (++copied % kProgressInterval == 0)
+                reportProgress(progress, path, double(copied) / total, message);
+        }
+    }
+    reportProgress(progress, path, 1.0, message);
+    detail::warnAboutNonFiniteVoxels(path, grid->statistics());
+    return grid;
+}
+
+} // namespace
+
+bool isOpenVdbAvailable() { return true; }
+
+std::vector<VdbGridInfo> listVdbGrids(const std::string& path) {
+    auto file = openVdb(path);
+    return gridInfos(*file);
+}
+
+AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
+                    const ProgressCallback& progress) {
+    auto file = openVdb(path);
+    if (!file->hasGrid(gridName)) {
+        const std::vector<VdbGridInfo> infos = gridInfos(*file);
+        std::string available;
+        for (const VdbGridInfo& info : infos)
+            available += (available.empty() ? "" : ", ") + info.name + " (" + info.valueType + ")";
+        throw DataError(path + ": no grid named '" + gridName + "'; " +
+                        (infos.empty() ? "the file has no grids" : "the file has: " + available));
+    }
+    const std::string where = path + ": grid '" + gridName + "'";
+    openvdb::GridBase::Ptr base;
+    try {
+        base = file->readGrid(gridName);
+    } catch (const openvdb::Exception& error) {
+        throw IoError(where + " cannot be read (" + error.what() + ")");
+    }
+    if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
+        return ScalarGridPtr(convert(*scalar, path, gridName, progress));
+    if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))
+        return VectorGridPtr(convert(*vector, path, gridName, progress));
+    throw DataError(where + " holds " + base->valueType() +
+                    " values; expected float or vec3s");
+}
+
+#else
+
+namespace {
+[[noreturn]] void notBuiltIn(const std::string& path) {
+    throw IoError(path + ": cannot read OpenVDB files: texsplat was built without OpenVDB "
+                         "(CMake option TEXSPLAT_WITH_OPENVDB=OFF)");
+}
+} // namespace
+
+bool isOpenVdbAvailable() { return false; }
+
+std::vector<VdbGridInfo> listVdbGrids(const std::string& path) { notBuiltIn(path); }
+
+AnyGrid readVdbGrid(const std::string& path, const std::string&, const ProgressCallback&) {
+    notBuiltIn(path);
+}
+
+#endif
+
+} // namespace texsplat::volume

@@ -1,0 +1,47 @@
+#pragma once
+
+#include "nodes/volume/DenseGrid.h"
+#include "scenegraph/Error.h"
+
+#include <memory>
+#include <string>
+
+namespace texsplat::volume::detail {
+
+/// @brief A dense grid whose voxel values are `field(world position of the voxel center)`.
+template <typename T, typename Field>
+std::shared_ptr<DenseGrid<T>> sampleGrid(const GridGeometry& geometry, const Field& field) {
+    auto grid = std::make_shared<DenseGrid<T>>(geometry);
+    T* out = grid->values().data();
+    const glm::i64vec3& dims = geometry.dims();
+    for (std::int64_t k = 0; k < dims.z; ++k)
+        for (std::int64_t j = 0; j < dims.y; ++j)
+            for (std::int64_t i = 0; i < dims.x; ++i)
+                *out++ = T(field(geometry.indexToWorld(glm::dvec3(i, j, k))));
+    return grid;
+}
+
+/// @brief Spacing that puts `dims` samples on [low, high] with both ends sampled, as the
+/// classic generators do; a one-voxel axis samples `low` only (spacing then is the full extent,
+/// so the voxel's cell covers the domain).
+inline glm::dvec3 endpointSpacing(const glm::i64vec3& dims, const glm::dvec3& low,
+                                  const glm::dvec3& high) {
+    glm::dvec3 spacing;
+    for (int axis = 0; axis < 3; ++axis)
+        spacing[axis] = dims[axis] > 1 ? (high[axis] - low[axis]) / double(dims[axis] - 1)
+                                       : high[axis] - low[axis];
+    return spacing;
+}
+
+/// @brief The geometry of a generator: `dims` samples over the box [low, high], ends included.
+/// @throws DataError "<generator>: grid dimensions must be ..." for unusable dims.
+inline GridGeometry generatorGeometry(const std::string& generator, const glm::i64vec3& dims,
+                                      const glm::dvec3& low, const glm::dvec3& high) {
+    try {
+        return GridGeometry(dims, low, endpointSpacing(dims, low, high));
+    } catch (const DataError& error) {
+        throw DataError(generator + ": " + error.what());
+    }
+}
+
+} // namespace texsplat::volume::detail

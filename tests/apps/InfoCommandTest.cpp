@@ -1,0 +1,134 @@
+#include "RunCommand.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using texsplat::test::runTexsplat;
+
+namespace {
+
+class InfoCommandTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDirectory = fs::path(::testing::TempDir()) /
+                     ("texsplat_info_" + std::to_string(getpid()) + "_" + info->name());
+        fs::remove_all(mDirectory);
+        fs::create_directories(mDirectory);
+    }
+    void TearDown() override { fs::remove_all(mDirectory); }
+
+    std::string write(const std::string& name, const std::string& text) const {
+        const std::string path = (mDirectory / name).string();
+        std::ofstream(path, std::ios::binary) << text;
+        return path;
+    }
+
+    static std::string read(const std::string& path) {
+        std::ifstream file(path, std::ios::binary);
+        std::ostringstream text;
+        text << file.rdbuf();
+        return text.str();
+    }
+
+private:
+    fs::path mDirectory;
+};
+
+TEST_F(InfoCommandTest, printsTheGraphWithItsNonDefaultFields) {
+    const std::string path = write("scene.iv", R"(#Inventor V2.1 ascii
+Separator {
+    DEF pick Switch { whichChild 0 Group { } }
+    Switch { whichChild = USE pick . whichChild }
+    USE pick
+}
+)");
+    const auto output = runTexsplat("info " + path);
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_EQ(output.standardOutput, "#Inventor V2.1 ascii\n# " + path + R"(: 4 nodes, 0 engines, 1 shared; Group 1, Separator 1, Switch 2
+
+Separator {
+    DEF pick Switch {
+        whichChild 0
+        Group {
+        }
+    }
+    Switch {
+        whichChild = USE pick . whichChild
+    }
+    USE pick
+}
+)");
+}
+
+TEST_F(InfoCommandTest, printsTheReadErrorWithFileLineAndColumn) {
+    const std::string path = write("bad.iv", "#Inventor V2.1 ascii\nSwitch { whichChil 1 }\n");
+    const auto output = runTexsplat("info " + path);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardOutput, "");
+    EXPECT_EQ(output.standardError, "texsplat: error: " + path +
+                                        ":2:10: unknown field 'whichChil' of Switch (fields: "
+                                        "whichChild)\n");
+}
+
+// Usage errors are CLI11's: its message first, its exit code (not 0, not kExitFailure).
+TEST_F(InfoCommandTest, needsASceneOrTheReference) {
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"info", "scene (or --reference) is required\n"},
+        {"info --reference scene.iv", "scene excludes --reference\n"},
+        {"info --update x.md", "--update requires --reference\n"},
+    };
+    for (const auto& [arguments, message] : cases) {
+        const auto output = runTexsplat(arguments);
+        EXPECT_NE(output.exitCode, 0) << arguments;
+        EXPECT_NE(output.exitCode, 1) << arguments;
+        EXPECT_EQ(output.standardError.substr(0, message.size()), message) << arguments;
+    }
+}
+
+TEST_F(InfoCommandTest, referenceListsTypesWithFieldsAndDefaults) {
+    const auto output = runTexsplat("info --reference");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find(R"(### Switch
+
+Node, derived from Group. Takes child nodes. Standard Inventor type.
+
+| field | type | default |
+|---|---|---|
+| whichChild | SFInt32 | `-1` |
+)"),
+              std::string::npos)
+        << output.standardOutput;
+}
+
+TEST_F(InfoCommandTest, docsHoldTheCurrentGeneratedReference) {
+    const std::string docs = read(TEXSPLAT_SOURCE_DIR "/docs/scene-files.md");
+    const std::string copy = write("scene-files.md", docs);
+    const auto output = runTexsplat("info --reference --update " + copy);
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_TRUE(read(copy) == docs)
+        << "docs/scene-files.md is out of date: run `texsplat info --reference --update "
+           "docs/scene-files.md`";
+}
+
+TEST_F(InfoCommandTest, updateNeedsTheGeneratedSectionMarkers) {
+    const std::string path = write("plain.md", "# no markers\n");
+    const auto output = runTexsplat("info --reference --update " + path);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: " + path +
+                  ": expected the lines '<!-- BEGIN GENERATED REFERENCE (texsplat info "
+                  "--reference): do not edit by hand -->' and then '<!-- END GENERATED "
+                  "REFERENCE -->' around the generated reference\n");
+    EXPECT_EQ(read(path), "# no markers\n");
+}
+
+} // namespace

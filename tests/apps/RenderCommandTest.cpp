@@ -1,0 +1,108 @@
+#include "RunCommand.h"
+
+#include "nodes/image/ImageIo.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using texsplat::image::Image;
+using texsplat::test::runTexsplat;
+
+namespace {
+
+class RenderCommandTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDirectory = fs::path(::testing::TempDir()) /
+                     ("texsplat_render_" + std::to_string(getpid()) + "_" + info->name());
+        fs::remove_all(mDirectory);
+        fs::create_directories(mDirectory);
+    }
+    void TearDown() override { fs::remove_all(mDirectory); }
+
+    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
+
+    // A small scene file: a 12^3 blob as texture splats, no camera.
+    std::string writeScene(const std::string& extra = "") const {
+        const std::string scene = path("blob.iv");
+        std::ofstream(scene) << "#Inventor V2.1 ascii\nSeparator {\n" << extra
+                             << "TransferFunction { preset HOT range 0 1.2 opacities [ 0, 4 ] "
+                                "opacityValues [ 0, 1 ] }\n"
+                                "VolumeData { source BLOB resolution 12 12 12 }\n"
+                                "TextureSplat { }\n}\n";
+        return scene;
+    }
+
+    // Expects a failure with exactly `message` and no image left behind.
+    void expectError(const std::string& arguments, const std::string& message,
+                     const std::string& output) const {
+        const auto result = runTexsplat("render " + arguments);
+        EXPECT_EQ(result.exitCode, 1) << result.standardError;
+        EXPECT_EQ(result.standardError, "texsplat: error: " + message + "\n");
+        EXPECT_FALSE(fs::exists(output));
+    }
+
+    fs::path mDirectory;
+};
+
+TEST_F(RenderCommandTest, rendersTheDefaultSceneAndReportsItsTimes) {
+    const std::string output = path("default.png");
+    const auto result = runTexsplat("render -o " + output + " --size 48x32 --time-report");
+    ASSERT_EQ(result.exitCode, 0) << result.standardError;
+    for (const char* phase : {"read", "context", "load", "classify", "order", "upload", "draw",
+                              "read back", "write", "splats "}) {
+        EXPECT_NE(result.standardOutput.find(phase), std::string::npos) << phase;
+    }
+    const Image image = texsplat::image::readImage(output);
+    EXPECT_EQ(image.width(), 48);
+    EXPECT_EQ(image.height(), 32);
+    const Image::Statistics statistics = image.statistics();
+    EXPECT_EQ(statistics.nonFinitePixels, 0u);
+    EXPECT_GT(statistics.maximum.r, 0.1);
+    EXPECT_EQ(statistics.minimum.a, 1.0); // composited over opaque black
+}
+
+TEST_F(RenderCommandTest, rendersASceneFileToExrWithDepthAndCameraOptions) {
+    if (!texsplat::image::isExrSupported()) {
+        GTEST_SKIP() << "built without OpenEXR";
+    }
+    const std::string output = path("blob.exr");
+    const auto result = runTexsplat("render " + writeScene() + " -o " + output +
+                                    " --size 32x32 --camera orthographic --direction 1,0,0");
+    ASSERT_EQ(result.exitCode, 0) << result.standardError;
+    const Image image = texsplat::image::readImage(output);
+    const Image::Statistics statistics = image.statistics();
+    EXPECT_EQ(statistics.nonFinitePixels, 0u);
+    EXPECT_GT(statistics.maximum.r, 0.1);
+    EXPECT_EQ(statistics.minimum.a, 0.0); // the EXR keeps the layer's own alpha
+}
+
+TEST_F(RenderCommandTest, reportsBadInputsAndWritesNothing) {
+    const std::string png = path("out.png");
+    expectError("-o " + png + " --size 64", "--size: expected WxH with whole numbers from 1 to "
+                                            "16384, got '64'", png);
+    expectError("-o " + png + " --size 0x10", "--size: expected WxH with whole numbers from 1 to "
+                                              "16384, got '0x10'", png);
+    const std::string tif = path("out.tif");
+    expectError("-o " + tif, tif + ": unknown image extension '.tif' (supported: .png, .exr)", tif);
+    expectError("-o " + png + " --camera fisheye",
+                "--camera: expected 'perspective' or 'orthographic', got 'fisheye'", png);
+    expectError("-o " + png + " --direction 0,0,0",
+                "--direction: expected three numbers x,y,z not all zero, got '0,0,0'", png);
+    const std::string withCamera = writeScene("PerspectiveCamera { }\n");
+    expectError(withCamera + " -o " + png + " --direction 1,0,0",
+                "--direction/--camera: the scene has its own camera (PerspectiveCamera); they "
+                "frame scenes without one",
+                png);
+    const auto missing = runTexsplat("render " + path("missing.iv") + " -o " + png);
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.standardError.find(path("missing.iv")), std::string::npos);
+    EXPECT_FALSE(fs::exists(png));
+}
+
+} // namespace

@@ -1,0 +1,192 @@
+#include "nodes/render/SplatBatch.h"
+
+#include "SplatTestSupport.h"
+#include "nodes/kernel/CubicKernel.h"
+#include "nodes/kernel/FootprintTexture.h"
+#include "nodes/kernel/GaussianKernel.h"
+#include "nodes/kernel/KernelOptimizer.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/gl/CheckGlError.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <limits>
+
+namespace texsplat::render {
+namespace {
+
+// The paper's figure 2 (Crawfis & Max 1993, section 2): one layer of glowing, completely
+// transparent splats projected along z; the sum of footprints has max 1.00249 at (.5, .5) and
+// min 0.99845 at (.25, .25) relative to its mean 1.
+constexpr double kPaperLayerMax = 1.00249;
+constexpr double kPaperLayerMin = 0.99845;
+
+// Figure 2 set-up: a 16 x 16 layer of unit voxels, 8 pixels per voxel, pixel centres on the
+// lattice points k/8 (so they hit (.5,.5) and (.25,.25)), the interior keeps 2 voxels (more than
+// the support 1.556) from the layer's edge.
+constexpr int kLayerVoxels = 16;
+constexpr int kPixelsPerVoxel = 8;
+constexpr int kImageSize = kLayerVoxels * kPixelsPerVoxel;
+constexpr int kInteriorLow = 2 * kPixelsPerVoxel;
+constexpr int kInteriorHigh = (kLayerVoxels - 3) * kPixelsPerVoxel;
+
+struct LayerStatistics {
+    double mean = 0.0;
+    double max = 0.0;
+    double min = 0.0;
+    double relativeMax() const { return max / mean; }
+    double relativeMin() const { return min / mean; }
+};
+
+// One layer of voxels with emission `emission` per unit length and no extinction, in slice
+// order for a view along −z.
+octree::SplatList glowingLayer(float emission) {
+    octree::ClassifiedGrid grid({kLayerVoxels, kLayerVoxels, 1}, glm::dvec3(1.0), glm::dvec3(0.0));
+    for (std::uint64_t j = 0; j < kLayerVoxels; ++j) {
+        for (std::uint64_t i = 0; i < kLayerVoxels; ++i) {
+            grid.setVoxel({i, j, 0}, glm::vec3(emission), 0.0f);
+        }
+    }
+    octree::SplatList splats;
+    octree::emitVoxelSplats(grid, octree::View::orthographic({0.0, 0.0, -1.0}), splats);
+    return splats;
+}
+
+render::SplatView layerView() {
+    const float pixel = 1.0f / kPixelsPerVoxel;
+    return test::topView(-0.5f * pixel, static_cast<float>(kLayerVoxels));
+}
+
+LayerStatistics interiorStatistics(const std::vector<float>& red, int width) {
+    LayerStatistics statistics;
+    statistics.max = -std::numeric_limits<double>::infinity();
+    statistics.min = std::numeric_limits<double>::infinity();
+    double sum = 0.0;
+    int count = 0;
+    for (int y = kInteriorLow; y <= kInteriorHigh; ++y) {
+        for (int x = kInteriorLow; x <= kInteriorHigh; ++x) {
+            const double value = red[static_cast<std::size_t>(y * width + x)];
+            sum += value;
+            ++count;
+            statistics.max = std::max(statistics.max, value);
+            statistics.min = std::min(statistics.min, value);
+        }
+    }
+    statistics.mean = sum / count;
+    return statistics;
+}
+
+LayerStatistics renderLayer(SplatBatch& batch) {
+    batch.upload(glowingLayer(1.0f));
+    const image::Image image =
+        test::renderNodes(kImageSize, kImageSize, {test::splatNode(batch, layerView())});
+    std::vector<float> red;
+    for (const glm::vec4& pixel : image.pixels()) {
+        red.push_back(pixel.r);
+        EXPECT_EQ(pixel.a, 0.0f) << "transparent splats must leave alpha 0";
+    }
+    return interiorStatistics(red, kImageSize);
+}
+
+void report(const char* what, const LayerStatistics& statistics) {
+    std::printf("figure2 %s: mean %.6f max/mean %.6f min/mean %.6f\n", what, statistics.mean,
+                statistics.relativeMax(), statistics.relativeMin());
+}
+
+kernel::GaussianKernel sameExtentGaussian() {
+    return kernel::KernelOptimizer().fitGaussian(kernel::CubicKernel::paper().support()).kernel;
+}
+
+TEST(SplatBatch, figure2LayerOfPaperSplatsIsAsFlatAsThePaperReports) {
+    test::sharedContext();
+    const kernel::CubicKernel cubic = kernel::CubicKernel::paper();
+    const kernel::FootprintTexture footprint(cubic, 64);
+    SplatBatch batch = SplatBatch::textured(footprint);
+    const LayerStatistics layer = renderLayer(batch);
+    report("paper cubic, 64x64 float texture", layer);
+    EXPECT_NEAR(layer.mean, 1.0, 2e-3);
+    EXPECT_NEAR(layer.relativeMax(), kPaperLayerMax, 1e-3 * kPaperLayerMax);
+    EXPECT_NEAR(layer.relativeMin(), kPaperLayerMin, 1e-3 * kPaperLayerMin);
+    // The GL sum agrees with the CPU model of the same texture (bilinear, clamped) to the
+    // precision of llvmpipe's texture filtering weights.
+    const kernel::TextureRipple cpu = footprint.measureLayerRipple(cubic, 16);
+    EXPECT_NEAR(layer.max, cpu.max, 5e-4);
+    EXPECT_NEAR(layer.min, cpu.min, 5e-4);
+}
+
+TEST(SplatBatch, figure2GaussianOfTheSameExtentRipplesMore) {
+    test::sharedContext();
+    const kernel::CubicKernel cubic = kernel::CubicKernel::paper();
+    SplatBatch paper = SplatBatch::textured(kernel::FootprintTexture(cubic, 64));
+    const kernel::GaussianKernel gaussian = sameExtentGaussian();
+    SplatBatch texturedGaussian = SplatBatch::textured(kernel::FootprintTexture(gaussian, 64));
+    SplatBatch polygonalGaussian =
+        SplatBatch::polygonal(gaussian, kernel::FootprintTexture::kPaperExtent);
+    EXPECT_EQ(polygonalGaussian.templateTriangles(), 21);
+    const LayerStatistics cubicLayer = renderLayer(paper);
+    const LayerStatistics textured = renderLayer(texturedGaussian);
+    const LayerStatistics polygonal = renderLayer(polygonalGaussian);
+    report("textured Gaussian (same extent)", textured);
+    report("polygonal Gaussian, 3 radial x 7 azimuth, Gouraud", polygonal);
+    const auto ripple = [](const LayerStatistics& s) { return s.relativeMax() - s.relativeMin(); };
+    EXPECT_GT(ripple(textured), 2.0 * ripple(cubicLayer));
+    EXPECT_GT(ripple(polygonal), ripple(textured));
+}
+
+// The paper's point about 8 bits ("one part in 256, or one bit"): the same layer drawn into an
+// RGBA8 target, each splat's contribution rounded before it is added.
+TEST(SplatBatch, figure2InAnEightBitFramebufferDeviatesByQuantization) {
+    test::sharedContext();
+    const kernel::CubicKernel cubic = kernel::CubicKernel::paper();
+    SplatBatch batch = SplatBatch::textured(kernel::FootprintTexture(cubic, 64));
+    // Emission 0.5 keeps the sum in the middle of the 8-bit range.
+    batch.upload(glowingLayer(0.5f));
+    gl::Texture2D color(kImageSize, kImageSize, gl::TextureFormat::RGBA8,
+                        {gl::TextureFilter::Nearest, gl::TextureWrap::ClampToEdge, false});
+    GLuint framebuffer = 0;
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, color.id(), 0);
+    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), static_cast<GLenum>(GL_FRAMEBUFFER_COMPLETE));
+    glViewport(0, 0, kImageSize, kImageSize);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_DEPTH_TEST);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    batch.draw(layerView());
+    glDisable(GL_BLEND);
+    std::vector<float> rgba(static_cast<std::size_t>(kImageSize) * kImageSize * 4);
+    glReadPixels(0, 0, kImageSize, kImageSize, GL_RGBA, GL_FLOAT, rgba.data());
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    gl::checkGlError("figure2InAnEightBitFramebufferDeviatesByQuantization");
+    std::vector<float> red;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) {
+        red.push_back(rgba[i]);
+    }
+    const LayerStatistics layer = interiorStatistics(red, kImageSize);
+    report("paper cubic, 8-bit framebuffer", layer);
+    EXPECT_NEAR(layer.mean, 0.5, 0.02);
+    // Up to nine splats overlap a pixel, each rounded to 1/255: the deviation is a few levels,
+    // well above the kernel's own ripple of 0.4%.
+    EXPECT_GT(layer.relativeMax() - layer.relativeMin(), kPaperLayerMax - kPaperLayerMin);
+    EXPECT_LT(layer.relativeMax() - layer.relativeMin(), 12.0 / 255.0 / 0.5);
+}
+
+TEST(SplatBatch, polygonalRejectsTooFewSamples) {
+    test::sharedContext();
+    const kernel::GaussianKernel gaussian = sameExtentGaussian();
+    try {
+        SplatBatch::polygonal(gaussian, 1.6, 1, 7);
+        FAIL();
+    } catch (const DataError& error) {
+        EXPECT_STREQ(error.what(),
+                     "polygonal splat: needs at least 2 radial and 3 azimuth samples, got 1 and 7");
+    }
+}
+
+} // namespace
+} // namespace texsplat::render

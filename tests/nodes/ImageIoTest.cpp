@@ -1,0 +1,247 @@
+#include "nodes/image/ImageIo.h"
+
+#include "scenegraph/AtomicFile.h"
+#include "scenegraph/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using texsplat::IoError;
+using texsplat::image::Image;
+using texsplat::image::ImageFormat;
+using texsplat::image::imageFormatOf;
+using texsplat::image::readImage;
+using texsplat::image::writeImage;
+
+namespace {
+
+/// A fresh, empty directory per test, removed afterwards.
+class ImageIoTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDirectory = fs::path(::testing::TempDir()) /
+                     ("texsplat_image_io_" + std::to_string(getpid()) + "_" + info->name());
+        fs::remove_all(mDirectory);
+        fs::create_directories(mDirectory);
+    }
+    void TearDown() override {
+        fs::permissions(mDirectory, fs::perms::owner_all, fs::perm_options::add);
+        fs::remove_all(mDirectory);
+    }
+    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
+    std::vector<std::string> entries() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(mDirectory))
+            names.push_back(entry.path().filename().string());
+        return names;
+    }
+
+    fs::path mDirectory;
+};
+
+template <typename Function>
+std::string ioErrorMessage(Function&& function) {
+    try {
+        function();
+    } catch (const IoError& e) {
+        return e.what();
+    }
+    return "no IoError";
+}
+
+/// A 5x3 image with values a PNG cannot hold: above 1, negative, tiny, and a gradient.
+Image highDynamicRangeImage() {
+    Image image(5, 3);
+    for (int y = 0; y < 3; ++y)
+        for (int x = 0; x < 5; ++x)
+            image.setPixel(x, y, {0.1f * x + 0.013f * y, 1.0f / (1 + x + y), 0.5f, 0.25f * y});
+    image.setPixel(0, 0, {12345.678f, -3.25f, 1e-30f, 1.0f});
+    image.setPixel(4, 2, {std::numeric_limits<float>::denorm_min(), 2.0f, 65504.5f, 0.999f});
+    return image;
+}
+
+} // namespace
+
+TEST(ImageIo, formatComesFromTheExtensionCaseInsensitively) {
+    EXPECT_EQ(imageFormatOf("a/b.png"), ImageFormat::Png);
+    EXPECT_EQ(imageFormatOf("B.PNG"), ImageFormat::Png);
+    EXPECT_EQ(imageFormatOf("render.exr"), ImageFormat::Exr);
+    EXPECT_EQ(ioErrorMessage([] { imageFormatOf("out.tif"); }),
+              "out.tif: unknown image extension '.tif' (supported: .png, .exr)");
+    EXPECT_EQ(ioErrorMessage([] { imageFormatOf("dir.png/out"); }),
+              "dir.png/out: no image extension (supported: .png, .exr)");
+}
+
+TEST_F(ImageIoTest, exrRoundTripIsExactIncludingDepth) {
+    if (!texsplat::image::isExrSupported())
+        GTEST_SKIP() << "built without OpenEXR";
+    Image image = highDynamicRangeImage();
+    image.addDepth();
+    image.setDepth(1, 1, 3.75f);
+    image.setDepth(2, 0, -0.0f);
+    writeImage(image, path("hdr.exr"));
+    const Image read = readImage(path("hdr.exr"));
+    ASSERT_EQ(read.width(), 5);
+    ASSERT_EQ(read.height(), 3);
+    ASSERT_TRUE(read.hasDepth());
+    for (std::size_t i = 0; i < image.pixelCount(); ++i) {
+        EXPECT_EQ(read.pixels()[i], image.pixels()[i]) << "pixel " << i;
+        EXPECT_EQ(read.depths()[i], image.depths()[i]) << "depth " << i;
+    }
+    EXPECT_EQ(read.depth(0, 0), std::numeric_limits<float>::infinity());
+    EXPECT_EQ(entries(), std::vector<std::string>{"hdr.exr"});
+}
+
+TEST_F(ImageIoTest, exrWithoutDepthReadsWithoutDepth) {
+    if (!texsplat::image::isExrSupported())
+        GTEST_SKIP() << "built without OpenEXR";
+    writeImage(highDynamicRangeImage(), path("color.exr"));
+    const Image read = readImage(path("color.exr"));
+    EXPECT_FALSE(read.hasDepth());
+    EXPECT_EQ(read.pixel(0, 0), glm::vec4(12345.678f, -3.25f, 1e-30f, 1.0f));
+}
+
+TEST_F(ImageIoTest, pngRoundTripIsWithinEightBitQuantization) {
+    Image image(16, 4);
+    for (int x = 0; x < 16; ++x) {
+        const float value = x / 15.0f;
+        image.setPixel(x, 0, {value, value * value, 1.0f - value, 1.0f}); // opaque
+        image.setPixel(x, 1, glm::vec4(glm::vec3(0.5f * value), 0.5f));  // half transparent
+        image.setPixel(x, 2, {0.0002f * x, 0.0f, 0.0f, 1.0f});            // dark
+        image.setPixel(x, 3, {2.0f, -1.0f, 0.5f, 1.0f});                  // out of range
+    }
+    writeImage(image, path("ldr.png"));
+    const Image read = readImage(path("ldr.png"));
+    ASSERT_EQ(read.width(), 16);
+    ASSERT_EQ(read.height(), 4);
+    EXPECT_FALSE(read.hasDepth());
+    for (int x = 0; x < 16; ++x) {
+        // Half an 8-bit step of sRGB near 1 is at most 0.0045 in linear units.
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(read.pixel(x, 0)[c], image.pixel(x, 0)[c], 0.0045) << x << "," << c;
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(read.pixel(x, 1)[c], image.pixel(x, 1)[c], 0.0045) << x << "," << c;
+        // sRGB spends its codes on dark values: below 0.0031 the step is 1/(255·12.92) ≈ 0.0003,
+        // where a linear 8-bit encoding would be off by up to 0.002.
+        EXPECT_NEAR(read.pixel(x, 2).r, image.pixel(x, 2).r, 0.00016) << x;
+        const glm::vec4 clamped(1.0f, 0.0f, 0.5f, 1.0f);
+        for (int c = 0; c < 4; ++c)
+            EXPECT_NEAR(read.pixel(x, 3)[c], clamped[c], 0.0045) << x << "," << c;
+    }
+}
+
+TEST_F(ImageIoTest, pngStoresNonFinitePixelsAsTransparentBlack) {
+    Image image(2, 1);
+    image.setPixel(0, 0, {std::nanf(""), 0.5f, 0.5f, 1.0f});
+    image.setPixel(1, 0, {0.5f, 0.5f, 0.5f, std::numeric_limits<float>::infinity()});
+    writeImage(image, path("nan.png"));
+    const Image read = readImage(path("nan.png"));
+    EXPECT_EQ(read.pixel(0, 0), glm::vec4(0.0f));
+    EXPECT_EQ(read.pixel(1, 0), glm::vec4(0.0f));
+}
+
+TEST_F(ImageIoTest, writeReplacesAnExistingFileWhole) {
+    writeImage(Image(2, 2), path("out.png"));
+    writeImage(Image(7, 3), path("out.png"));
+    EXPECT_EQ(readImage(path("out.png")).width(), 7);
+    EXPECT_EQ(entries(), std::vector<std::string>{"out.png"});
+}
+
+TEST_F(ImageIoTest, exrInABuildWithoutOpenExrIsAClearError) {
+    if (texsplat::image::isExrSupported())
+        GTEST_SKIP() << "built with OpenEXR";
+    const std::string target = path("out.exr");
+    const std::string message =
+        target + ": OpenEXR support is not built in (configure with -DTEXSPLAT_WITH_EXR=ON)";
+    EXPECT_EQ(ioErrorMessage([&] { writeImage(Image(1, 1), target); }), message);
+    EXPECT_EQ(ioErrorMessage([&] { readImage(target); }), message);
+    EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(ImageIoTest, writeIntoMissingDirectoryFailsAndLeavesNothing) {
+    const std::string target = path("missing/out.png");
+    EXPECT_EQ(ioErrorMessage([&] { writeImage(Image(2, 2), target); }),
+              target + ": cannot create a file in directory " + path("missing") +
+                  ": No such file or directory");
+    EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(ImageIoTest, writeBelowARegularFileFails) {
+    writeImage(Image(1, 1), path("file.png"));
+    const std::string target = path("file.png/out.png");
+    EXPECT_EQ(ioErrorMessage([&] { writeImage(Image(2, 2), target); }),
+              target + ": cannot create a file in directory " + path("file.png") +
+                  ": Not a directory");
+    EXPECT_EQ(entries(), std::vector<std::string>{"file.png"});
+}
+
+TEST_F(ImageIoTest, writeIntoUnwritableDirectoryFails) {
+    if (geteuid() == 0)
+        GTEST_SKIP() << "root may write into any directory";
+    fs::create_directory(path("readonly"));
+    fs::permissions(path("readonly"), fs::perms::owner_read | fs::perms::owner_exec);
+    const std::string target = path("readonly/out.png");
+    EXPECT_EQ(ioErrorMessage([&] { writeImage(Image(2, 2), target); }),
+              target + ": cannot create a file in directory " + path("readonly") +
+                  ": Permission denied");
+    fs::permissions(path("readonly"), fs::perms::owner_all);
+    EXPECT_TRUE(fs::is_empty(path("readonly")));
+}
+
+TEST_F(ImageIoTest, failedWriteKeepsTheOldFileAndRemovesTheTemporary) {
+    const std::string target = path("kept.png");
+    writeImage(Image(3, 3), target);
+    EXPECT_EQ(ioErrorMessage([&] {
+                  texsplat::writeFileAtomically(target, [](std::ofstream& stream) {
+                      stream << "partial";
+                      throw IoError("interrupted");
+                  });
+              }),
+              "interrupted");
+    EXPECT_EQ(entries(), std::vector<std::string>{"kept.png"});
+    EXPECT_EQ(readImage(target).width(), 3);
+}
+
+TEST_F(ImageIoTest, unknownExtensionIsRefusedBeforeWriting) {
+    const std::string target = path("out.jpg");
+    EXPECT_EQ(ioErrorMessage([&] { writeImage(Image(1, 1), target); }),
+              target + ": unknown image extension '.jpg' (supported: .png, .exr)");
+    EXPECT_TRUE(entries().empty());
+}
+
+TEST_F(ImageIoTest, readingMissingOrMalformedFilesIsIoError) {
+    EXPECT_EQ(ioErrorMessage([&] { readImage(path("none.png")); }),
+              path("none.png") + ": cannot open: No such file or directory");
+    std::ofstream(path("text.png")) << "not a png";
+    EXPECT_EQ(ioErrorMessage([&] { readImage(path("text.png")); }),
+              path("text.png") + ": not a readable PNG file (unknown image type)");
+    if (!texsplat::image::isExrSupported())
+        return;
+    EXPECT_EQ(ioErrorMessage([&] { readImage(path("none.exr")); }),
+              path("none.exr") + ": cannot open: No such file or directory");
+    std::ofstream(path("text.exr")) << "not an exr";
+    EXPECT_EQ(ioErrorMessage([&] { readImage(path("text.exr")); })
+                  .rfind(path("text.exr") + ": not a readable OpenEXR file: ", 0),
+              0u);
+}
+
+TEST_F(ImageIoTest, truncatedFilesAreIoErrors) {
+    std::vector<std::string> names = {"full.png"};
+    if (texsplat::image::isExrSupported())
+        names.push_back("full.exr");
+    for (const std::string& name : names) {
+        writeImage(highDynamicRangeImage(), path(name));
+        const auto size = fs::file_size(path(name));
+        fs::resize_file(path(name), size / 2);
+        EXPECT_THROW(readImage(path(name)), IoError) << name;
+    }
+}

@@ -1,0 +1,118 @@
+#include "nodes/Mesh.h"
+
+#include "SceneNodesTestSupport.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Separator.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+#ifdef TEXSPLAT_WITH_GLTF
+
+namespace texsplat::nodes {
+namespace {
+
+using test::errorOf;
+using test::testPath;
+
+// One triangle (0,0,0), (1,0,0), (0,1,0) as float VEC3 positions (36 bytes) and uint16 indices
+// 0 1 2 (6 bytes, padded to 8), base64 in a data URI.
+constexpr const char* kBuffer =
+    "data:application/octet-stream;base64,"
+    "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAAAAABAAIAAAA=";
+
+std::string triangleGltf(const std::string& mode, const std::string& nodeExtra) {
+    return R"({
+  "asset": {"version": "2.0"},
+  "scene": 0,
+  "scenes": [{"nodes": [0]}],
+  "nodes": [{"mesh": 0)" + nodeExtra + R"(}],
+  "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "material": 0,
+                              "mode": )" + mode + R"(}]}],
+  "materials": [{"pbrMetallicRoughness": {"baseColorFactor": [0.25, 0.5, 0.75, 1.0]}}],
+  "buffers": [{"byteLength": 44, "uri": ")" + kBuffer + R"("}],
+  "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 36},
+                  {"buffer": 0, "byteOffset": 36, "byteLength": 6}],
+  "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                 "min": [0, 0, 0], "max": [1, 1, 0]},
+                {"bufferView": 1, "componentType": 5123, "count": 3, "type": "SCALAR"}]
+})";
+}
+
+std::string writeFile(const std::string& name, const std::string& text) {
+    const std::string path = testPath(name);
+    std::ofstream(path) << text;
+    return path;
+}
+
+TEST(Mesh, readsATriangleWithItsNodeTransformAndBaseColour) {
+    const std::string path = writeFile(
+        "triangle.gltf", triangleGltf("4", R"(, "translation": [10, 0, 0], "scale": [2, 2, 2])"));
+    const auto mesh = Mesh::create();
+    mesh->fileName = path;
+    EXPECT_FALSE(mesh->isLoaded());
+    const std::shared_ptr<const TriangleMesh> triangles = mesh->triangleMesh();
+    EXPECT_TRUE(mesh->isLoaded());
+    EXPECT_EQ(triangles->positions, (std::vector<glm::vec3>{{10, 0, 0}, {12, 0, 0}, {10, 2, 0}}));
+    EXPECT_EQ(triangles->indices, (std::vector<std::uint32_t>{0, 1, 2}));
+    // No NORMAL attribute: computed from the triangle.
+    EXPECT_EQ(triangles->normals, std::vector<glm::vec3>(3, glm::vec3(0, 0, 1)));
+    EXPECT_EQ(triangles->colors, std::vector<glm::vec3>(3, glm::vec3(0.25f, 0.5f, 0.75f)));
+    EXPECT_EQ(mesh->triangleMesh(), triangles); // cached
+
+    const auto root = sg::Separator::create();
+    root->addChild(mesh);
+    sg::BoundingBoxAction action;
+    action.apply(*root);
+    EXPECT_EQ(action.boundingBox(), sg::Box3(glm::vec3(10, 0, 0), glm::vec3(12, 2, 0)));
+}
+
+TEST(Mesh, rereadsWhenTheFileNameChanges) {
+    const auto mesh = Mesh::create();
+    mesh->fileName = writeFile("first.gltf", triangleGltf("4", ""));
+    EXPECT_EQ(mesh->triangleMesh()->positions[1], glm::vec3(1, 0, 0));
+    mesh->fileName = writeFile("second.gltf", triangleGltf("4", R"(, "translation": [0, 0, 5])"));
+    EXPECT_FALSE(mesh->isLoaded());
+    EXPECT_EQ(mesh->triangleMesh()->positions[1], glm::vec3(1, 0, 5));
+}
+
+TEST(Mesh, reportsUnreadableFiles) {
+    const auto mesh = Mesh::create();
+    mesh->setName("part");
+    EXPECT_EQ(errorOf<DataError>([&] { mesh->triangleMesh(); }),
+              "Mesh 'part': fileName is empty; a Mesh reads a glTF file");
+    const std::string missing = testPath("missing.gltf");
+    mesh->fileName = missing;
+    EXPECT_EQ(errorOf<IoError>([&] { mesh->triangleMesh(); }),
+              "Mesh 'part': " + missing + ": cannot open file (No such file or directory)");
+    const std::string broken = writeFile("broken.gltf", "{ this is not json");
+    mesh->fileName = broken;
+    const std::string message = errorOf<ParseError>([&] { mesh->triangleMesh(); });
+    EXPECT_EQ(message.rfind("Mesh 'part': " + broken + ": not a readable glTF 2.0 file: ", 0), 0u)
+        << message;
+    EXPECT_NE(message.find("parse error"), std::string::npos) << message; // tinygltf's reason
+    mesh->fileName = writeFile("lines.gltf", triangleGltf("1", ""));
+    EXPECT_EQ(errorOf<DataError>([&] { mesh->triangleMesh(); }),
+              "Mesh 'part': " + testPath("lines.gltf") +
+                  ": mesh 0 primitive 0: mode 1 is not supported; texsplat reads triangles "
+                  "(mode 4) only");
+}
+
+TEST(Mesh, reportsAccessorsOutsideTheirBuffer) {
+    std::string text = triangleGltf("4", "");
+    const std::string fitting = R"("count": 3, "type": "SCALAR")";
+    text.replace(text.find(fitting), fitting.size(), R"("count": 30, "type": "SCALAR")");
+    const auto mesh = Mesh::create();
+    mesh->fileName = writeFile("overrun.gltf", text);
+    EXPECT_EQ(errorOf<ParseError>([&] { mesh->triangleMesh(); }),
+              "Mesh: " + testPath("overrun.gltf") +
+                  ": accessor 1 (indices) reaches beyond its buffer view or buffer");
+}
+
+} // namespace
+} // namespace texsplat::nodes
+
+#endif

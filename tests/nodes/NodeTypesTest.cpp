@@ -1,0 +1,74 @@
+#include "nodes/NodeTypes.h"
+
+#include "SceneNodesTestSupport.h"
+#include "nodes/PerspectiveCamera.h"
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/FieldContainer.h"
+#include "scenegraph/Group.h"
+#include "scenegraph/NodeRegistry.h"
+#include "scenegraph/io/SceneReader.h"
+#include "scenegraph/io/WriteAction.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace texsplat::nodes {
+namespace {
+
+TEST(NodeTypes, registersEveryNodeTypeOnceAndTheRegistryCreatesThem) {
+    registerNodeTypes();
+    registerNodeTypes(); // idempotent
+    const sg::NodeRegistry& registry = sg::NodeRegistry::instance();
+    for (const std::string name :
+         {"PerspectiveCamera", "OrthographicCamera", "Transform", "Material", "DirectionalLight",
+          "TransferFunction", "VolumeData", "Coordinate3", "IndexedFaceSet", "Mesh", "Fibers"}) {
+        const std::shared_ptr<sg::FieldContainer> node = registry.create(name);
+        ASSERT_NE(node, nullptr) << name;
+        EXPECT_EQ(node->typeName(), name);
+        EXPECT_NE(node->asNode(), nullptr) << name;
+    }
+    // The abstract base is known by name (for searches) but cannot be made.
+    ASSERT_NE(registry.find("Camera"), nullptr);
+    EXPECT_EQ(test::errorOf<DataError>([&] { registry.create("Camera"); }),
+              "cannot create a Camera: it is an abstract type");
+}
+
+TEST(NodeTypes, sceneFilesReadAndWriteTheNodes) {
+    registerNodeTypes();
+    const std::string text = R"(#Inventor V2.1 ascii
+Separator {
+    PerspectiveCamera { position 0 0 5 heightAngle 0.5 }
+    Transform { translation 1 2 3 scaleFactor 2 2 2 }
+    Material { diffuseColor 1 0 0 }
+    DirectionalLight { direction 0 -1 0 }
+    TransferFunction { preset HOT opacityValues [ 0, 1 ] opacities [ 0, 2 ] emission 1 }
+    VolumeData { source TORNADO resolution 8 8 8 time 3 }
+    Coordinate3 { point [ 0 0 0, 1 0 0, 0 1 0 ] }
+    IndexedFaceSet { coordIndex [ 0, 1, 2, -1 ] }
+    Fibers { segments 5 }
+}
+)";
+    const std::shared_ptr<sg::Node> root = sg::SceneReader::readString(text, "nodes.iv");
+    const auto& children = static_cast<sg::Group&>(*root).children();
+    ASSERT_EQ(children.size(), 9u);
+    const auto& camera = static_cast<const PerspectiveCamera&>(*children[0]);
+    EXPECT_EQ(camera.heightAngle.value(), 0.5f);
+    const auto& tf = static_cast<const TransferFunction&>(*children[4]);
+    EXPECT_EQ(tf.preset.as<ColorPreset>(), ColorPreset::Hot);
+    EXPECT_FLOAT_EQ(tf.classify(1.0f).extinction, 2.0f);
+    const auto& volume = static_cast<const VolumeData&>(*children[5]);
+    EXPECT_EQ(volume.source.as<VolumeSource>(), VolumeSource::Tornado);
+    EXPECT_FALSE(volume.isLoaded()); // reading a scene loads nothing
+
+    // Written and read again, the graph writes the same text.
+    const std::string written = sg::WriteAction::writeString(*root);
+    EXPECT_EQ(sg::WriteAction::writeString(*sg::SceneReader::readString(written, "again.iv")),
+              written);
+    EXPECT_NE(written.find("    TransferFunction {\n        fields ["), std::string::npos) << written;
+}
+
+} // namespace
+} // namespace texsplat::nodes

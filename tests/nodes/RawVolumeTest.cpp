@@ -1,0 +1,195 @@
+#include "nodes/volume/RawVolume.h"
+
+#include "nodes/volume/DenseGrid.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Log.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace texsplat::volume {
+namespace {
+
+std::string testPath(const std::string& name) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    return (std::filesystem::path(::testing::TempDir()) /
+            (std::string("RawVolumeTest_") + info->name() + "_" + name))
+        .string();
+}
+
+// Writes `header` followed by the bytes of `values` as they lie in memory, optionally reversed
+// per value (to produce the other byte order).
+template <typename Value>
+std::string writeFile(const std::string& name, const std::string& header,
+                      const std::vector<Value>& values, bool reverseBytes = false) {
+    const std::string path = testPath(name);
+    std::ofstream out(path, std::ios::binary);
+    out << header;
+    for (const Value& value : values) {
+        char bytes[sizeof(Value)];
+        std::memcpy(bytes, &value, sizeof(Value));
+        if (reverseBytes)
+            std::reverse(bytes, bytes + sizeof(Value));
+        out.write(bytes, sizeof(Value));
+    }
+    return path;
+}
+
+std::string header(const std::string& dims, const std::string& type, int components = 1,
+                   const std::string& endian = "little") {
+    return "texsplat-raw 1\ndims " + dims + "\ntype " + type + "\ncomponents " +
+           std::to_string(components) + "\nspacing 1 2 3\norigin 10 20 30\nendian " + endian +
+           "\ndata\n";
+}
+
+ScalarGridPtr readScalar(const std::string& path) {
+    return std::get<ScalarGridPtr>(readRawVolume(path));
+}
+
+template <typename Exception>
+std::string errorOf(const std::string& path) {
+    try {
+        readRawVolume(path);
+    } catch (const Exception& error) {
+        return error.what();
+    }
+    return "no such error";
+}
+
+TEST(RawVolume, readsFloat32Scalars) {
+    const std::vector<float> values = {0.5f, -1.0f, 2.0f, 3.0f, 4.0f, 5.0f};
+    const ScalarGridPtr grid = readScalar(writeFile("f32.raw", header("3 2 1", "float32"), values));
+    EXPECT_EQ(grid->geometry(), GridGeometry({3, 2, 1}, {10.0, 20.0, 30.0}, {1.0, 2.0, 3.0}));
+    EXPECT_EQ(grid->value({0, 0, 0}), 0.5f);
+    EXPECT_EQ(grid->value({1, 0, 0}), -1.0f);
+    EXPECT_EQ(grid->value({2, 1, 0}), 5.0f);
+}
+
+TEST(RawVolume, readsFloat64BigEndian) {
+    const std::vector<double> values = {1.25, -2.5, 1e-3, 6.0};
+    const ScalarGridPtr grid =
+        readScalar(writeFile("f64.raw", header("2 2 1", "float64", 1, "big"), values, true));
+    EXPECT_EQ(grid->value({0, 0, 0}), 1.25f);
+    EXPECT_EQ(grid->value({1, 0, 0}), -2.5f);
+    EXPECT_EQ(grid->value({0, 1, 0}), 1e-3f);
+    EXPECT_EQ(grid->value({1, 1, 0}), 6.0f);
+}
+
+TEST(RawVolume, readsUInt8AsIs) {
+    const std::vector<std::uint8_t> values = {0, 1, 128, 255};
+    const ScalarGridPtr grid = readScalar(writeFile("u8.raw", header("1 1 4", "uint8"), values));
+    EXPECT_EQ(grid->value({0, 0, 0}), 0.0f);
+    EXPECT_EQ(grid->value({0, 0, 2}), 128.0f);
+    EXPECT_EQ(grid->value({0, 0, 3}), 255.0f);
+}
+
+TEST(RawVolume, readsUInt16BothEndians) {
+    const std::vector<std::uint16_t> values = {1, 258, 65535, 4096};
+    for (const bool big : {false, true}) {
+        const ScalarGridPtr grid = readScalar(writeFile(
+            big ? "u16be.raw" : "u16le.raw", header("4 1 1", "uint16", 1, big ? "big" : "little"),
+            values, big));
+        EXPECT_EQ(grid->value({1, 0, 0}), 258.0f) << (big ? "big" : "little");
+        EXPECT_EQ(grid->value({2, 0, 0}), 65535.0f);
+    }
+}
+
+TEST(RawVolume, readsThreeComponentsAsVectors) {
+    const std::vector<float> values = {1, 2, 3, 4, 5, 6};
+    const AnyGrid any = readRawVolume(writeFile("vec.raw", header("2 1 1", "float32", 3), values));
+    const VectorGridPtr grid = std::get<VectorGridPtr>(any);
+    EXPECT_EQ(grid->value({0, 0, 0}), glm::vec3(1, 2, 3));
+    EXPECT_EQ(grid->value({1, 0, 0}), glm::vec3(4, 5, 6));
+}
+
+TEST(RawVolume, writeThenReadRoundTrips) {
+    DenseVectorGrid vectors(GridGeometry({3, 2, 2}, {-1.0, 0.5, 2.0}, {0.1, 0.2, 0.3}));
+    for (std::int64_t i = 0; i < 12; ++i)
+        vectors.values()[static_cast<std::size_t>(i)] = glm::vec3(float(i), -float(i), 0.5f);
+    const std::string path = testPath("roundtrip.raw");
+    writeRawVolume(path, vectors);
+    EXPECT_FALSE(std::filesystem::exists(path + ".partial"));
+    const VectorGridPtr back = std::get<VectorGridPtr>(readRawVolume(path));
+    EXPECT_EQ(back->geometry(), vectors.geometry());
+    EXPECT_EQ(dynamic_cast<const DenseVectorGrid&>(*back).values(), vectors.values());
+}
+
+TEST(RawVolume, largeReadReportsProgressAndCanBeCancelled) {
+    // 2^21 floats = 8 MiB: two 4 MiB chunks.
+    const std::vector<float> values(std::size_t{1} << 21, 1.0f);
+    const std::string path = writeFile("large.raw", header("128 128 128", "float32"), values);
+    std::vector<double> fractions;
+    readRawVolume(path, [&](double fraction, std::string_view message) {
+        fractions.push_back(fraction);
+        EXPECT_EQ(message, "reading " + path);
+        return true;
+    });
+    EXPECT_EQ(fractions, (std::vector<double>{0.0, 0.5, 1.0}));
+    try {
+        readRawVolume(path, [](double fraction, std::string_view) { return fraction < 0.5; });
+        FAIL() << "not cancelled";
+    } catch (const LoadCancelled& error) {
+        EXPECT_EQ(std::string(error.what()), path + ": loading cancelled");
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(RawVolume, nonFiniteVoxelsAreEmptyAndWarnedAboutOnce) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    const std::string path =
+        writeFile("nan.raw", header("5 1 1", "float32"), std::vector<float>{1, nan, inf, -inf, 2});
+    std::vector<std::string> warnings;
+    const LogSink previous = setLogSink([&](LogLevel level, std::string_view message) {
+        if (level == LogLevel::Warning)
+            warnings.emplace_back(message);
+    });
+    const ScalarGridPtr grid = readScalar(path);
+    setLogSink(previous);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], path + ": 3 voxels are NaN or infinite; treated as empty");
+    EXPECT_EQ(grid->statistics().nonFiniteCount, 3);
+    EXPECT_EQ(grid->statistics().finiteCount, 2);
+    EXPECT_FALSE(grid->isActive({1, 0, 0}));
+    EXPECT_EQ(grid->value({2, 0, 0}), 0.0f);
+}
+
+TEST(RawVolume, reportsMissingFolderTruncatedAndOversizedFiles) {
+    const std::string missing = testPath("missing.raw");
+    EXPECT_EQ(errorOf<IoError>(missing),
+              missing + ": cannot open file (No such file or directory)");
+    const std::string folder = ::testing::TempDir();
+    EXPECT_EQ(errorOf<IoError>(folder), folder + ": cannot open file (it is a folder)");
+
+    const std::string truncated =
+        writeFile("short.raw", header("4 4 4", "float32"), std::vector<float>(25, 1.0f));
+    EXPECT_EQ(errorOf<DataError>(truncated),
+              truncated + ": truncated data: the header asks for 4 x 4 x 4 voxels x 1 component "
+                          "x 4 bytes (float32) = 256 bytes, but only 100 bytes follow it");
+    const std::string oversized =
+        writeFile("long.raw", header("2 2 2", "uint16", 3), std::vector<std::uint16_t>(25, 1));
+    EXPECT_EQ(errorOf<DataError>(oversized),
+              oversized + ": data size mismatch: the header asks for 2 x 2 x 2 voxels x 3 "
+                          "components x 2 bytes (uint16) = 48 bytes, but 50 bytes follow it");
+}
+
+TEST(RawVolume, reportsBadHeadersAndZeroSizeGrids) {
+    const std::string bad =
+        writeFile("bad.raw", "texsplat-raw 1\ndims 4 4\n", std::vector<float>{});
+    EXPECT_EQ(errorOf<ParseError>(bad), bad + ":2:1: 'dims' takes 3 values, found 2");
+    const std::string empty =
+        writeFile("empty.raw", header("8 0 8", "float32"), std::vector<float>{});
+    EXPECT_EQ(errorOf<DataError>(empty),
+              empty + ":2:6: grid dimensions must be at least 1 voxel each, got 8 x 0 x 8");
+}
+
+} // namespace
+} // namespace texsplat::volume

@@ -1,0 +1,194 @@
+#include "nodes/volume/VdbVolume.h"
+
+#include "nodes/volume/SparseGrid.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Log.h"
+
+#include <gtest/gtest.h>
+
+#ifdef TEXSPLAT_WITH_OPENVDB
+#include <openvdb/openvdb.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace texsplat::volume {
+namespace {
+
+std::string testPath(const std::string& name) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    return (std::filesystem::path(::testing::TempDir()) /
+            (std::string("VdbVolumeTest_") + info->name() + "_" + name))
+        .string();
+}
+
+openvdb::math::Transform::Ptr scaleTranslate(const openvdb::Vec3d& scale,
+                                             const openvdb::Vec3d& translation) {
+    openvdb::Mat4d matrix = openvdb::Mat4d::identity();
+    matrix.preScale(scale);
+    matrix.postTranslate(translation);
+    return openvdb::math::Transform::createLinearTransform(matrix);
+}
+
+// A file written with OpenVDB's own API: the grids a reader meets in practice, and the ones it
+// must refuse.
+std::string writeTestFile() {
+    openvdb::initialize();
+    openvdb::GridPtrVec grids;
+
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->setTransform(scaleTranslate({0.5, 1.0, 2.0}, {10.0, 20.0, 30.0}));
+    auto densityAccessor = density->getAccessor();
+    densityAccessor.setValue({-3, -2, -1}, 1.5f);
+    densityAccessor.setValue({4, 5, 6}, 2.5f);
+    densityAccessor.setValue({0, 0, 0}, std::numeric_limits<float>::quiet_NaN());
+    densityAccessor.setValue({1, 1, 1}, std::numeric_limits<float>::infinity());
+    grids.push_back(density);
+
+    auto velocity = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.0f));
+    velocity->setName("velocity");
+    velocity->getAccessor().setValue({7, 8, 9}, openvdb::Vec3s(1.0f, 2.0f, 3.0f));
+    velocity->getAccessor().setValue({8, 8, 9}, openvdb::Vec3s(-1.0f, 0.0f, 0.5f));
+    grids.push_back(velocity);
+
+    auto mask = openvdb::BoolGrid::create(false);
+    mask->setName("mask");
+    mask->getAccessor().setValue({0, 0, 0}, true);
+    grids.push_back(mask);
+
+    auto rotated = openvdb::FloatGrid::create(0.0f);
+    rotated->setName("rotated");
+    rotated->transform().postRotate(0.3, openvdb::math::Z_AXIS);
+    rotated->getAccessor().setValue({0, 0, 0}, 1.0f);
+    grids.push_back(rotated);
+
+    auto empty = openvdb::FloatGrid::create(0.0f);
+    empty->setName("empty");
+    grids.push_back(empty);
+
+    const std::string path = testPath("grids.vdb");
+    openvdb::io::File(path).write(grids);
+    return path;
+}
+
+template <typename Exception, typename Function>
+std::string errorOf(Function function) {
+    try {
+        function();
+    } catch (const Exception& error) {
+        return error.what();
+    }
+    return "no such error";
+}
+
+TEST(VdbVolume, listsTheGridsOfAFile) {
+    ASSERT_TRUE(isOpenVdbAvailable());
+    const std::vector<VdbGridInfo> infos = listVdbGrids(writeTestFile());
+    ASSERT_EQ(infos.size(), 5u); // OpenVDB lists them by name
+    EXPECT_EQ(infos[0].name, "density");
+    EXPECT_EQ(infos[0].valueType, "float");
+    EXPECT_EQ(infos[2].name, "mask");
+    EXPECT_EQ(infos[2].valueType, "bool");
+    EXPECT_EQ(infos[4].name, "velocity");
+    EXPECT_EQ(infos[4].valueType, "vec3s");
+}
+
+TEST(VdbVolume, readsAFloatGridByNameWithItsTransform) {
+    const std::string path = writeTestFile();
+    std::vector<std::string> warnings;
+    const LogSink previous = setLogSink([&](LogLevel level, std::string_view message) {
+        if (level == LogLevel::Warning)
+            warnings.emplace_back(message);
+    });
+    const ScalarGridPtr grid = std::get<ScalarGridPtr>(readVdbGrid(path, "density"));
+    setLogSink(previous);
+
+    // Active bounding box (-3,-2,-1)..(4,5,6): voxel (0,0,0) is OpenVDB's (-3,-2,-1).
+    EXPECT_EQ(grid->geometry(), GridGeometry({8, 8, 8}, {8.5, 18.0, 28.0}, {0.5, 1.0, 2.0}));
+    EXPECT_EQ(grid->value({0, 0, 0}), 1.5f);
+    EXPECT_EQ(grid->value({7, 7, 7}), 2.5f);
+    EXPECT_EQ(grid->value({1, 1, 1}), 0.0f);
+    EXPECT_FALSE(grid->isActive({3, 2, 1})) << "NaN is empty";
+    // The voxels lie in two OpenVDB leaves, (-8,-8,-8) and (0,0,0): two blocks, not more.
+    EXPECT_EQ(dynamic_cast<const SparseScalarGrid&>(*grid).blockCount(), 2u);
+    const GridStatistics statistics = grid->statistics();
+    EXPECT_EQ(statistics.finiteCount, 2);
+    EXPECT_EQ(statistics.nonFiniteCount, 2);
+    ASSERT_EQ(warnings.size(), 1u);
+    EXPECT_EQ(warnings[0], path + ": 2 voxels are NaN or infinite; treated as empty");
+}
+
+TEST(VdbVolume, readsAVectorGrid) {
+    const VectorGridPtr grid = std::get<VectorGridPtr>(readVdbGrid(writeTestFile(), "velocity"));
+    EXPECT_EQ(grid->geometry(), GridGeometry({2, 1, 1}, {7.0, 8.0, 9.0}));
+    EXPECT_EQ(grid->value({0, 0, 0}), glm::vec3(1.0f, 2.0f, 3.0f));
+    EXPECT_EQ(grid->value({1, 0, 0}), glm::vec3(-1.0f, 0.0f, 0.5f));
+}
+
+TEST(VdbVolume, sparseGridsStaySparseInMemory) {
+    openvdb::initialize();
+    auto grid = openvdb::FloatGrid::create(0.0f);
+    grid->setName("sparse");
+    auto accessor = grid->getAccessor();
+    for (int i = 0; i < 1000; ++i) // a diagonal through a 1000^3 box: 4 GB if it were dense
+        accessor.setValue({i, i, i}, float(i));
+    // An active tile: one value for a whole 8^3 leaf, expanded into 512 voxels.
+    grid->tree().addTile(1, openvdb::Coord(64, 0, 0), 7.0f, true);
+    const std::string path = testPath("sparse.vdb");
+    openvdb::io::File(path).write({grid});
+
+    std::vector<double> fractions;
+    const AnyGrid any = readVdbGrid(path, "sparse", [&](double fraction, std::string_view text) {
+        fractions.push_back(fraction);
+        EXPECT_EQ(text, "copying grid 'sparse'");
+        return true;
+    });
+    const auto& sparse = dynamic_cast<const SparseScalarGrid&>(*std::get<ScalarGridPtr>(any));
+    EXPECT_EQ(sparse.geometry().dims(), glm::i64vec3(1000, 1000, 1000));
+    EXPECT_EQ(sparse.activeVoxelCount(), 1000 + 512);
+    EXPECT_EQ(sparse.blockCount(), 125u + 1u) << "one block per OpenVDB leaf";
+    EXPECT_LT(sparse.memoryBytes(), std::size_t{1} << 20);
+    EXPECT_EQ(sparse.value({999, 999, 999}), 999.0f);
+    EXPECT_EQ(sparse.value({70, 7, 7}), 7.0f);
+    EXPECT_EQ(sparse.value({70, 8, 7}), 0.0f);
+    EXPECT_EQ(fractions.front(), 0.0);
+    EXPECT_EQ(fractions.back(), 1.0);
+
+    EXPECT_EQ(errorOf<LoadCancelled>([&] {
+                  readVdbGrid(path, "sparse", [](double, std::string_view) { return false; });
+              }),
+              path + ": loading cancelled");
+}
+
+TEST(VdbVolume, reportsWrongNamesTypesAndTransforms) {
+    const std::string path = writeTestFile();
+    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "pressure"); }),
+              path + ": no grid named 'pressure'; the file has: density (float), empty "
+                     "(float), mask (bool), rotated (float), velocity (vec3s)");
+    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "mask"); }),
+              path + ": grid 'mask' holds bool values; expected float or vec3s");
+    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "rotated"); }),
+              path + ": grid 'rotated' has a rotated, sheared, mirrored or non-linear "
+                     "transform; only axis-aligned scale and translation are supported");
+    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "empty"); }),
+              path + ": grid 'empty' has no active voxels");
+}
+
+TEST(VdbVolume, reportsMissingAndForeignFiles) {
+    const std::string missing = testPath("missing.vdb");
+    EXPECT_EQ(errorOf<IoError>([&] { readVdbGrid(missing, "density"); }),
+              missing + ": cannot open file (No such file or directory)");
+    const std::string foreign = testPath("foreign.vdb");
+    std::ofstream(foreign) << "texsplat-raw 1\n";
+    EXPECT_EQ(errorOf<IoError>([&] { listVdbGrids(foreign); }),
+              foreign + ": cannot read OpenVDB file (IoError: not a VDB file)");
+}
+
+} // namespace
+} // namespace texsplat::volume
+#endif

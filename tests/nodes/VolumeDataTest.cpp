@@ -1,0 +1,196 @@
+#include "nodes/VolumeData.h"
+
+#include "SceneNodesTestSupport.h"
+#include "nodes/Transform.h"
+#include "nodes/elements/VolumeElement.h"
+#include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/RawVolume.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Separator.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/actions/SearchAction.h"
+
+#include <gtest/gtest.h>
+
+#ifdef TEXSPLAT_WITH_OPENVDB
+#include <openvdb/openvdb.h>
+#endif
+
+#include <cmath>
+
+namespace texsplat::nodes {
+namespace {
+
+using test::errorOf;
+using test::testPath;
+
+VolumeData::Ptr generated(VolumeSource source, float samples) {
+    const auto volume = VolumeData::create();
+    volume->source.setValue(source);
+    volume->resolution = glm::vec3(samples);
+    return volume;
+}
+
+TEST(VolumeData, loadsOnlyWhenUsed) {
+    const auto volume = generated(VolumeSource::Blob, 8.0f);
+    EXPECT_FALSE(volume->isLoaded());
+    const volume::ScalarGridPtr grid = volume->scalarGrid();
+    EXPECT_TRUE(volume->isLoaded());
+    EXPECT_EQ(grid->geometry().dims(), glm::i64vec3(8));
+    EXPECT_EQ(volume->scalarGrid(), grid); // cached
+    EXPECT_EQ(volume->vectorGrid(), nullptr);
+}
+
+TEST(VolumeData, reloadsWhenAFieldChanges) {
+    const auto volume = generated(VolumeSource::Blob, 8.0f);
+    const volume::ScalarGridPtr first = volume->scalarGrid();
+    volume->resolution = glm::vec3(4.0f, 5.0f, 6.0f);
+    EXPECT_FALSE(volume->isLoaded());
+    const volume::ScalarGridPtr second = volume->scalarGrid();
+    EXPECT_NE(second, first);
+    EXPECT_EQ(second->geometry().dims(), glm::i64vec3(4, 5, 6));
+    EXPECT_EQ(first->geometry().dims(), glm::i64vec3(8)); // users of the old grid keep it
+}
+
+TEST(VolumeData, tornadoGivesVectorsAndTheirMagnitude) {
+    const auto volume = generated(VolumeSource::Tornado, 6.0f);
+    const volume::VectorGridPtr vectors = volume->vectorGrid();
+    ASSERT_NE(vectors, nullptr);
+    const volume::ScalarGridPtr magnitude = volume->scalarGrid();
+    const glm::i64vec3 index(1, 2, 3);
+    EXPECT_FLOAT_EQ(magnitude->value(index), glm::length(vectors->value(index)));
+    // The funnel moves with time: a new time gives other vectors.
+    volume->time = 50.0f;
+    EXPECT_NE(volume->vectorGrid()->value(index), vectors->value(index));
+}
+
+TEST(VolumeData, generatesTheScalarSources) {
+    const auto lobb = generated(VolumeSource::MarschnerLobb, 5.0f);
+    const volume::ScalarGridPtr signal = lobb->scalarGrid();
+    // At the origin (the middle sample on [-1,1]^3): (1 + 2 alpha) / (2 (1 + alpha)) = 0.6.
+    EXPECT_NEAR(signal->value({2, 2, 2}), 0.6f, 1e-6f);
+    const auto blob = generated(VolumeSource::Blob, 5.0f);
+    EXPECT_GT(blob->scalarGrid()->value({2, 2, 2}), 0.0f);
+    EXPECT_EQ(blob->vectorGrid(), nullptr);
+}
+
+TEST(VolumeData, jetStreamOffersCloudinessAsItsScalar) {
+    const auto volume = generated(VolumeSource::JetStream, 6.0f);
+    ASSERT_NE(volume->vectorGrid(), nullptr);
+    volume->component.setValue(VolumeComponent::Scalar);
+    volume->gridName = "cloudiness";
+    const volume::ScalarGridPtr clouds = volume->scalarGrid();
+    const volume::GridStatistics statistics = clouds->statistics();
+    EXPECT_GE(statistics.minimum, 0.0);
+    EXPECT_LE(statistics.maximum, 100.0);
+    EXPECT_EQ(clouds->geometry(), volume->vectorGrid()->geometry());
+}
+
+TEST(VolumeData, aerogelHasFibers) {
+    const auto volume = generated(VolumeSource::Aerogel, 6.0f);
+    EXPECT_EQ(volume->fibers().size(), 24u);
+    EXPECT_NE(volume->vectorGrid(), nullptr);
+    EXPECT_TRUE(generated(VolumeSource::Blob, 4.0f)->fibers().empty());
+}
+
+TEST(VolumeData, readsARawFile) {
+    volume::DenseScalarGrid grid(volume::GridGeometry({2, 3, 4}, {1.0, 2.0, 3.0}, {0.5, 0.5, 1.0}));
+    grid.setValue({1, 2, 3}, 42.0f);
+    const std::string path = testPath("grid.raw");
+    volume::writeRawVolume(path, grid);
+    const auto volume = VolumeData::create();
+    volume->source.setValue(VolumeSource::FileRaw);
+    volume->fileName = path;
+    const volume::ScalarGridPtr read = volume->scalarGrid();
+    EXPECT_EQ(read->geometry(), grid.geometry());
+    EXPECT_EQ(read->value({1, 2, 3}), 42.0f);
+}
+
+#ifdef TEXSPLAT_WITH_OPENVDB
+TEST(VolumeData, readsAGridOfAnOpenVdbFile) {
+    openvdb::initialize();
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->getAccessor().setValue({3, 4, 5}, 2.5f);
+    const std::string path = testPath("cloud.vdb");
+    openvdb::io::File(path).write({density});
+    const auto volume = VolumeData::create();
+    volume->setName("cloud");
+    volume->source.setValue(VolumeSource::FileVdb);
+    volume->fileName = path;
+    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': gridName is empty; source FILE_VDB needs the name of a grid "
+              "in " + path);
+    volume->gridName = "density";
+    const volume::ScalarGridPtr grid = volume->scalarGrid();
+    EXPECT_EQ(grid->geometry().dims(), glm::i64vec3(1));
+    EXPECT_EQ(grid->value({0, 0, 0}), 2.5f);
+}
+#endif
+
+TEST(VolumeData, errorsNameTheNodeAndTheSource) {
+    const auto volume = VolumeData::create();
+    volume->setName("cloud");
+    volume->source.setValue(VolumeSource::FileRaw);
+    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': fileName is empty; source FILE_RAW reads a file");
+    const std::string missing = testPath("missing.raw");
+    volume->fileName = missing;
+    EXPECT_EQ(errorOf<IoError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': " + missing + ": cannot open file (No such file or directory)");
+    EXPECT_FALSE(volume->isLoaded());
+
+    volume->source.setValue(VolumeSource::Blob);
+    volume->resolution = glm::vec3(4.0f, 0.0f, 4.5f);
+    EXPECT_EQ(errorOf<DataError>([&] { volume->bounds(); }),
+              "VolumeData 'cloud': resolution must hold whole numbers from 1 to 1e9, got 4 0 4.5");
+
+    volume->source.setValue(VolumeSource::Tornado);
+    volume->resolution = glm::vec3(4.0f);
+    volume->component.setValue(VolumeComponent::Scalar);
+    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': component SCALAR: source TORNADO has no scalar grid '' (it has "
+              "vectors only; use MAGNITUDE)");
+    volume->source.setValue(VolumeSource::JetStream);
+    volume->gridName = "rain";
+    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': component SCALAR: source JET_STREAM has no scalar grid 'rain' "
+              "(it has: cloudiness)");
+
+    volume->time = std::nanf("");
+    EXPECT_EQ(errorOf<DataError>([&] { volume->vectorGrid(); }).rfind("VolumeData 'cloud': ", 0),
+              0u);
+}
+
+TEST(VolumeData, boundingBoxIsTheGridBoundsUnderTheModelMatrix) {
+    // BLOB samples [-1,1]^3; 5 samples: spacing 0.5, cells reach 0.25 beyond the ends.
+    const auto volume = generated(VolumeSource::Blob, 5.0f);
+    EXPECT_EQ(volume->bounds(), sg::Box3(glm::vec3(-1.25f), glm::vec3(1.25f)));
+    const auto root = sg::Separator::create();
+    const auto transform = Transform::create();
+    transform->translation = glm::vec3(10.0f, 0.0f, 0.0f);
+    root->addChild(transform);
+    root->addChild(volume);
+    sg::BoundingBoxAction action;
+    action.apply(*root);
+    EXPECT_EQ(action.boundingBox(),
+              sg::Box3(glm::vec3(8.75f, -1.25f, -1.25f), glm::vec3(11.25f, 1.25f, 1.25f)));
+}
+
+TEST(VolumeData, putsItselfIntoTheStateWithoutLoading) {
+    const auto root = sg::Separator::create();
+    const auto volume = generated(VolumeSource::Blob, 4.0f);
+    const auto probe = test::StateProbe::create();
+    const VolumeData* seen = nullptr;
+    probe->visit = [&](sg::Action& action) { seen = action.state().get<VolumeElement>().volume; };
+    root->addChild(volume);
+    root->addChild(probe);
+    sg::SearchAction search; // visits every node, computes nothing
+    search.setName("nothingIsCalledThis");
+    search.apply(*root);
+    EXPECT_EQ(seen, volume.get());
+    EXPECT_FALSE(volume->isLoaded());
+}
+
+} // namespace
+} // namespace texsplat::nodes
