@@ -1,5 +1,6 @@
 #include "apps/Commands.h"
 
+#include "nodes/NodeTypes.h"
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Node.h"
@@ -28,8 +29,11 @@ struct InfoArguments {
     std::string update;
 };
 
-// The types a scene file may name: the core's nodes and engines.
-void registerTypes() { sg::registerEngineTypes(sg::NodeRegistry::instance()); }
+// The types a scene file may name: the core's and the nodes library's nodes, and the engines.
+void registerTypes() {
+    nodes::registerNodeTypes();
+    sg::registerEngineTypes(sg::NodeRegistry::instance());
+}
 
 std::string readText(const std::string& path) {
     std::ifstream file(path, std::ios::binary);

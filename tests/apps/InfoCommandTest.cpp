@@ -94,6 +94,15 @@ TEST_F(InfoCommandTest, needsASceneOrTheReference) {
     }
 }
 
+TEST_F(InfoCommandTest, readsEveryExampleSceneWithTheNodesLibrarysTypes) {
+    for (const char* name : {"tornado", "marschner-lobb", "blob", "jet-stream", "aerogel"}) {
+        const auto output =
+            runTexsplat("info " TEXSPLAT_SOURCE_DIR "/examples/" + std::string(name) + ".iv");
+        EXPECT_EQ(output.exitCode, 0) << name << ": " << output.standardError;
+        EXPECT_NE(output.standardOutput.find("VolumeData {"), std::string::npos) << name;
+    }
+}
+
 TEST_F(InfoCommandTest, referenceListsTypesWithFieldsAndDefaults) {
     const auto output = runTexsplat("info --reference");
     EXPECT_EQ(output.exitCode, 0) << output.standardError;
