@@ -133,10 +133,11 @@ sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const RenderArguments& argu
 }
 
 void printTimes(const sg::RenderStatistics& statistics, double readScene, double context,
-                double write) {
+                const gl::ContextInfo& contextInfo, double write) {
     std::printf("time report (wall seconds):\n");
     std::printf("  %-10s %9.4f  (scene file)\n", "read", readScene);
-    std::printf("  %-10s %9.4f  (EGL context)\n", "context", context);
+    std::printf("  %-10s %9.4f  (%s: %s)\n", "context", context, contextInfo.platform.c_str(),
+                contextInfo.summary().c_str());
     for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
         const auto name = std::string(sg::toString(static_cast<sg::RenderPhase>(phase)));
         std::printf("  %-10s %9.4f\n", name.c_str(), statistics.seconds[phase]);
@@ -179,7 +180,7 @@ void runRender(const RenderArguments& arguments) {
     image::writeImage(image, arguments.output);
     const double write = secondsSince(start);
     if (arguments.timeReport) {
-        printTimes(action.statistics(), readScene, contextTime, write);
+        printTimes(action.statistics(), readScene, contextTime, context.info(), write);
     }
 }
 
