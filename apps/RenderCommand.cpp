@@ -7,11 +7,13 @@
 #include "nodes/PerspectiveCamera.h"
 #include "nodes/image/ImageIo.h"
 #include "nodes/render/CameraView.h"
+#include "nodes/render/RayCastImage.h"
 #include "nodes/render/RenderedImage.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/NodeRegistry.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/engines/EngineTypes.h"
@@ -28,6 +30,9 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <thread>
+
+#include <unistd.h>
 
 namespace texsplat::apps {
 namespace {
@@ -48,6 +53,8 @@ struct RenderArguments {
     std::string camera;
     std::string direction;
     bool timeReport = false;
+    bool rayCast = false;
+    float rayCastStep = sg::RayCastAction::kDefaultStepSize;
 };
 
 // "WxH" with whole numbers from 1 to 16384 (beyond any GL framebuffer limit we could meet).
@@ -146,6 +153,56 @@ void printTimes(const sg::RenderStatistics& statistics, double readScene, double
     std::printf("  splats %zu, triangles %zu\n", statistics.splats, statistics.triangles);
 }
 
+// Progress of a ray cast on stderr: one updating line on a terminal; otherwise, once the render
+// has run for a few seconds, a line every 10% (batch logs stay short for small images).
+class RayCastProgress {
+public:
+    RayCastProgress() : mTerminal(isatty(STDERR_FILENO) == 1), mStart(Clock::now()) {}
+
+    bool operator()(double fraction) {
+        const int percent = static_cast<int>(fraction * 100.0);
+        if (mTerminal) {
+            if (percent != mLastPercent) {
+                std::fprintf(stderr, "\rray casting: %3d%%%s", percent, fraction >= 1.0 ? "\n" : "");
+            }
+        } else if (secondsSince(mStart) > 2.0 && percent / 10 != mLastPercent / 10) {
+            std::fprintf(stderr, "ray casting: %d%%\n", percent / 10 * 10);
+        }
+        mLastPercent = percent;
+        return true;
+    }
+
+private:
+    bool mTerminal;
+    Clock::time_point mStart;
+    int mLastPercent = -1;
+};
+
+// The reference image of --raycast: no GL context; the same camera, size and background as
+// the GL render, so the two images compare pixel by pixel.
+void runRayCast(const RenderArguments& arguments, sg::Node& root, glm::ivec2 size,
+                image::ImageFormat format, double readScene) {
+    sg::RayCastAction action(size.x, size.y);
+    action.setBackground(format == image::ImageFormat::Png ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
+                                                           : glm::vec4(0.0f));
+    action.setStepSize(arguments.rayCastStep);
+    action.setProgress(RayCastProgress());
+    Clock::time_point start = Clock::now();
+    action.render(root);
+    const double integrate = secondsSince(start);
+    const image::Image image = render::rayCastImage(action);
+    start = Clock::now();
+    image::writeImage(image, arguments.output);
+    const double write = secondsSince(start);
+    if (arguments.timeReport) {
+        std::printf("time report (wall seconds):\n");
+        std::printf("  %-10s %9.4f  (scene file)\n", "read", readScene);
+        std::printf("  %-10s %9.4f  (load, classify, integrate: ray cast, %u threads)\n",
+                    "ray cast", integrate, std::max(1u, std::thread::hardware_concurrency()));
+        std::printf("  %-10s %9.4f  (encode and rename)\n", "write", write);
+    }
+}
+
 void runRender(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
     // Refuse a bad output name before any work, so nothing is left half-done.
@@ -164,6 +221,13 @@ void runRender(const RenderArguments& arguments) {
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     const sg::Node::Ptr root = withCamera(scene, arguments, aspect);
 
+    if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
+        throw DataError("--raycast-step: only with --raycast");
+    }
+    if (arguments.rayCast) {
+        runRayCast(arguments, *root, size, format, readScene);
+        return;
+    }
     start = Clock::now();
     gl::EglContext context;
     const double contextTime = secondsSince(start);
@@ -204,6 +268,12 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     command->add_flag("--time-report", arguments->timeReport,
                       "Print where the time went (read, context, load, classify, order, upload, "
                       "draw, read back, write)");
+    command->add_flag("--raycast", arguments->rayCast,
+                      "Render the reference with the CPU ray caster (exact emission-absorption of "
+                      "the same reconstructed field, no GL context; progress on stderr)");
+    command->add_option("--raycast-step", arguments->rayCastStep,
+                        "Integration step of --raycast in voxels")
+        ->capture_default_str();
     command->callback([arguments, &exitCode] {
         runRender(*arguments);
         exitCode = kExitOk;

@@ -15,6 +15,7 @@
 #include "nodes/TransferFunction.h"
 #include "nodes/Transform.h"
 #include "nodes/VolumeData.h"
+#include "nodes/render/RayCastMethods.h"
 #include "nodes/render/RenderMethods.h"
 #include "scenegraph/NodeRegistry.h"
 
@@ -41,6 +42,7 @@ void registerNodeTypes() {
     registry.add<GaussianSplat>();
     // What RenderAction does with these types; a scene that can be read can also be drawn.
     render::registerRenderMethods();
+    render::registerRayCastMethods();
 }
 
 } // namespace texsplat::nodes

@@ -6,6 +6,7 @@
 #include "nodes/elements/TransferFunctionElement.h"
 #include "nodes/elements/VolumeElement.h"
 #include "nodes/render/CameraView.h"
+#include "nodes/render/KernelVolumeMedium.h"
 #include "nodes/render/SplatBatch.h"
 #include "nodes/render/SplatView.h"
 #include "nodes/render/detail/ClassificationCache.h"
@@ -17,6 +18,7 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/ModelMatrixElement.h"
+#include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/gl/Context.h"
 
@@ -125,6 +127,29 @@ void ScalarSplat::render(sg::RenderAction& action) {
         timed(action, sg::RenderPhase::Upload, [&] { batch->upload(*splats); });
         batch->draw(view);
     });
+}
+
+void ScalarSplat::rayCast(sg::RayCastAction& action) {
+    detail::withNodeContext(*this, [this] { checkFields(); });
+    const VolumeData* volume = action.state().get<VolumeElement>().volume;
+    const TransferFunction* transfer =
+        action.state().get<TransferFunctionElement>().transferFunction;
+    if (!volume) {
+        throw DataError(detail::nodeContext(*this) + ": no VolumeData before this node");
+    }
+    if (!transfer) {
+        throw DataError(detail::nodeContext(*this) + ": no TransferFunction before this node");
+    }
+    const render::CameraView camera =
+        render::CameraView::current(action.state(), *this, action.aspectRatio());
+    const volume::ScalarGridPtr grid = volume->scalarGrid();
+    const std::shared_ptr<const octree::ClassifiedGrid> classified =
+        mCache->classified(grid, *transfer);
+    const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
+    auto medium = detail::withNodeContext(
+        *this, [&] { return std::make_shared<render::KernelVolumeMedium>(classified, model); });
+    action.setCamera(camera.view, camera.projection);
+    action.addMedium(std::move(medium));
 }
 
 void ScalarSplat::getBoundingBox(sg::BoundingBoxAction& action) {

@@ -8,6 +8,7 @@
 #include <memory>
 
 namespace texsplat::sg {
+class RayCastAction;
 class RenderAction;
 } // namespace texsplat::sg
 
@@ -59,6 +60,12 @@ public:
     /// @throws DataError naming the node when there is no camera, VolumeData or
     /// TransferFunction before it, or a field is out of range; what loading the volume throws.
     void render(sg::RenderAction& action);
+
+    /// @brief RayCastAction: queues the continuous medium these splats approximate (the same
+    /// classified grid, reconstructed with the paper's kernel: render::KernelVolumeMedium) and
+    /// the camera (registered by registerNodeTypes()).
+    /// @throws as render(), except that no GL context is needed.
+    void rayCast(sg::RayCastAction& action);
 
     /// @brief Extends the box by the current VolumeData's bounds under this node's model matrix
     /// (a splat node under its own Transform draws the volume there); nothing without a volume.

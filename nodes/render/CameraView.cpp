@@ -15,13 +15,17 @@
 namespace texsplat::render {
 
 CameraView CameraView::current(sg::RenderAction& action, const sg::Node& node) {
-    const nodes::CameraElement& element = action.state().get<nodes::CameraElement>();
+    return current(action.state(), node, action.aspectRatio());
+}
+
+CameraView CameraView::current(sg::State& state, const sg::Node& node, float aspectRatio) {
+    const nodes::CameraElement& element = state.get<nodes::CameraElement>();
     if (!element.camera) {
         throw DataError(nodes::detail::nodeContext(node) + ": no camera before this node");
     }
     CameraView result;
     result.view = element.camera->viewMatrix() * glm::inverse(element.modelMatrix);
-    result.projection = element.camera->projectionMatrix(action.aspectRatio());
+    result.projection = element.camera->projectionMatrix(aspectRatio);
     result.viewDirection =
         glm::normalize(glm::vec3(element.modelMatrix * glm::vec4(element.camera->viewDirection(), 0.0f)));
     return result;

@@ -26,6 +26,11 @@ struct CameraView {
     /// @throws DataError "<node>: no camera before this node" when there is none, or what the
     /// camera throws for unusable fields.
     static CameraView current(sg::RenderAction& action, const sg::Node& node);
+
+    /// @brief The camera of `state` for an image of `aspectRatio` (width over height): what
+    /// any action sees, e.g. sg::RayCastAction, which must see the same rays as RenderAction.
+    /// @throws as current(RenderAction&, const Node&).
+    static CameraView current(sg::State& state, const sg::Node& node, float aspectRatio);
 };
 
 /// @brief The camera orientation that turns the default view direction (0, 0, −1) to

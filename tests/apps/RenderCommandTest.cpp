@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <unistd.h>
@@ -80,6 +81,37 @@ TEST_F(RenderCommandTest, rendersASceneFileToExrWithDepthAndCameraOptions) {
     EXPECT_EQ(statistics.nonFinitePixels, 0u);
     EXPECT_GT(statistics.maximum.r, 0.1);
     EXPECT_EQ(statistics.minimum.a, 0.0); // the EXR keeps the layer's own alpha
+}
+
+TEST_F(RenderCommandTest, raycastRendersTheSameViewWithoutGl) {
+    const std::string scene = writeScene();
+    const std::string gl = path("gl.png");
+    const std::string reference = path("raycast.png");
+    const std::string options = " --size 32x24 --camera orthographic --direction 1,0.3,-0.2";
+    ASSERT_EQ(runTexsplat("render " + scene + " -o " + gl + options).exitCode, 0);
+    const auto result =
+        runTexsplat("render " + scene + " -o " + reference + options + " --raycast --time-report");
+    ASSERT_EQ(result.exitCode, 0) << result.standardError;
+    EXPECT_NE(result.standardOutput.find("ray cast"), std::string::npos);
+    EXPECT_EQ(result.standardOutput.find("context"), std::string::npos); // no GL context made
+    const Image splats = texsplat::image::readImage(gl);
+    const Image rayCast = texsplat::image::readImage(reference);
+    ASSERT_EQ(rayCast.width(), 32);
+    ASSERT_EQ(rayCast.height(), 24);
+    const Image::Statistics statistics = rayCast.statistics();
+    EXPECT_EQ(statistics.nonFinitePixels, 0u);
+    EXPECT_GT(statistics.maximum.r, 0.1);
+    EXPECT_EQ(statistics.minimum.a, 1.0);
+    // The same blob from the same camera: the splats approximate the reference closely.
+    double difference = 0.0;
+    for (int y = 0; y < 24; ++y) {
+        for (int x = 0; x < 32; ++x) {
+            const glm::vec4 a = splats.pixel(x, y);
+            const glm::vec4 b = rayCast.pixel(x, y);
+            difference += std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+        }
+    }
+    EXPECT_LT(difference / (32 * 24 * 3), 0.02);
 }
 
 TEST_F(RenderCommandTest, reportsBadInputsAndWritesNothing) {

@@ -1,0 +1,12 @@
+#pragma once
+
+#include "nodes/image/Image.h"
+#include "scenegraph/actions/RayCastAction.h"
+
+namespace texsplat::render {
+
+/// @brief The last render of `action` as an image: premultiplied float RGBA, top row first
+/// (the same layout as renderedImage() of a RenderAction of the same size).
+image::Image rayCastImage(const sg::RayCastAction& action);
+
+} // namespace texsplat::render
