@@ -31,4 +31,8 @@ void addCompareCommand(CLI::App& app, int& exitCode);
 /// @brief Adds `texsplat render` (a scene, or the built-in one, to a PNG or EXR image).
 void addRenderCommand(CLI::App& app, int& exitCode);
 
+/// @brief Adds `texsplat bench` (frame time, fragments, fill-rate ceiling ratio and error of
+/// each splat method; table, CSV and an SVG plot).
+void addBenchCommand(CLI::App& app, int& exitCode);
+
 } // namespace texsplat::apps

@@ -15,6 +15,7 @@ int main(int argc, char** argv) {
     addInfoCommand(app, exitCode);
     addCompareCommand(app, exitCode);
     addRenderCommand(app, exitCode);
+    addBenchCommand(app, exitCode);
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -1,0 +1,183 @@
+#include "apps/Commands.h"
+
+#include "nodes/bench/BenchReport.h"
+#include "nodes/bench/BenchRunner.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/gl/EglContext.h"
+
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <thread>
+#include <unistd.h>
+
+namespace texsplat::apps {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct BenchArguments {
+    std::string datasets = "ml128,tornado128";
+    std::string sizes = "512x512";
+    std::string methods = "texture,texture-gaussian,polygon,texture@0.25,texture@0.05";
+    int repeat = 5;
+    int warmup = 1;
+    int threads = 0;
+    bool noReference = false;
+    std::string csv;
+    std::string plot;
+};
+
+// "WxH" with whole numbers from 1 to 16384.
+glm::ivec2 parseSize(const std::string& text) {
+    const std::size_t x = text.find('x');
+    const auto whole = [](const std::string& part, int& value) {
+        if (part.empty() || part.size() > 5 ||
+            !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+            return false;
+        }
+        value = std::stoi(part);
+        return value >= 1 && value <= 16384;
+    };
+    glm::ivec2 size(0);
+    if (x == std::string::npos || !whole(text.substr(0, x), size.x) ||
+        !whole(text.substr(x + 1), size.y)) {
+        throw DataError("--size: expected WxH with whole numbers from 1 to 16384, got '" + text +
+                        "'");
+    }
+    return size;
+}
+
+std::vector<glm::ivec2> parseSizes(const std::string& text) {
+    std::vector<glm::ivec2> sizes;
+    std::istringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        sizes.push_back(parseSize(item));
+    }
+    if (sizes.empty()) {
+        throw DataError("--size: expected WxH with whole numbers from 1 to 16384, got ''");
+    }
+    return sizes;
+}
+
+// Runs `parse` and prefixes a DataError with the option's name.
+template <class Parse> auto withOption(const char* option, Parse&& parse) {
+    try {
+        return parse();
+    } catch (const DataError& e) {
+        throw DataError(std::string(option) + ": " + e.what());
+    }
+}
+
+// Progress on stderr: one updating line on a terminal, a line per finished stage otherwise.
+class ProgressPrinter {
+public:
+    ProgressPrinter() : mTerminal(isatty(STDERR_FILENO) == 1) {}
+
+    void operator()(const std::string& stage, double fraction) {
+        if (stage != mStage) {
+            mStage = stage;
+            mStart = Clock::now();
+        }
+        const double seconds = std::chrono::duration<double>(Clock::now() - mStart).count();
+        if (mTerminal) {
+            std::fprintf(stderr, "\r%-60s %3.0f%% %6.1f s%s", stage.c_str(), 100.0 * fraction,
+                         seconds, fraction >= 1.0 ? "\n" : "");
+        } else if (fraction >= 1.0) {
+            std::fprintf(stderr, "%s: %.1f s\n", stage.c_str(), seconds);
+        }
+        std::fflush(stderr);
+    }
+
+private:
+    bool mTerminal;
+    std::string mStage;
+    Clock::time_point mStart;
+};
+
+void runBench(const BenchArguments& arguments) {
+    bench::BenchOptions options;
+    options.datasets =
+        withOption("--dataset", [&] { return bench::BenchDataset::parseList(arguments.datasets); });
+    options.sizes = parseSizes(arguments.sizes);
+    options.methods =
+        withOption("--method", [&] { return bench::BenchMethod::parseList(arguments.methods); });
+    options.repeat = arguments.repeat;
+    options.warmup = arguments.warmup;
+    options.threads = arguments.threads;
+    options.reference = !arguments.noReference;
+
+    gl::EglContext context;
+    bench::BenchRunner runner(options);
+    auto progress = std::make_shared<ProgressPrinter>();
+    runner.setProgress([progress](const std::string& stage, double fraction) {
+        (*progress)(stage, fraction);
+    });
+    const std::vector<bench::BenchResult> results = runner.run();
+
+    const unsigned cores = std::thread::hardware_concurrency();
+    std::printf("texsplat bench: %s (%s), %u CPU threads; median of %d frames after %d warm-up\n",
+                context.info().summary().c_str(), context.info().platform.c_str(), cores,
+                arguments.repeat, arguments.warmup);
+    std::printf("%s", bench::benchTable(results).c_str());
+    std::printf("frame/c, draw/c: frame and draw time over the fill-rate ceiling (same quads, "
+                "trivial shader, same blending); fragments: GL_SAMPLES_PASSED; errors: RGB of "
+                "premultiplied floats, PSNR peak 1\n");
+    if (!arguments.csv.empty()) {
+        bench::writeBenchCsv(results, arguments.csv);
+    }
+    if (!arguments.plot.empty()) {
+        bench::writeBenchPlot(results,
+                              "texsplat bench: error against frame time (" +
+                                  context.info().renderer + ", " + std::to_string(cores) +
+                                  " threads)",
+                              arguments.plot);
+    }
+}
+
+} // namespace
+
+void addBenchCommand(CLI::App& app, int& exitCode) {
+    auto arguments = std::make_shared<BenchArguments>();
+    CLI::App* command = app.add_subcommand(
+        "bench", "Time texture splats, textured and polygonal Gaussians against the GL device's "
+                 "fill-rate ceiling and their error against the ray-cast reference");
+    command
+        ->add_option("--dataset", arguments->datasets,
+                     "Comma-separated datasets: ml<N>, tornado<N>, blob<N> (N samples per axis), "
+                     "e.g. ml41,ml128,tornado128,blob256")
+        ->capture_default_str();
+    command->add_option("--size", arguments->sizes, "Comma-separated image sizes WxH")
+        ->capture_default_str();
+    command
+        ->add_option("--method", arguments->methods,
+                     "Comma-separated methods: texture, texture-gaussian, polygon; @FRACTION "
+                     "draws the octree cut of that fraction of the splats")
+        ->capture_default_str();
+    command->add_option("--repeat", arguments->repeat, "Timed frames per method (median)")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    command->add_option("--warmup", arguments->warmup, "Untimed frames first")
+        ->check(CLI::Range(1, 1000))
+        ->capture_default_str();
+    command->add_option("--threads", arguments->threads,
+                        "Ray-caster threads (0: all cores)")
+        ->check(CLI::Range(0, 1024));
+    command->add_flag("--no-reference", arguments->noReference,
+                      "Skip the ray-cast reference (no error against it)");
+    command->add_option("--csv", arguments->csv, "Also write the results as CSV to this file");
+    command->add_option("--plot", arguments->plot,
+                        "Also write a plot of error against frame time (SVG) to this file");
+    command->callback([arguments, &exitCode] {
+        runBench(*arguments);
+        exitCode = kExitOk;
+    });
+}
+
+} // namespace texsplat::apps

@@ -1,0 +1,101 @@
+#include "nodes/bench/BenchMethod.h"
+
+#include "nodes/GaussianSplat.h"
+#include "nodes/TextureSplat.h"
+#include "scenegraph/Error.h"
+
+#include <algorithm>
+#include <climits>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace texsplat::bench {
+namespace {
+
+struct KindName {
+    const char* name;
+    BenchMethod::Kind kind;
+};
+
+constexpr KindName kKindNames[] = {{"texture", BenchMethod::Kind::TexturePaper},
+                                   {"texture-gaussian", BenchMethod::Kind::TextureGaussian},
+                                   {"polygon", BenchMethod::Kind::PolygonGaussian}};
+
+[[noreturn]] void unknownMethod(const std::string& name) {
+    throw DataError("unknown method '" + name +
+                    "' (expected texture, texture-gaussian or polygon, optionally with @FRACTION, "
+                    "e.g. texture@0.1)");
+}
+
+} // namespace
+
+BenchMethod BenchMethod::fromName(const std::string& name) {
+    const std::size_t at = name.find('@');
+    const std::string kindName = name.substr(0, at);
+    const auto entry = std::find_if(std::begin(kKindNames), std::end(kKindNames),
+                                    [&](const KindName& k) { return kindName == k.name; });
+    if (entry == std::end(kKindNames)) {
+        unknownMethod(name);
+    }
+    BenchMethod method;
+    method.kind = entry->kind;
+    if (at != std::string::npos) {
+        const std::string fraction = name.substr(at + 1);
+        char* end = nullptr;
+        method.budget = std::strtod(fraction.c_str(), &end);
+        if (fraction.empty() || end != fraction.c_str() + fraction.size() ||
+            !(method.budget > 0.0 && method.budget < 1.0)) {
+            unknownMethod(name);
+        }
+    }
+    return method;
+}
+
+std::vector<BenchMethod> BenchMethod::parseList(const std::string& names) {
+    std::vector<BenchMethod> methods;
+    std::istringstream stream(names);
+    std::string name;
+    while (std::getline(stream, name, ',')) {
+        methods.push_back(fromName(name));
+    }
+    if (methods.empty()) {
+        throw DataError("empty method list");
+    }
+    return methods;
+}
+
+std::string BenchMethod::name() const {
+    std::string text;
+    for (const KindName& entry : kKindNames) {
+        if (entry.kind == kind) {
+            text = entry.name;
+        }
+    }
+    if (budget > 0.0) {
+        char fraction[32];
+        std::snprintf(fraction, sizeof fraction, "@%g", budget);
+        text += fraction;
+    }
+    return text;
+}
+
+sg::Node::Ptr BenchMethod::makeNode(std::size_t fullSplats) const {
+    nodes::ScalarSplat::Ptr node;
+    if (kind == Kind::PolygonGaussian) {
+        node = nodes::GaussianSplat::create();
+    } else {
+        nodes::TextureSplat::Ptr texture = nodes::TextureSplat::create();
+        texture->kernel.setValue(kind == Kind::TextureGaussian ? nodes::SplatKernel::Gaussian
+                                                               : nodes::SplatKernel::Paper);
+        node = texture;
+    }
+    if (budget > 0.0) {
+        const double splats = std::clamp(std::round(budget * static_cast<double>(fullSplats)), 1.0,
+                                         static_cast<double>(INT_MAX));
+        node->maxSplats.setValue(static_cast<int>(splats));
+    }
+    return node;
+}
+
+} // namespace texsplat::bench

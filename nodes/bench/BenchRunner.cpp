@@ -1,0 +1,241 @@
+#include "nodes/bench/BenchRunner.h"
+
+#include "nodes/Camera.h"
+#include "nodes/NodeTypes.h"
+#include "nodes/ScalarSplat.h"
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "nodes/bench/FillRateCeiling.h"
+#include "nodes/bench/detail/SamplesPassed.h"
+#include "nodes/image/Image.h"
+#include "nodes/image/ImageComparison.h"
+#include "nodes/render/RenderedImage.h"
+#include "nodes/render/SplatView.h"
+#include "octree/ClassifiedGrid.h"
+#include "octree/Cut.h"
+#include "octree/Octree.h"
+#include "octree/Refiner.h"
+#include "octree/Splat.h"
+#include "octree/SplatEmission.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Log.h"
+#include "scenegraph/actions/RayCastAction.h"
+#include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/gl/Context.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstring>
+#include <memory>
+#include <optional>
+
+namespace texsplat::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string sizeText(const glm::ivec2& size) {
+    return std::to_string(size.x) + "x" + std::to_string(size.y);
+}
+
+image::Image imageFromRgba(const std::vector<float>& rgba, const glm::ivec2& size) {
+    image::Image result(size.x, size.y);
+    std::memcpy(static_cast<void*>(result.data()), rgba.data(), rgba.size() * sizeof(float));
+    return result;
+}
+
+// RMSE and PSNR over R, G, B pooled.
+void compare(const image::Image& reference, const image::Image& test, double& rmse,
+             double& psnr) {
+    const image::ImageComparison comparison(reference, test);
+    rmse = comparison.rgb().rmse;
+    psnr = comparison.rgb().psnr;
+}
+
+// What a splat node of the benchmark scene draws, computed the way ScalarSplat does it (the
+// scene has no Transform, so the model matrix is the identity).
+struct SplatSource {
+    std::shared_ptr<const octree::ClassifiedGrid> classified;
+    render::SplatView view;
+    std::optional<octree::Octree> octree;
+};
+
+void emitFor(SplatSource& source, std::size_t maxSplats, octree::SplatList& splats) {
+    const octree::View order = source.view.octreeView();
+    if (maxSplats == 0) {
+        octree::emitVoxelSplats(*source.classified, order, splats);
+        return;
+    }
+    if (!source.octree) {
+        source.octree.emplace(source.classified);
+    }
+    octree::Refiner refiner(octree::Cut(*source.octree), order);
+    octree::RefineBudget budget;
+    budget.maxSplats = maxSplats;
+    refiner.refine(budget);
+    octree::emitSplats(refiner.cut(), order, splats);
+}
+
+} // namespace
+
+BenchRunner::BenchRunner(BenchOptions options) : mOptions(std::move(options)) {
+    if (mOptions.datasets.empty() || mOptions.sizes.empty() || mOptions.methods.empty()) {
+        throw DataError("bench: needs at least one dataset, size and method");
+    }
+    if (mOptions.warmup < 1 || mOptions.repeat < 1) {
+        throw DataError("bench: warm-up and repeat must be at least 1, got " +
+                        std::to_string(mOptions.warmup) + " and " +
+                        std::to_string(mOptions.repeat));
+    }
+}
+
+void BenchRunner::report(const std::string& stage, double fractionDone) const {
+    if (mProgress) {
+        mProgress(stage, fractionDone);
+    }
+}
+
+std::vector<BenchResult> BenchRunner::run() {
+    if (!gl::Context::current()) {
+        throw GlError("bench: no current GL context");
+    }
+    nodes::registerNodeTypes();
+    std::vector<BenchResult> results;
+    for (const BenchDataset& dataset : mOptions.datasets) {
+        for (const glm::ivec2& size : mOptions.sizes) {
+            runOne(dataset, size, results);
+        }
+    }
+    return results;
+}
+
+void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
+                         std::vector<BenchResult>& results) {
+    const std::string where = dataset.name() + " " + sizeText(size);
+    const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
+    report(where + ": load and classify", 0.0);
+    // The reference ray casts the scene with the full-quality node; each method replaces it.
+    const sg::Separator::Ptr root = dataset.scene(BenchMethod().makeNode(0), aspect);
+    const auto& camera = static_cast<const nodes::Camera&>(*root->child(0));
+    const auto& transfer = static_cast<const nodes::TransferFunction&>(*root->child(1));
+    const auto& volume = static_cast<const nodes::VolumeData&>(*root->child(2));
+
+    SplatSource source;
+    source.classified = transfer.classify(*volume.scalarGrid());
+    source.view = render::SplatView::fromMatrices(glm::mat4(1.0f), camera.viewMatrix(),
+                                                  camera.projectionMatrix(aspect),
+                                                  glm::vec3(source.classified->spacing()));
+    octree::SplatList fullList;
+    emitFor(source, 0, fullList);
+    report(where + ": load and classify", 1.0);
+
+    std::optional<image::Image> reference;
+    if (mOptions.reference) {
+        const std::string stage = where + ": reference (RayCastAction)";
+        sg::RayCastAction rayCast(size.x, size.y);
+        rayCast.setThreadCount(mOptions.threads);
+        rayCast.setProgress([&](double fraction) {
+            report(stage, fraction);
+            return true;
+        });
+        rayCast.render(*root);
+        reference = imageFromRgba(rayCast.readColor(), size);
+    }
+
+    FillRateCeiling ceiling(size.x, size.y);
+    std::vector<image::Image> images;
+    const std::size_t first = results.size();
+    for (const BenchMethod& method : mOptions.methods) {
+        const std::string stage = where + ": " + method.name();
+        const sg::Node::Ptr node = method.makeNode(fullList.size());
+        const auto& splatNode = static_cast<const nodes::ScalarSplat&>(*node);
+        root->replaceChild(3, node);
+
+        // The ceiling draws the very list this method draws (the full list, or its octree cut).
+        const float extent = splatNode.size.value();
+        octree::SplatList cutList;
+        if (method.budget > 0.0) {
+            emitFor(source, static_cast<std::size_t>(splatNode.maxSplats.value()), cutList);
+        }
+        const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
+        ceiling.upload(drawn);
+
+        // Frames and ceiling draws alternate, so that load from other processes on a shared
+        // machine hits both alike; each ratio pairs a frame with the ceiling draw after it.
+        sg::RenderAction action(size.x, size.y);
+        const int frames = mOptions.warmup + mOptions.repeat;
+        for (int i = 0; i < mOptions.warmup; ++i) {
+            report(stage, static_cast<double>(i) / frames);
+            action.render(*root);
+            ceiling.draw(source.view, extent);
+        }
+        std::vector<double> frameTimes;
+        std::vector<double> ceilingTimes;
+        std::vector<double> frameRatios;
+        std::vector<double> drawRatios;
+        std::vector<std::vector<double>> phaseTimes(sg::kRenderPhaseCount);
+        for (int i = 0; i < mOptions.repeat; ++i) {
+            report(stage, static_cast<double>(mOptions.warmup + i) / frames);
+            const Clock::time_point start = Clock::now();
+            action.render(*root);
+            frameTimes.push_back(secondsSince(start));
+            for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
+                phaseTimes[phase].push_back(action.statistics().seconds[phase]);
+            }
+            ceilingTimes.push_back(ceiling.draw(source.view, extent));
+            frameRatios.push_back(frameTimes.back() / ceilingTimes.back());
+            drawRatios.push_back(action.statistics().time(sg::RenderPhase::Draw) /
+                                 ceilingTimes.back());
+        }
+        BenchResult result;
+        result.dataset = dataset.name();
+        result.width = size.x;
+        result.height = size.y;
+        result.method = method.name();
+        result.isFullQuality = method.isFullQuality();
+        result.splats = action.statistics().splats;
+        result.frameSeconds = median(frameTimes);
+        for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
+            result.phaseSeconds[phase] = median(phaseTimes[phase]);
+        }
+        result.ceilingSeconds = median(ceilingTimes);
+        result.frameRatio = median(frameRatios);
+        result.drawRatio = median(drawRatios);
+        if (drawn.size() != result.splats) {
+            log(LogLevel::Warning, stage + ": the fill-rate ceiling draws " +
+                                       std::to_string(drawn.size()) + " quads, the method " +
+                                       std::to_string(result.splats) + " splats");
+        }
+        result.ceilingFragments = ceiling.fragments(source.view, extent);
+        result.fragments = detail::countSamplesPassed([&] { action.render(*root); });
+        images.push_back(render::renderedImage(action));
+        report(stage, 1.0);
+        if (reference) {
+            compare(*reference, images.back(), result.referenceRmse, result.referencePsnr);
+        }
+        results.push_back(std::move(result));
+    }
+
+    const auto full = std::find_if(mOptions.methods.begin(), mOptions.methods.end(),
+                                   [](const BenchMethod& m) { return m.isFullQuality(); });
+    if (full != mOptions.methods.end()) {
+        const image::Image& fullImage =
+            images[static_cast<std::size_t>(full - mOptions.methods.begin())];
+        for (std::size_t i = 0; i < images.size(); ++i) {
+            BenchResult& result = results[first + i];
+            compare(fullImage, images[i], result.fullRmse, result.fullPsnr);
+        }
+    }
+}
+
+} // namespace texsplat::bench

@@ -1,0 +1,61 @@
+#pragma once
+
+#include "nodes/bench/BenchDataset.h"
+#include "nodes/bench/BenchMethod.h"
+#include "nodes/bench/BenchResult.h"
+
+#include <glm/vec2.hpp>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace texsplat::bench {
+
+/// @brief What BenchRunner measures and how often.
+struct BenchOptions {
+    std::vector<BenchDataset> datasets; ///< volumes to draw
+    std::vector<glm::ivec2> sizes;      ///< image sizes (width, height)
+    std::vector<BenchMethod> methods;   ///< drawing methods, measured in this order
+    int warmup = 1;  ///< untimed frames first (the first classifies and builds the octree), >= 1
+    int repeat = 5;  ///< timed frames; the median is reported, >= 1
+    bool reference = true;  ///< ray cast the reference image (RayCastAction) per dataset and size
+    int threads = 0;        ///< RayCastAction threads (0: all cores)
+};
+
+/// @brief Runs `texsplat bench`: for every dataset and image size, renders the RayCastAction
+/// reference once, then each method: warm-up, then `repeat` timed frames, each followed by one
+/// timed draw of the fill-rate ceiling (FillRateCeiling) of the same splat list, so that load
+/// from other processes hits both alike; then one more frame counted with a GL_SAMPLES_PASSED
+/// query. Every image is compared with the reference and with the full-quality texture-splat
+/// image.
+///
+/// Needs a current GL context for run(); registers the node types itself.
+class BenchRunner {
+public:
+    /// @brief Called with what is being done ("ml128 512x512: reference") and the fraction of
+    /// it done, in [0, 1]; the application shows it (the library does not print).
+    using Progress = std::function<void(const std::string& stage, double fractionDone)>;
+
+    /// @brief A runner for `options`.
+    /// @throws DataError when a list is empty or warmup / repeat is below 1.
+    explicit BenchRunner(BenchOptions options);
+
+    /// @brief Sets the progress callback.
+    void setProgress(Progress progress) { mProgress = std::move(progress); }
+
+    /// @brief Measures everything; results are in the order dataset, size, method.
+    /// @throws GlError when no context is current or GL fails; what loading or rendering
+    /// throws (DataError, sg::RenderCancelled never: the progress callback cannot cancel).
+    std::vector<BenchResult> run();
+
+private:
+    void runOne(const BenchDataset& dataset, const glm::ivec2& size,
+                std::vector<BenchResult>& results);
+    void report(const std::string& stage, double fractionDone) const;
+
+    BenchOptions mOptions;
+    Progress mProgress;
+};
+
+} // namespace texsplat::bench

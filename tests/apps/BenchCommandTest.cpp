@@ -1,0 +1,144 @@
+#include "RunCommand.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+using texsplat::test::runTexsplat;
+
+namespace {
+
+class BenchCommandTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDirectory = fs::path(::testing::TempDir()) /
+                     ("texsplat_bench_" + std::to_string(getpid()) + "_" + info->name());
+        fs::remove_all(mDirectory);
+        fs::create_directories(mDirectory);
+    }
+    void TearDown() override { fs::remove_all(mDirectory); }
+
+    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
+
+    static std::string read(const std::string& file) {
+        std::ifstream stream(file, std::ios::binary);
+        std::ostringstream text;
+        text << stream.rdbuf();
+        return text.str();
+    }
+
+    // The parts between separators; a trailing empty part counts for fields, not for lines.
+    static std::vector<std::string> split(const std::string& text, char separator) {
+        std::vector<std::string> parts;
+        std::istringstream stream(text);
+        std::string part;
+        while (std::getline(stream, part, separator))
+            parts.push_back(part);
+        if (separator == ',' && !text.empty() && text.back() == separator)
+            parts.emplace_back();
+        return parts;
+    }
+
+private:
+    fs::path mDirectory;
+};
+
+TEST_F(BenchCommandTest, printsTheTableAndWritesCsvAndPlot) {
+    const auto output =
+        runTexsplat("bench --dataset ml8 --size 32x24 --repeat 1 --method "
+                    "texture,texture-gaussian,polygon,texture@0.5 --csv " +
+                    path("bench.csv") + " --plot " + path("bench.svg"));
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    const std::string& text = output.standardOutput;
+    EXPECT_NE(text.find("dataset     size      method                splats   fragments  "
+                        "ceil frags  frame ms   draw ms   ceil ms frame/c  draw/c   ref RMSE "
+                        "ref PSNR  full RMSE full PSNR\n"),
+              std::string::npos)
+        << text;
+    EXPECT_NE(text.find("ml8         32x24     texture "), std::string::npos) << text;
+    EXPECT_NE(text.find("ml8         32x24     polygon "), std::string::npos) << text;
+
+    const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
+    ASSERT_EQ(lines.size(), 5u) << read(path("bench.csv"));
+    EXPECT_EQ(lines[0], "dataset,width,height,method,full_quality,splats,fragments,"
+                        "ceiling_fragments,frame_ms,load_ms,classify_ms,order_ms,upload_ms,"
+                        "draw_ms,read_back_ms,ceiling_ms,frame_ratio,draw_ratio,reference_rmse,"
+                        "reference_psnr,full_rmse,full_psnr");
+    const std::vector<std::string> methods = {"texture", "texture-gaussian", "polygon",
+                                              "texture@0.5"};
+    for (std::size_t row = 1; row < lines.size(); ++row) {
+        const std::vector<std::string> fields = split(lines[row], ',');
+        ASSERT_EQ(fields.size(), 22u) << lines[row];
+        EXPECT_EQ(fields[0], "ml8");
+        EXPECT_EQ(fields[1], "32");
+        EXPECT_EQ(fields[2], "24");
+        EXPECT_EQ(fields[3], methods[row - 1]);
+        EXPECT_EQ(fields[4], row == 1 ? "1" : "0");
+        EXPECT_GT(std::stoull(fields[5]), 0u) << "splats";
+        EXPECT_GT(std::stoull(fields[6]), 0u) << "fragments";
+        EXPECT_GT(std::stoull(fields[7]), 0u) << "ceiling fragments";
+        for (const int column : {8, 15, 16, 17}) { // frame, ceiling, both ratios
+            const double value = std::stod(fields[static_cast<std::size_t>(column)]);
+            EXPECT_TRUE(std::isfinite(value) && value > 0.0) << lines[0] << "\n" << lines[row];
+        }
+        const double referenceRmse = std::stod(fields[18]);
+        EXPECT_TRUE(std::isfinite(referenceRmse) && referenceRmse >= 0.0) << lines[row];
+        if (row == 1) {
+            EXPECT_EQ(fields[20], "0") << "the full-quality image against itself";
+            EXPECT_EQ(fields[21], "inf");
+        } else {
+            EXPECT_GT(std::stod(fields[20]), 0.0) << lines[row];
+        }
+    }
+    // The octree cut of half the splats draws about half of them.
+    const auto cutSplats = std::stod(split(lines[4], ',')[5]);
+    const auto fullSplats = std::stod(split(lines[1], ',')[5]);
+    EXPECT_LE(cutSplats, 0.5 * fullSplats + 1.0);
+    const std::string svg = read(path("bench.svg"));
+    EXPECT_EQ(svg.rfind("<svg xmlns=\"http://www.w3.org/2000/svg\"", 0), 0u);
+    EXPECT_NE(svg.find("RMSE against the ray-cast reference"), std::string::npos);
+    EXPECT_NE(svg.find("</svg>"), std::string::npos);
+}
+
+TEST_F(BenchCommandTest, skipsTheReferenceWhenAsked) {
+    const auto output = runTexsplat("bench --dataset blob6 --size 16x16 --repeat 1 "
+                                    "--method texture,polygon --no-reference --csv " +
+                                    path("bench.csv"));
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_EQ(output.standardError.find("reference"), std::string::npos) << output.standardError;
+    const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
+    ASSERT_EQ(lines.size(), 3u);
+    const std::vector<std::string> fields = split(lines[2], ',');
+    ASSERT_EQ(fields.size(), 22u) << lines[2];
+    EXPECT_EQ(fields[18], "") << "no reference RMSE";
+    EXPECT_EQ(fields[19], "") << "no reference PSNR";
+    EXPECT_GT(std::stod(fields[20]), 0.0) << "the polygon against the texture splats";
+}
+
+TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
+    auto output = runTexsplat("bench --dataset ml8,foo --size 16x16");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardOutput, "");
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: --dataset: unknown dataset 'foo' (expected ml<N>, tornado<N> or "
+              "blob<N> with N from 2 to 1024, e.g. ml41, ml128, tornado128, blob256)\n");
+    output = runTexsplat("bench --dataset ml8 --method texture@1.5");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: --method: unknown method 'texture@1.5' (expected texture, "
+              "texture-gaussian or polygon, optionally with @FRACTION, e.g. texture@0.1)\n");
+    output = runTexsplat("bench --dataset ml8 --size 16by16");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError, "texsplat: error: --size: expected WxH with whole numbers "
+                                    "from 1 to 16384, got '16by16'\n");
+}
+
+} // namespace

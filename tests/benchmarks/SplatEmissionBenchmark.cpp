@@ -1,0 +1,125 @@
+// Splat emission: the full-resolution back-to-front list in slice order (every frame of a
+// TextureSplat without a cut) against its natural baseline, the same splats emitted in memory
+// order with no ordering at all; and the octree: build, and the cut a splat budget reaches.
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "octree/ClassifiedGrid.h"
+#include "octree/Cut.h"
+#include "octree/Octree.h"
+#include "octree/Refiner.h"
+#include "octree/SliceOrder.h"
+#include "octree/Splat.h"
+#include "octree/SplatEmission.h"
+#include "octree/View.h"
+
+#include <benchmark/benchmark.h>
+
+#include <memory>
+
+namespace {
+
+using texsplat::octree::ClassifiedGrid;
+using texsplat::octree::SplatList;
+using texsplat::octree::View;
+
+std::shared_ptr<const ClassifiedGrid> classifiedMarschnerLobb(int resolution) {
+    auto volume = texsplat::nodes::VolumeData::create();
+    volume->source.setValue(texsplat::nodes::VolumeSource::MarschnerLobb);
+    volume->resolution.setValue(glm::vec3(static_cast<float>(resolution)));
+    auto transfer = texsplat::nodes::TransferFunction::create();
+    transfer->opacityValues.setValue({0.0f, 0.45f, 0.55f, 1.0f});
+    transfer->opacities.setValue({0.0f, 0.0f, 6.0f, 6.0f});
+    return transfer->classify(*volume->scalarGrid());
+}
+
+// An eye outside the grid's corner, looking obliquely at it (as `texsplat bench` does).
+View obliqueView() {
+    return View::perspective({-2.0, -2.5, 4.0}, {0.35, 0.5, -1.0});
+}
+
+void EmitVoxelSplatsSliceOrder(benchmark::State& state) {
+    const auto grid = classifiedMarschnerLobb(static_cast<int>(state.range(0)));
+    const View view = obliqueView();
+    SplatList splats;
+    for (auto _ : state) {
+        texsplat::octree::emitVoxelSplats(*grid, view, splats);
+        benchmark::DoNotOptimize(splats.splats().data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(splats.size()));
+    state.counters["splats"] = static_cast<double>(splats.size());
+}
+BENCHMARK(EmitVoxelSplatsSliceOrder)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// Baseline: the same splats in memory order (no view, no order, no culling).
+void EmitVoxelSplatsBaselineMemoryOrder(benchmark::State& state) {
+    const auto grid = classifiedMarschnerLobb(static_cast<int>(state.range(0)));
+    const glm::u64vec3 dims = grid->dims();
+    SplatList splats;
+    for (auto _ : state) {
+        splats.clear();
+        for (std::uint64_t k = 0; k < dims.z; ++k) {
+            for (std::uint64_t j = 0; j < dims.y; ++j) {
+                for (std::uint64_t i = 0; i < dims.x; ++i) {
+                    const std::uint64_t index = grid->index({i, j, k});
+                    if (grid->isEmptyVoxel(index)) {
+                        continue;
+                    }
+                    const glm::vec4 voxel = grid->voxel(index);
+                    texsplat::octree::Splat splat;
+                    splat.position = glm::vec3(grid->toWorld(glm::dvec3(i, j, k)));
+                    splat.color = glm::vec3(voxel);
+                    splat.extinction = voxel.w;
+                    splats.add(splat);
+                }
+            }
+        }
+        benchmark::DoNotOptimize(splats.splats().data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(splats.size()));
+    state.counters["splats"] = static_cast<double>(splats.size());
+}
+BENCHMARK(EmitVoxelSplatsBaselineMemoryOrder)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// The slice order's walk alone (no emission).
+void SliceOrderWalk(benchmark::State& state) {
+    const auto grid = classifiedMarschnerLobb(static_cast<int>(state.range(0)));
+    const View view = obliqueView();
+    for (auto _ : state) {
+        const texsplat::octree::SliceOrder order(*grid, view);
+        std::uint64_t sum = 0;
+        order.forEach([&](std::uint64_t index, const glm::u64vec3&) { sum += index; });
+        benchmark::DoNotOptimize(sum);
+    }
+    state.SetItemsProcessed(state.iterations() *
+                            static_cast<std::int64_t>(grid->voxelCount()));
+}
+BENCHMARK(SliceOrderWalk)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+void OctreeBuild(benchmark::State& state) {
+    const auto grid = classifiedMarschnerLobb(static_cast<int>(state.range(0)));
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(std::make_unique<texsplat::octree::Octree>(grid));
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(grid->voxelCount()));
+}
+BENCHMARK(OctreeBuild)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+
+// The cut a splat budget reaches from the root, and its back-to-front emission.
+void OctreeBudgetCutEmit(benchmark::State& state) {
+    const auto grid = classifiedMarschnerLobb(128);
+    const texsplat::octree::Octree octree(grid);
+    const View view = obliqueView();
+    SplatList splats;
+    for (auto _ : state) {
+        texsplat::octree::Refiner refiner(octree, view);
+        texsplat::octree::RefineBudget budget;
+        budget.maxSplats = static_cast<std::uint64_t>(state.range(0));
+        refiner.refine(budget);
+        texsplat::octree::emitSplats(refiner.cut(), view, splats);
+        benchmark::DoNotOptimize(splats.splats().data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(splats.size()));
+}
+BENCHMARK(OctreeBudgetCutEmit)->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+
+} // namespace
