@@ -15,26 +15,8 @@ using texsplat::test::runTexsplat;
 
 namespace {
 
-class BenchCommandTest : public ::testing::Test {
+class BenchCommandTest : public texsplat::test::ScratchDirectoryTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDirectory = fs::path(::testing::TempDir()) /
-                     ("texsplat_bench_" + std::to_string(getpid()) + "_" + info->name());
-        fs::remove_all(mDirectory);
-        fs::create_directories(mDirectory);
-    }
-    void TearDown() override { fs::remove_all(mDirectory); }
-
-    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
-
-    static std::string read(const std::string& file) {
-        std::ifstream stream(file, std::ios::binary);
-        std::ostringstream text;
-        text << stream.rdbuf();
-        return text.str();
-    }
-
     // The parts between separators; a trailing empty part counts for fields, not for lines.
     static std::vector<std::string> split(const std::string& text, char separator) {
         std::vector<std::string> parts;
@@ -46,9 +28,6 @@ protected:
             parts.emplace_back();
         return parts;
     }
-
-private:
-    fs::path mDirectory;
 };
 
 TEST_F(BenchCommandTest, printsTheTableAndWritesCsvAndPlot) {

@@ -16,16 +16,12 @@ namespace {
 
 /// Writes a reference and test image pair into a fresh directory: the test image's R channel is
 /// 1/8 above the reference everywhere, and one pixel of it differs by 0.5 in B.
-class CompareCommandTest : public ::testing::Test {
+class CompareCommandTest : public texsplat::test::ScratchDirectoryTest {
 protected:
     void SetUp() override {
         if (!texsplat::image::isExrSupported())
             GTEST_SKIP() << "built without OpenEXR";
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDirectory = fs::path(::testing::TempDir()) /
-                     ("texsplat_compare_" + std::to_string(getpid()) + "_" + info->name());
-        fs::remove_all(mDirectory);
-        fs::create_directories(mDirectory);
+        ScratchDirectoryTest::SetUp();
         Image reference(8, 4);
         Image test(8, 4);
         reference.fill({0.25f, 0.5f, 0.5f, 1.0f});
@@ -37,13 +33,6 @@ protected:
         texsplat::image::writeImage(test, path("nan.exr"));
         texsplat::image::writeImage(Image(8, 3), path("small.exr"));
     }
-    void TearDown() override {
-        if (!mDirectory.empty())
-            fs::remove_all(mDirectory);
-    }
-    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
-
-    fs::path mDirectory;
 };
 
 } // namespace

@@ -15,33 +15,7 @@ using texsplat::test::runTexsplat;
 
 namespace {
 
-class InfoCommandTest : public ::testing::Test {
-protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDirectory = fs::path(::testing::TempDir()) /
-                     ("texsplat_info_" + std::to_string(getpid()) + "_" + info->name());
-        fs::remove_all(mDirectory);
-        fs::create_directories(mDirectory);
-    }
-    void TearDown() override { fs::remove_all(mDirectory); }
-
-    std::string write(const std::string& name, const std::string& text) const {
-        const std::string path = (mDirectory / name).string();
-        std::ofstream(path, std::ios::binary) << text;
-        return path;
-    }
-
-    static std::string read(const std::string& path) {
-        std::ifstream file(path, std::ios::binary);
-        std::ostringstream text;
-        text << file.rdbuf();
-        return text.str();
-    }
-
-private:
-    fs::path mDirectory;
-};
+class InfoCommandTest : public texsplat::test::ScratchDirectoryTest {};
 
 TEST_F(InfoCommandTest, printsTheGraphWithItsNonDefaultFields) {
     const std::string path = write("scene.iv", R"(#Inventor V2.1 ascii

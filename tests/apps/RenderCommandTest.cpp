@@ -15,19 +15,8 @@ using texsplat::test::runTexsplat;
 
 namespace {
 
-class RenderCommandTest : public ::testing::Test {
+class RenderCommandTest : public texsplat::test::ScratchDirectoryTest {
 protected:
-    void SetUp() override {
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDirectory = fs::path(::testing::TempDir()) /
-                     ("texsplat_render_" + std::to_string(getpid()) + "_" + info->name());
-        fs::remove_all(mDirectory);
-        fs::create_directories(mDirectory);
-    }
-    void TearDown() override { fs::remove_all(mDirectory); }
-
-    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
-
     // A small scene file: a 12^3 blob as texture splats, no camera.
     std::string writeScene(const std::string& extra = "") const {
         const std::string scene = path("blob.iv");
@@ -47,8 +36,6 @@ protected:
         EXPECT_EQ(result.standardError, "texsplat: error: " + message + "\n");
         EXPECT_FALSE(fs::exists(output));
     }
-
-    fs::path mDirectory;
 };
 
 TEST_F(RenderCommandTest, rendersTheDefaultSceneAndReportsItsTimes) {

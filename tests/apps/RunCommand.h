@@ -4,6 +4,9 @@
 
 #include <array>
 #include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -43,5 +46,44 @@ inline CommandOutput runTexsplat(const std::string& arguments) {
     std::remove(errorFile.c_str());
     return output;
 }
+
+/// @brief A test with a scratch directory of its own, named after the process and the test
+/// (ctest runs tests in parallel processes), removed when the test ends.
+class ScratchDirectoryTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        mDirectory = std::filesystem::path(::testing::TempDir()) /
+                     ("texsplat_" + std::string(info->test_suite_name()) + "_" +
+                      std::to_string(getpid()) + "_" + info->name());
+        std::filesystem::remove_all(mDirectory);
+        std::filesystem::create_directories(mDirectory);
+    }
+    void TearDown() override {
+        if (!mDirectory.empty())
+            std::filesystem::remove_all(mDirectory);
+    }
+
+    /// @brief The path of `name` in the scratch directory.
+    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
+
+    /// @brief Writes `text` to `name` in the scratch directory and returns its path.
+    std::string write(const std::string& name, const std::string& text) const {
+        const std::string file = path(name);
+        std::ofstream(file, std::ios::binary) << text;
+        return file;
+    }
+
+    /// @brief The whole content of `file` (empty when it cannot be read).
+    static std::string read(const std::string& file) {
+        std::ifstream stream(file, std::ios::binary);
+        std::ostringstream text;
+        text << stream.rdbuf();
+        return text.str();
+    }
+
+private:
+    std::filesystem::path mDirectory;
+};
 
 } // namespace texsplat::test
