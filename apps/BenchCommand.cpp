@@ -1,4 +1,5 @@
 #include "apps/Commands.h"
+#include "apps/SceneSetup.h"
 
 #include "nodes/bench/BenchReport.h"
 #include "nodes/bench/BenchRunner.h"
@@ -32,26 +33,6 @@ struct BenchArguments {
     std::string csv;
     std::string plot;
 };
-
-// "WxH" with whole numbers from 1 to 16384.
-glm::ivec2 parseSize(const std::string& text) {
-    const std::size_t x = text.find('x');
-    const auto whole = [](const std::string& part, int& value) {
-        if (part.empty() || part.size() > 5 ||
-            !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) {
-            return false;
-        }
-        value = std::stoi(part);
-        return value >= 1 && value <= 16384;
-    };
-    glm::ivec2 size(0);
-    if (x == std::string::npos || !whole(text.substr(0, x), size.x) ||
-        !whole(text.substr(x + 1), size.y)) {
-        throw DataError("--size: expected WxH with whole numbers from 1 to 16384, got '" + text +
-                        "'");
-    }
-    return size;
-}
 
 std::vector<glm::ivec2> parseSizes(const std::string& text) {
     std::vector<glm::ivec2> sizes;

@@ -1,34 +1,20 @@
 #include "apps/Commands.h"
+#include "apps/SceneSetup.h"
 
-#include "nodes/Camera.h"
-#include "nodes/DefaultScene.h"
-#include "nodes/NodeTypes.h"
-#include "nodes/OrthographicCamera.h"
-#include "nodes/PerspectiveCamera.h"
 #include "nodes/image/ImageIo.h"
-#include "nodes/render/CameraView.h"
 #include "nodes/render/RayCastImage.h"
 #include "nodes/render/RenderedImage.h"
 #include "scenegraph/Error.h"
-#include "scenegraph/NodeRegistry.h"
-#include "scenegraph/Separator.h"
-#include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/actions/RenderAction.h"
-#include "scenegraph/actions/SearchAction.h"
-#include "scenegraph/engines/EngineTypes.h"
 #include "scenegraph/gl/EglContext.h"
-#include "scenegraph/io/SceneReader.h"
 
 #include <CLI/CLI.hpp>
 
-#include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <thread>
 
@@ -43,9 +29,6 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-// The default scene is seen from the side, its funnel (the tornado's z axis) upright.
-const glm::vec3 kDefaultSceneDirection(0.0f, 1.0f, -0.25f);
-
 struct RenderArguments {
     std::string scene;
     std::string output;
@@ -56,88 +39,6 @@ struct RenderArguments {
     bool rayCast = false;
     float rayCastStep = sg::RayCastAction::kDefaultStepSize;
 };
-
-// "WxH" with whole numbers from 1 to 16384 (beyond any GL framebuffer limit we could meet).
-glm::ivec2 parseSize(const std::string& text) {
-    const std::size_t x = text.find('x');
-    const auto whole = [](const std::string& part, int& value) {
-        if (part.empty() || part.size() > 5 ||
-            !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) {
-            return false;
-        }
-        value = std::stoi(part);
-        return value >= 1 && value <= 16384;
-    };
-    glm::ivec2 size(0);
-    if (x == std::string::npos || !whole(text.substr(0, x), size.x) ||
-        !whole(text.substr(x + 1), size.y)) {
-        throw DataError("--size: expected WxH with whole numbers from 1 to 16384, got '" + text +
-                        "'");
-    }
-    return size;
-}
-
-// "x,y,z", finite and not zero.
-glm::vec3 parseDirection(const std::string& text) {
-    std::istringstream stream(text);
-    glm::vec3 direction(0.0f);
-    char comma1 = 0;
-    char comma2 = 0;
-    stream >> direction.x >> comma1 >> direction.y >> comma2 >> direction.z;
-    const bool finite = std::isfinite(direction.x) && std::isfinite(direction.y) &&
-                        std::isfinite(direction.z);
-    if (!stream || comma1 != ',' || comma2 != ',' || !(stream >> std::ws).eof() || !finite ||
-        direction == glm::vec3(0.0f)) {
-        throw DataError("--direction: expected three numbers x,y,z not all zero, got '" + text +
-                        "'");
-    }
-    return direction;
-}
-
-const nodes::Camera* findCamera(sg::Node& scene) {
-    sg::SearchAction search;
-    search.setType(nodes::Camera::classType());
-    search.setInterest(sg::SearchAction::Interest::First);
-    search.apply(scene);
-    return search.paths().empty() ? nullptr
-                                  : static_cast<const nodes::Camera*>(search.paths().front().tail().get());
-}
-
-// The scene as drawn: as it is when it has a camera, else under a camera that frames it.
-sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const RenderArguments& arguments,
-                         float aspect) {
-    if (const nodes::Camera* camera = findCamera(*scene)) {
-        if (!arguments.camera.empty() || !arguments.direction.empty()) {
-            throw DataError("--direction/--camera: the scene has its own camera (" +
-                            camera->describe() + "); they frame scenes without one");
-        }
-        return scene;
-    }
-    nodes::Camera::Ptr camera;
-    if (arguments.camera.empty() || arguments.camera == "perspective") {
-        camera = nodes::PerspectiveCamera::create();
-    } else if (arguments.camera == "orthographic") {
-        camera = nodes::OrthographicCamera::create();
-    } else {
-        throw DataError("--camera: expected 'perspective' or 'orthographic', got '" +
-                        arguments.camera + "'");
-    }
-    const glm::vec3 direction = !arguments.direction.empty() ? parseDirection(arguments.direction)
-                                : arguments.scene.empty()    ? kDefaultSceneDirection
-                                                             : glm::vec3(0.0f, 0.0f, -1.0f);
-    camera->orientation.setValue(render::rotationLookingAlong(direction));
-    sg::BoundingBoxAction box;
-    box.apply(*scene);
-    if (box.boundingBox().isEmpty()) {
-        throw DataError((arguments.scene.empty() ? std::string("default scene") : arguments.scene) +
-                        ": nothing to frame (the scene has no geometry and no camera)");
-    }
-    camera->viewAll(box.boundingBox(), aspect);
-    sg::Separator::Ptr root = sg::Separator::create();
-    root->addChild(camera);
-    root->addChild(scene);
-    return root;
-}
 
 void printTimes(const sg::RenderStatistics& statistics, double readScene, double context,
                 const gl::ContextInfo& contextInfo, double write) {
@@ -210,16 +111,12 @@ void runRender(const RenderArguments& arguments) {
     if (format == image::ImageFormat::Exr && !image::isExrSupported()) {
         throw IoError(arguments.output + ": this build has no OpenEXR support");
     }
-    nodes::registerNodeTypes();
-    sg::registerEngineTypes(sg::NodeRegistry::instance());
-
     Clock::time_point start = Clock::now();
-    const sg::Node::Ptr scene = arguments.scene.empty()
-                                    ? sg::Node::Ptr(nodes::makeDefaultScene())
-                                    : sg::SceneReader::readFile(arguments.scene);
+    const sg::Node::Ptr scene = loadScene(arguments.scene);
     const double readScene = secondsSince(start);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
-    const sg::Node::Ptr root = withCamera(scene, arguments, aspect);
+    const sg::Node::Ptr root =
+        withCamera(scene, Framing{arguments.scene, arguments.camera, arguments.direction}, aspect);
 
     if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
         throw DataError("--raycast-step: only with --raycast");

@@ -1,0 +1,115 @@
+#include "apps/SceneSetup.h"
+
+#include "nodes/Camera.h"
+#include "nodes/DefaultScene.h"
+#include "nodes/NodeTypes.h"
+#include "nodes/OrthographicCamera.h"
+#include "nodes/PerspectiveCamera.h"
+#include "nodes/render/CameraView.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/NodeRegistry.h"
+#include "scenegraph/Separator.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/engines/EngineTypes.h"
+#include "scenegraph/io/SceneReader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace texsplat::apps {
+namespace {
+
+// The default scene is seen from the side, its funnel (the tornado's z axis) upright.
+const glm::vec3 kDefaultSceneDirection(0.0f, 1.0f, -0.25f);
+
+const nodes::Camera* findCamera(sg::Node& scene) {
+    sg::SearchAction search;
+    search.setType(nodes::Camera::classType());
+    search.setInterest(sg::SearchAction::Interest::First);
+    search.apply(scene);
+    return search.paths().empty()
+               ? nullptr
+               : static_cast<const nodes::Camera*>(search.paths().front().tail().get());
+}
+
+} // namespace
+
+glm::ivec2 parseSize(const std::string& text, const std::string& option) {
+    const std::size_t x = text.find('x');
+    const auto whole = [](const std::string& part, int& value) {
+        if (part.empty() || part.size() > 5 ||
+            !std::all_of(part.begin(), part.end(), [](char c) { return c >= '0' && c <= '9'; })) {
+            return false;
+        }
+        value = std::stoi(part);
+        return value >= 1 && value <= 16384;
+    };
+    glm::ivec2 size(0);
+    if (x == std::string::npos || !whole(text.substr(0, x), size.x) ||
+        !whole(text.substr(x + 1), size.y)) {
+        throw DataError(option + ": expected WxH with whole numbers from 1 to 16384, got '" +
+                        text + "'");
+    }
+    return size;
+}
+
+glm::vec3 parseDirection(const std::string& text) {
+    std::istringstream stream(text);
+    glm::vec3 direction(0.0f);
+    char comma1 = 0;
+    char comma2 = 0;
+    stream >> direction.x >> comma1 >> direction.y >> comma2 >> direction.z;
+    const bool finite = std::isfinite(direction.x) && std::isfinite(direction.y) &&
+                        std::isfinite(direction.z);
+    if (!stream || comma1 != ',' || comma2 != ',' || !(stream >> std::ws).eof() || !finite ||
+        direction == glm::vec3(0.0f)) {
+        throw DataError("--direction: expected three numbers x,y,z not all zero, got '" + text +
+                        "'");
+    }
+    return direction;
+}
+
+sg::Node::Ptr loadScene(const std::string& path) {
+    nodes::registerNodeTypes();
+    sg::registerEngineTypes(sg::NodeRegistry::instance());
+    return path.empty() ? sg::Node::Ptr(nodes::makeDefaultScene()) : sg::SceneReader::readFile(path);
+}
+
+sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect) {
+    if (const nodes::Camera* camera = findCamera(*scene)) {
+        if (!framing.camera.empty() || !framing.direction.empty()) {
+            throw DataError("--direction/--camera: the scene has its own camera (" +
+                            camera->describe() + "); they frame scenes without one");
+        }
+        return scene;
+    }
+    nodes::Camera::Ptr camera;
+    if (framing.camera.empty() || framing.camera == "perspective") {
+        camera = nodes::PerspectiveCamera::create();
+    } else if (framing.camera == "orthographic") {
+        camera = nodes::OrthographicCamera::create();
+    } else {
+        throw DataError("--camera: expected 'perspective' or 'orthographic', got '" +
+                        framing.camera + "'");
+    }
+    const glm::vec3 direction = !framing.direction.empty() ? parseDirection(framing.direction)
+                                : framing.sceneName.empty() ? kDefaultSceneDirection
+                                                            : glm::vec3(0.0f, 0.0f, -1.0f);
+    camera->orientation.setValue(render::rotationLookingAlong(direction));
+    sg::BoundingBoxAction box;
+    box.apply(*scene);
+    if (box.boundingBox().isEmpty()) {
+        throw DataError((framing.sceneName.empty() ? std::string("default scene")
+                                                   : framing.sceneName) +
+                        ": nothing to frame (the scene has no geometry and no camera)");
+    }
+    camera->viewAll(box.boundingBox(), aspect);
+    sg::Separator::Ptr root = sg::Separator::create();
+    root->addChild(camera);
+    root->addChild(scene);
+    return root;
+}
+
+} // namespace texsplat::apps

@@ -1,0 +1,37 @@
+#pragma once
+
+#include "scenegraph/Node.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <string>
+
+namespace texsplat::apps {
+
+/// @brief "WxH" with whole numbers from 1 to 16384 (beyond any GL framebuffer limit we could
+/// meet). Throws DataError naming `option` otherwise.
+glm::ivec2 parseSize(const std::string& text, const std::string& option = "--size");
+
+/// @brief "x,y,z", finite and not all zero. Throws DataError naming --direction otherwise.
+glm::vec3 parseDirection(const std::string& text);
+
+/// @brief Registers every node and engine type, then reads `path`, or builds the built-in
+/// default scene (the tornado with fibres) when `path` is empty.
+sg::Node::Ptr loadScene(const std::string& path);
+
+/// @brief How to frame a scene that has no camera of its own (the --camera and --direction
+/// options of `render` and `view`).
+struct Framing {
+    std::string sceneName; ///< the scene file ("" for the default scene), for messages
+    std::string camera;    ///< "perspective" (default when empty) or "orthographic"
+    std::string direction; ///< "x,y,z" viewing direction; empty: the scene's usual one
+};
+
+/// @brief The scene as drawn: `scene` itself when it has a camera (then `framing` must not ask
+/// for one), else a Separator holding a new camera that frames the scene's bounding box for a
+/// viewport of `aspect`, then the scene.
+/// @throws DataError for a bad option, or a scene with neither geometry nor camera.
+sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect);
+
+} // namespace texsplat::apps
