@@ -35,4 +35,8 @@ void addRenderCommand(CLI::App& app, int& exitCode);
 /// each splat method; table, CSV and an SVG plot).
 void addBenchCommand(CLI::App& app, int& exitCode);
 
+/// @brief Adds `texsplat view` (the interactive GLFW viewer); only in builds with
+/// TEXSPLAT_WITH_VIEWER.
+void addViewCommand(CLI::App& app, int& exitCode);
+
 } // namespace texsplat::apps

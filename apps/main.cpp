@@ -16,6 +16,9 @@ int main(int argc, char** argv) {
     addCompareCommand(app, exitCode);
     addRenderCommand(app, exitCode);
     addBenchCommand(app, exitCode);
+#ifdef TEXSPLAT_WITH_VIEWER
+    addViewCommand(app, exitCode);
+#endif
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

@@ -9,7 +9,7 @@ packages=(
     libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libopenexr-dev libstb-dev
     libcli11-dev libglfw3-dev libimgui-dev
     libgtest-dev libbenchmark-dev libcoin-dev
-    clang libclang-rt-14-dev xvfb
+    clang libclang-rt-14-dev xvfb xauth
 )
 apt-get update
 apt-get install -y --no-install-recommends "${packages[@]}"

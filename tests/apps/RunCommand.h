@@ -20,14 +20,16 @@ struct CommandOutput {
     std::string standardError;
 };
 
-/// @brief Runs `texsplat <arguments>` through the shell (arguments are passed as written) and
-/// captures stdout and stderr separately. ctest runs tests in parallel processes, so the file
+/// @brief Runs `<launcher> texsplat <arguments>` through the shell (arguments are passed as
+/// written; `launcher`, e.g. "xvfb-run -a", may be empty) and captures stdout and stderr
+/// separately. ctest runs tests in parallel processes, so the file
 /// that catches stderr is named after this process.
-inline CommandOutput runTexsplat(const std::string& arguments) {
+inline CommandOutput runTexsplat(const std::string& arguments,
+                                 const std::string& launcher = "") {
     const std::string errorFile =
         ::testing::TempDir() + "texsplat_stderr_" + std::to_string(getpid()) + ".txt";
     const std::string command =
-        std::string(TEXSPLAT_EXECUTABLE) + " " + arguments + " 2>" + errorFile;
+        launcher + " " + TEXSPLAT_EXECUTABLE + " " + arguments + " 2>" + errorFile;
     CommandOutput output;
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe)

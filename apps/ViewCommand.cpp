@@ -1,0 +1,55 @@
+#include "apps/Commands.h"
+
+#include "apps/SceneSetup.h"
+#include "apps/viewer/Viewer.h"
+
+#include <CLI/CLI.hpp>
+
+#include <memory>
+#include <string>
+
+namespace texsplat::apps {
+namespace {
+
+struct ViewArguments {
+    ViewerOptions options;
+    std::string size = "960x720";
+};
+
+} // namespace
+
+void addViewCommand(CLI::App& app, int& exitCode) {
+    auto arguments = std::make_shared<ViewArguments>();
+    ViewerOptions& options = arguments->options;
+    CLI::App* command = app.add_subcommand(
+        "view", "Explore a scene (or the built-in tornado scene) in a window: drag to orbit, "
+                "right-drag to pan, wheel to zoom; coarse while moving, refined while idle");
+    command->add_option("scene", options.scene,
+                        "Inventor scene file (.iv); none: the built-in tornado with fibers");
+    command->add_option("--size", arguments->size, "Window size WxH")->capture_default_str();
+    command->add_option("--camera", options.framing.camera,
+                        "perspective|orthographic: the camera that frames a scene without one "
+                        "(default perspective)");
+    command->add_option("--direction", options.framing.direction,
+                        "x,y,z: viewing direction of that camera");
+    command->add_option("--interactive-splats", options.interactiveBudget,
+                        "Splat budget per splat node while the view moves")
+        ->capture_default_str()
+        ->check(CLI::Range(1, 1 << 30));
+    command->add_option("--frames", options.frames,
+                        "Close after this many frames (batch use and tests; 0: when closed)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1 << 30));
+    command->add_option("--screenshot", options.screenshot,
+                        "At the end, write the last rendered view (without the panel) as PNG "
+                        "or EXR");
+    command->callback([arguments, &exitCode] {
+        ViewerOptions viewerOptions = arguments->options;
+        viewerOptions.framing.sceneName = viewerOptions.scene;
+        viewerOptions.size = parseSize(arguments->size);
+        Viewer(viewerOptions).run();
+        exitCode = kExitOk;
+    });
+}
+
+} // namespace texsplat::apps

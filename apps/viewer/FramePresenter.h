@@ -1,0 +1,34 @@
+#pragma once
+
+#include "scenegraph/gl/Program.h"
+#include "scenegraph/gl/VertexArray.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace texsplat::gl {
+class Framebuffer;
+} // namespace texsplat::gl
+
+namespace texsplat::apps {
+
+/// @brief Shows a RenderAction's float framebuffer in the window: the premultiplied linear
+/// color composited over a background, encoded to sRGB, as `texsplat render` writes its PNGs,
+/// so the window and the files look alike. One full-screen triangle, no blending.
+///
+/// Created and used with the window's context current (it holds GL objects).
+class FramePresenter {
+public:
+    FramePresenter();
+
+    /// @brief Draws `frame` over `background` (linear RGB) into the default framebuffer of size
+    /// `windowSize`, scaled to fill it.
+    void present(const gl::Framebuffer& frame, const glm::vec3& background,
+                 const glm::ivec2& windowSize);
+
+private:
+    gl::Program mProgram;
+    gl::VertexArray mEmpty; // core profiles draw only with a bound vertex array
+};
+
+} // namespace texsplat::apps

@@ -1,0 +1,62 @@
+#pragma once
+
+#include "scenegraph/Node.h"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace texsplat::nodes {
+class ScalarSplat;
+} // namespace texsplat::nodes
+
+namespace texsplat::apps {
+
+/// @brief Laur & Hanrahan's progressive refinement for the viewer: while the user moves the
+/// view, every splat node of the scene draws the octree cut of a small splat budget; once the
+/// user lets go, each idle step quadruples the budget until the cut holds everything the
+/// scene's own settings ask for, which are then restored.
+///
+/// It works through the splat nodes' `maxSplats` field (ScalarSplat), so the octree picks the
+/// cut and the scene graph notices each change like any other edit.
+class ProgressiveRefinement {
+public:
+    /// @brief The refinement state, for the viewer's panel.
+    enum class Stage { FullQuality, Interactive, Refining };
+
+    /// @brief Finds the splat nodes under `root` and remembers their `maxSplats`.
+    ProgressiveRefinement(sg::Node& root, std::int32_t interactiveBudget);
+
+    /// @brief The user moves the view: draw with the interactive budget (once per gesture).
+    void beginInteraction();
+
+    /// @brief One refinement step after a frame that drew `splatsDrawn` splats; returns true
+    /// while more steps are left (the caller schedules the next one when idle).
+    bool refine(std::size_t splatsDrawn);
+
+    /// @brief Where the refinement stands.
+    Stage stage() const { return mStage; }
+
+    /// @brief The budget in force (0 in FullQuality: the scene's own settings).
+    std::int32_t budget() const { return mStage == Stage::FullQuality ? 0 : mBudget; }
+
+    /// @brief The splat budget used while the view moves.
+    std::int32_t interactiveBudget() const { return mInteractiveBudget; }
+
+    /// @brief Changes the interactive budget (at least 1).
+    void setInteractiveBudget(std::int32_t budget);
+
+    /// @brief True when the scene has splat nodes to refine.
+    bool hasSplatNodes() const { return !mSplats.empty(); }
+
+private:
+    void apply(std::int32_t budget);
+    void restore();
+
+    std::vector<std::pair<std::shared_ptr<nodes::ScalarSplat>, std::int32_t>> mSplats;
+    std::int32_t mInteractiveBudget;
+    std::int32_t mBudget = 0;
+    Stage mStage = Stage::FullQuality;
+};
+
+} // namespace texsplat::apps

@@ -1,0 +1,184 @@
+#include "apps/viewer/Viewer.h"
+
+#include "apps/viewer/FramePresenter.h"
+#include "apps/viewer/GlfwWindow.h"
+#include "apps/viewer/OrbitController.h"
+#include "apps/viewer/ProgressiveRefinement.h"
+#include "apps/viewer/ViewerPanel.h"
+#include "nodes/Camera.h"
+#include "nodes/image/ImageIo.h"
+#include "nodes/render/RenderedImage.h"
+#include "scenegraph/Assert.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/engines/TimeInputs.h"
+#include "scenegraph/sensors/IdleSensor.h"
+#include "scenegraph/sensors/NodeSensor.h"
+#include "scenegraph/sensors/RealTimeClock.h"
+#include "scenegraph/sensors/SensorQueue.h"
+
+#include <epoxy/gl.h>
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+namespace texsplat::apps {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Mouse state between frames; the scroll wheel arrives through a callback.
+struct Pointer {
+    glm::dvec2 last{0.0};
+    bool wasDragging = false;
+    double scroll = 0.0;
+};
+
+void onScroll(GLFWwindow* window, double /*x*/, double y) {
+    static_cast<Pointer*>(glfwGetWindowUserPointer(window))->scroll += y;
+}
+
+nodes::Camera& cameraOf(sg::Node& root) {
+    sg::SearchAction search;
+    search.setType(nodes::Camera::classType());
+    search.apply(root);
+    TEXSPLAT_ASSERT(!search.paths().empty(), "Viewer: withCamera() gives every scene a camera");
+    return static_cast<nodes::Camera&>(*search.paths().front().tail());
+}
+
+std::string title(const ViewerOptions& options) {
+    return "texsplat view: " + (options.scene.empty() ? std::string("default scene") : options.scene);
+}
+
+} // namespace
+
+Viewer::Viewer(ViewerOptions options) : mOptions(std::move(options)) {
+    const float aspect = static_cast<float>(mOptions.size.x) / static_cast<float>(mOptions.size.y);
+    mScene = withCamera(loadScene(mOptions.scene), mOptions.framing, aspect);
+    if (!mOptions.screenshot.empty()) {
+        // Refuse a bad file name before the window opens.
+        image::imageFormatOf(mOptions.screenshot);
+    }
+}
+
+void Viewer::run() {
+    sg::Node& root = *mScene;
+    GlfwWindow window(mOptions.size, title(mOptions));
+    Pointer pointer;
+    glfwSetWindowUserPointer(window.handle(), &pointer);
+    glfwSetScrollCallback(window.handle(), onScroll); // before ImGui, which chains to it
+
+    sg::BoundingBoxAction boxAction;
+    boxAction.apply(root);
+    OrbitController controller(cameraOf(root), boxAction.boundingBox());
+    ProgressiveRefinement refinement(root, mOptions.interactiveBudget);
+
+    sg::RealTimeClock clock;
+    sg::SensorQueue queue(clock);
+    sg::connectTimeInputs(root, queue.timeField());
+    bool needsRender = true;
+    sg::NodeSensor changed(queue, [&] { needsRender = true; });
+    changed.attach(root);
+    std::size_t lastSplats = 0;
+    sg::IdleSensor refineStep(queue);
+    refineStep.setCallback([&] {
+        if (refinement.refine(lastSplats)) {
+            refineStep.schedule();
+        }
+    });
+
+    FramePresenter presenter;
+    ViewerPanel panel(window.handle());
+    std::unique_ptr<sg::RenderAction> action;
+    PanelReport report;
+    report.renderer = window.info().summary();
+
+    for (int frame = 0; !window.shouldClose(); ++frame) {
+        if (mOptions.frames > 0 && frame >= mOptions.frames) {
+            break;
+        }
+        const bool busy = needsRender || queue.hasDelaySensors() || queue.hasIdleSensors();
+        if (mOptions.frames > 0 || busy) {
+            glfwPollEvents();
+        } else {
+            // Nothing to do until an event or the next timer (animation).
+            const auto next = queue.nextTimerTime();
+            glfwWaitEventsTimeout(next ? std::clamp(*next - queue.time(), 0.0, 0.5) : 0.5);
+        }
+
+        // Input: keys, then the pointer (unless the panel has it).
+        GLFWwindow* handle = window.handle();
+        if (glfwGetKey(handle, GLFW_KEY_ESCAPE) == GLFW_PRESS ||
+            glfwGetKey(handle, GLFW_KEY_Q) == GLFW_PRESS) {
+            window.requestClose();
+        }
+        if (glfwGetKey(handle, GLFW_KEY_R) == GLFW_PRESS) {
+            controller.reset();
+        }
+        glm::dvec2 cursor(0.0);
+        glfwGetCursorPos(handle, &cursor.x, &cursor.y);
+        const bool orbiting = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        const bool panning = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS ||
+                             glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
+        const bool dragging = (orbiting || panning) && (pointer.wasDragging || !panel.wantsMouse());
+        const glm::ivec2 size = window.framebufferSize();
+        if (dragging && pointer.wasDragging && cursor != pointer.last) {
+            refinement.beginInteraction();
+            const glm::vec2 delta(cursor - pointer.last);
+            if (orbiting) {
+                controller.orbit(delta, static_cast<float>(size.y));
+            } else {
+                controller.pan(delta, static_cast<float>(size.y));
+            }
+        }
+        if (pointer.wasDragging && !dragging) {
+            refineStep.schedule();
+        }
+        if (pointer.scroll != 0.0 && !panel.wantsMouse()) {
+            refinement.beginInteraction();
+            controller.zoom(static_cast<float>(pointer.scroll));
+            refineStep.schedule();
+        }
+        pointer.scroll = 0.0;
+        pointer.wasDragging = dragging;
+        pointer.last = cursor;
+
+        queue.process(); // timers (animation), then the change sensor, then a refinement step
+
+        if (size.x <= 0 || size.y <= 0) {
+            continue; // minimized
+        }
+        if (!action || action->framebuffer().width() != size.x ||
+            action->framebuffer().height() != size.y) {
+            action = std::make_unique<sg::RenderAction>(size.x, size.y);
+            action->setBackground(glm::vec4(mOptions.background, 1.0f));
+            needsRender = true;
+        }
+        if (needsRender) {
+            needsRender = false;
+            const Clock::time_point start = Clock::now();
+            action->render(root);
+            report.frameSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+            lastSplats = action->statistics().splats;
+            report.splats = lastSplats;
+            report.triangles = action->statistics().triangles;
+        }
+        report.stage = refinement.stage();
+        report.budget = refinement.budget();
+        presenter.present(action->framebuffer(), mOptions.background, size);
+        panel.draw(report, refinement);
+        window.swapBuffers();
+    }
+
+    if (!mOptions.screenshot.empty() && action) {
+        image::writeImage(render::renderedImage(*action), mOptions.screenshot);
+    }
+}
+
+} // namespace texsplat::apps

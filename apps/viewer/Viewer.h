@@ -1,0 +1,47 @@
+#pragma once
+
+#include "apps/SceneSetup.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <cstdint>
+#include <string>
+
+namespace texsplat::apps {
+
+/// @brief What `texsplat view` was asked for.
+struct ViewerOptions {
+    std::string scene;                  ///< scene file; empty: the built-in default scene
+    Framing framing;                    ///< camera for a scene without one
+    glm::ivec2 size{960, 720};          ///< initial window size in pixels
+    int frames = 0;                     ///< stop after this many frames (0: when closed)
+    std::string screenshot;             ///< write the last frame here (PNG or EXR) at the end
+    std::int32_t interactiveBudget = 50000; ///< splats per node while the view moves
+    glm::vec3 background{0.02f, 0.02f, 0.025f}; ///< linear RGB behind the scene
+};
+
+/// @brief The interactive viewer: a GLFW window showing the scene as RenderAction draws it,
+/// with an examiner-style camera (OrbitController), Laur–Hanrahan progressive refinement
+/// (ProgressiveRefinement: coarse while the view moves, refined while idle), animation through
+/// a SensorQueue on the wall clock (the scene's engines follow its time), and an ImGui panel.
+///
+/// The loop sleeps until an event or the next timer when nothing changes, and re-renders the
+/// scene only after a change (a NodeSensor on the root), so an idle viewer costs nothing.
+class Viewer {
+public:
+    /// @brief Reads the scene (before any window opens, so a bad file is reported first).
+    /// @throws what loadScene() and withCamera() throw.
+    explicit Viewer(ViewerOptions options);
+
+    /// @brief Opens the window and runs until it is closed (or `frames` frames were shown),
+    /// then writes the screenshot if one was asked for.
+    /// @throws GlError when no window can be opened; what rendering throws.
+    void run();
+
+private:
+    ViewerOptions mOptions;
+    sg::Node::Ptr mScene;
+};
+
+} // namespace texsplat::apps

@@ -1,0 +1,86 @@
+#include "apps/viewer/ViewerPanel.h"
+
+#ifdef TEXSPLAT_VIEWER_PANEL
+#include <epoxy/gl.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+#endif
+
+namespace texsplat::apps {
+
+#ifdef TEXSPLAT_VIEWER_PANEL
+
+namespace {
+
+const char* stageName(ProgressiveRefinement::Stage stage) {
+    switch (stage) {
+    case ProgressiveRefinement::Stage::FullQuality:
+        return "full quality";
+    case ProgressiveRefinement::Stage::Interactive:
+        return "interactive (coarse octree cut)";
+    case ProgressiveRefinement::Stage::Refining:
+        return "refining while idle";
+    }
+    return "";
+}
+
+} // namespace
+
+ViewerPanel::ViewerPanel(GLFWwindow* window) : mWindow(window) {
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr; // no imgui.ini next to the user's files
+    ImGui::StyleColorsDark();
+    ImGui_ImplGlfw_InitForOpenGL(mWindow, true);
+    ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+ViewerPanel::~ViewerPanel() {
+    ImGui_ImplOpenGL3_Shutdown();
+    ImGui_ImplGlfw_Shutdown();
+    ImGui::DestroyContext();
+}
+
+bool ViewerPanel::isAvailable() { return true; }
+
+bool ViewerPanel::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
+
+void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinement) {
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+    ImGui::Begin("texsplat", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+    ImGui::TextUnformatted(report.renderer.c_str());
+    ImGui::Text("frame %.1f ms", 1000.0 * report.frameSeconds);
+    ImGui::Text("splats %zu, triangles %zu", report.splats, report.triangles);
+    ImGui::Text("%s", stageName(report.stage));
+    if (report.budget > 0) {
+        ImGui::SameLine();
+        ImGui::Text("(budget %d)", report.budget);
+    }
+    if (refinement.hasSplatNodes()) {
+        int budget = refinement.interactiveBudget();
+        if (ImGui::SliderInt("interactive splats", &budget, 1000, 1000000, "%d",
+                             ImGuiSliderFlags_Logarithmic)) {
+            refinement.setInteractiveBudget(budget);
+        }
+    }
+    ImGui::TextUnformatted("drag: orbit  right/middle drag: pan  wheel: zoom  r: reset  q: quit");
+    ImGui::End();
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+#else
+
+ViewerPanel::ViewerPanel(GLFWwindow* window) : mWindow(window) {}
+ViewerPanel::~ViewerPanel() = default;
+bool ViewerPanel::isAvailable() { return false; }
+bool ViewerPanel::wantsMouse() const { return false; }
+void ViewerPanel::draw(const PanelReport&, ProgressiveRefinement&) {}
+
+#endif
+
+} // namespace texsplat::apps

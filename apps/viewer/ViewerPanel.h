@@ -1,0 +1,49 @@
+#pragma once
+
+#include "apps/viewer/ProgressiveRefinement.h"
+
+#include <cstddef>
+#include <string>
+
+struct GLFWwindow;
+
+namespace texsplat::apps {
+
+/// @brief What the viewer's panel shows about the last frame.
+struct PanelReport {
+    std::string renderer;     ///< the GL context's summary
+    double frameSeconds = 0.0; ///< time of the last scene render (traversal to glFinish)
+    std::size_t splats = 0;    ///< splats of the last render
+    std::size_t triangles = 0; ///< opaque triangles of the last render
+    ProgressiveRefinement::Stage stage = ProgressiveRefinement::Stage::FullQuality;
+    std::int32_t budget = 0; ///< splat budget in force (0: the scene's own settings)
+};
+
+/// @brief The viewer's ImGui overlay: the last frame's statistics, the refinement state and a
+/// slider for the interactive splat budget. Built only when the ImGui GLFW and OpenGL 3
+/// backends are available (Debian ships them as sources with libimgui-dev); otherwise every
+/// call does nothing and the viewer runs without a panel.
+class ViewerPanel {
+public:
+    /// @brief Sets ImGui up on `window` (its context current); installs ImGui's input
+    /// callbacks, which chain to those the window had.
+    explicit ViewerPanel(GLFWwindow* window);
+    ~ViewerPanel();
+
+    ViewerPanel(const ViewerPanel&) = delete;
+    ViewerPanel& operator=(const ViewerPanel&) = delete;
+
+    /// @brief True when the panel is built into this texsplat.
+    static bool isAvailable();
+
+    /// @brief True while the pointer is over the panel (the view must not take the drag).
+    bool wantsMouse() const;
+
+    /// @brief Draws the panel over the frame; may change the refinement's interactive budget.
+    void draw(const PanelReport& report, ProgressiveRefinement& refinement);
+
+private:
+    GLFWwindow* mWindow;
+};
+
+} // namespace texsplat::apps

@@ -1,0 +1,81 @@
+#include "RunCommand.h"
+
+#include "nodes/image/Image.h"
+#include "nodes/image/ImageIo.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+using texsplat::test::runTexsplat;
+
+namespace {
+
+// The viewer needs a display: the tests give it a virtual one with Debian's xvfb-run.
+bool hasXvfbRun() { return std::system("command -v xvfb-run > /dev/null 2>&1") == 0; }
+
+const std::string kNoDisplay = "env -u DISPLAY -u WAYLAND_DISPLAY";
+
+class ViewCommandTest : public texsplat::test::ScratchDirectoryTest {
+protected:
+    void SetUp() override {
+#ifndef TEXSPLAT_WITH_VIEWER
+        GTEST_SKIP() << "built without the viewer (TEXSPLAT_WITH_VIEWER=OFF)";
+#endif
+        ScratchDirectoryTest::SetUp();
+    }
+};
+
+// One test starts Xvfb (parallel xvfb-run calls may race for a display number).
+TEST_F(ViewCommandTest, showsTheDefaultSceneInAWindowAndWritesItsLastFrame) {
+    if (!hasXvfbRun()) {
+        GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb)";
+    }
+    const std::string screenshot = path("view.png");
+    const auto output =
+        runTexsplat("view --frames 3 --size 96x80 --screenshot " + screenshot, "xvfb-run -a");
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    const texsplat::image::Image image = texsplat::image::readImage(screenshot);
+    ASSERT_EQ(image.width(), 96);
+    ASSERT_EQ(image.height(), 80);
+    // The tornado fills the middle of the view, far brighter than the dark background at the
+    // corner; the background is opaque, so the PNG is too.
+    const glm::vec4 corner = image.pixel(0, 0);
+    const glm::vec4 centre = image.pixel(48, 40);
+    EXPECT_LT(corner.r, 0.05f);
+    EXPECT_GT(centre.r, corner.r + 0.2f);
+    EXPECT_FLOAT_EQ(centre.a, 1.0f);
+}
+
+TEST_F(ViewCommandTest, withoutADisplayItSaysSoAndWritesNothing) {
+    const std::string screenshot = path("view.png");
+    const auto output =
+        runTexsplat("view --frames 1 --screenshot " + screenshot, kNoDisplay);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: cannot open a window: X11: The DISPLAY environment variable is "
+              "missing; no display (DISPLAY and WAYLAND_DISPLAY are unset); 'texsplat render' "
+              "makes images without a display\n");
+    EXPECT_FALSE(fs::exists(screenshot));
+}
+
+TEST_F(ViewCommandTest, badInputsAreReportedBeforeAWindowOpens) {
+    const std::string missing = path("missing.iv");
+    auto output = runTexsplat("view " + missing, kNoDisplay);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError.rfind("texsplat: error: " + missing + ": ", 0), 0u)
+        << output.standardError;
+    output = runTexsplat("view --size 0x10", kNoDisplay);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: --size: expected WxH with whole numbers from 1 to 16384, got "
+              "'0x10'\n");
+    output = runTexsplat("view --screenshot " + path("view.tiff"), kNoDisplay);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_NE(output.standardError.find("view.tiff"), std::string::npos) << output.standardError;
+}
+
+} // namespace
