@@ -4,6 +4,11 @@
 
 #include <epoxy/gl.h>
 
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
 namespace texsplat::apps {
 namespace {
 
@@ -33,6 +38,17 @@ void main() {
 }
 )";
 
+// The inverse of the shader's encodeSrgb for each 8-bit value.
+std::array<float, 256> srgbDecodeTable() {
+    std::array<float, 256> table{};
+    for (std::size_t i = 0; i < table.size(); ++i) {
+        const float encoded = static_cast<float>(i) / 255.0f;
+        table[i] = encoded <= 0.04045f ? encoded / 12.92f
+                                       : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+    }
+    return table;
+}
+
 } // namespace
 
 FramePresenter::FramePresenter() : mProgram("viewer present", kVertexShader, kFragmentShader) {}
@@ -49,6 +65,28 @@ void FramePresenter::present(const gl::Framebuffer& frame, const glm::vec3& back
     mProgram.setUniform("background", background);
     mEmpty.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+image::Image FramePresenter::readBack(const glm::ivec2& windowSize) {
+    const std::size_t width = static_cast<std::size_t>(windowSize.x);
+    std::vector<std::uint8_t> bytes(4 * width * static_cast<std::size_t>(windowSize.y));
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    glReadBuffer(GL_BACK);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, windowSize.x, windowSize.y, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+    static const std::array<float, 256> kDecode = srgbDecodeTable();
+    image::Image result(windowSize.x, windowSize.y);
+    for (int y = 0; y < windowSize.y; ++y) {
+        // GL's rows start at the bottom; the image's at the top.
+        const std::uint8_t* row =
+            bytes.data() + 4 * width * static_cast<std::size_t>(windowSize.y - 1 - y);
+        for (int x = 0; x < windowSize.x; ++x) {
+            const std::uint8_t* pixel = row + 4 * static_cast<std::size_t>(x);
+            const glm::vec3 linear(kDecode[pixel[0]], kDecode[pixel[1]], kDecode[pixel[2]]);
+            result.setPixel(x, y, glm::vec4(linear, 1.0f));
+        }
+    }
+    return result;
 }
 
 } // namespace texsplat::apps

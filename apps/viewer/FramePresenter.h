@@ -1,5 +1,6 @@
 #pragma once
 
+#include "nodes/image/Image.h"
 #include "scenegraph/gl/Program.h"
 #include "scenegraph/gl/VertexArray.h"
 
@@ -25,6 +26,11 @@ public:
     /// `windowSize`, scaled to fill it.
     void present(const gl::Framebuffer& frame, const glm::vec3& background,
                  const glm::ivec2& windowSize);
+
+    /// @brief Reads back what the window's default framebuffer holds now (its back buffer, of
+    /// size `windowSize`): the sRGB bytes the window shows, decoded to linear floats with alpha
+    /// 1, top row first, so that writing it as PNG gives those bytes again.
+    static image::Image readBack(const glm::ivec2& windowSize);
 
 private:
     gl::Program mProgram;

@@ -8,6 +8,9 @@
 #include <cstdlib>
 #include <string>
 
+#include <dlfcn.h>
+#include <link.h>
+
 namespace texsplat::apps {
 namespace {
 
@@ -26,6 +29,21 @@ std::string displayVariables() {
     }
     return std::string("DISPLAY=") + (display ? display : "(unset)") +
            ", WAYLAND_DISPLAY=" + (wayland ? wayland : "(unset)");
+}
+
+// GLFW and the GL driver unload the libraries they opened (the DRI driver, X extensions) when
+// the window closes, and their per-process caches then show up as leaks from an unknown
+// module. Keeping every library that is loaded once the context exists mapped until the process
+// ends lets leak checkers attribute those caches (tests/sanitizers/lsan.supp) and costs nothing.
+void keepLoadedLibrariesMapped() {
+    dl_iterate_phdr(
+        [](dl_phdr_info* info, std::size_t, void*) {
+            if (info->dlpi_name && info->dlpi_name[0] != '\0') {
+                dlopen(info->dlpi_name, RTLD_LAZY | RTLD_NOLOAD | RTLD_NODELETE);
+            }
+            return 0;
+        },
+        nullptr);
 }
 
 [[noreturn]] void fail(const std::string& what) {
@@ -51,6 +69,7 @@ GlfwWindow::GlfwWindow(const glm::ivec2& size, const std::string& title) {
         fail(reason + " (asked for an OpenGL 3.3 core context)");
     }
     makeCurrent();
+    keepLoadedLibrariesMapped();
     glfwSwapInterval(1);
     queryInfo("GLFW window");
 }

@@ -59,8 +59,8 @@ void OrbitController::pan(const glm::vec2& pixels, float viewportHeight) {
     if (const auto* orthographic = dynamic_cast<const nodes::OrthographicCamera*>(&mCamera)) {
         viewHeight = orthographic->height.value();
     } else if (const auto* perspective = dynamic_cast<const nodes::PerspectiveCamera*>(&mCamera)) {
-        viewHeight =
-            2.0f * mCamera.focalDistance.value() * std::tan(0.5f * perspective->heightAngle.value());
+        viewHeight = 2.0f * mCamera.focalDistance.value() *
+                     std::tan(0.5f * perspective->heightAngle.value());
     }
     const float unitsPerPixel = viewHeight / std::max(viewportHeight, 1.0f);
     const glm::quat q = quaternionOf(mCamera);

@@ -29,6 +29,7 @@ void ProgressiveRefinement::beginInteraction() {
         return;
     }
     mStage = Stage::Interactive;
+    mLastDrawn = 0;
     apply(mInteractiveBudget);
 }
 
@@ -36,31 +37,47 @@ bool ProgressiveRefinement::refine(std::size_t splatsDrawn) {
     if (mStage == Stage::FullQuality) {
         return false;
     }
-    // A cut smaller than its budget is the whole tree (or the scene's own limit): done.
-    const bool reachedAll = splatsDrawn < static_cast<std::size_t>(mBudget);
-    const std::int32_t kMax = std::numeric_limits<std::int32_t>::max() / 4;
-    if (reachedAll || mBudget >= kMax) {
-        restore();
-        return false;
+    // The octree refiner stops at the first split that does not fit its budget, and a split
+    // adds at most 7 splats (8 children for 1). A cut further below its budget than that had
+    // nothing left to split: the whole tree (or the scene's own limit) is drawn. The count is the
+    // sum over the splat nodes, so with several of them one finished node can end refinement
+    // early; then the scene's own settings come a step sooner, never a coarser image. A step
+    // that added nothing ends it too.
+    constexpr std::size_t kLargestSplitGrowth = 7;
+    const std::size_t budgets = static_cast<std::size_t>(mBudget) * mSplats.size();
+    const bool reachedAll = splatsDrawn + kLargestSplitGrowth * mSplats.size() < budgets ||
+                            (mStage == Stage::Refining && splatsDrawn <= mLastDrawn);
+    if (!reachedAll) {
+        mStage = Stage::Refining;
+        mLastDrawn = splatsDrawn;
+        // A larger budget that no node takes (the scene's own limits hold them all) is no step.
+        const std::int32_t kMax = std::numeric_limits<std::int32_t>::max() / 4;
+        while (mBudget < kMax) {
+            if (apply(mBudget * 4)) {
+                return true;
+            }
+        }
     }
-    mStage = Stage::Refining;
-    apply(mBudget * 4);
-    return true;
+    restore();
+    return false;
 }
 
 void ProgressiveRefinement::setInteractiveBudget(std::int32_t budget) {
     mInteractiveBudget = std::max<std::int32_t>(budget, 1);
 }
 
-void ProgressiveRefinement::apply(std::int32_t budget) {
+bool ProgressiveRefinement::apply(std::int32_t budget) {
     mBudget = budget;
+    bool changed = false;
     for (auto& [splat, original] : mSplats) {
         // The scene's own budget, when it has one, stays the upper limit.
         const std::int32_t limited = original > 0 ? std::min(original, budget) : budget;
         if (splat->maxSplats.value() != limited) {
             splat->maxSplats.setValue(limited);
+            changed = true;
         }
     }
+    return changed;
 }
 
 void ProgressiveRefinement::restore() {

@@ -14,8 +14,8 @@ namespace texsplat::apps {
 
 /// @brief Laur & Hanrahan's progressive refinement for the viewer: while the user moves the
 /// view, every splat node of the scene draws the octree cut of a small splat budget; once the
-/// user lets go, each idle step quadruples the budget until the cut holds everything the
-/// scene's own settings ask for, which are then restored.
+/// user lets go, each idle step (one per frame drawn) quadruples the budget until the cut holds
+/// everything the scene's own settings ask for, which are then restored.
 ///
 /// It works through the splat nodes' `maxSplats` field (ScalarSplat), so the octree picks the
 /// cut and the scene graph notices each change like any other edit.
@@ -30,8 +30,10 @@ public:
     /// @brief The user moves the view: draw with the interactive budget (once per gesture).
     void beginInteraction();
 
-    /// @brief One refinement step after a frame that drew `splatsDrawn` splats; returns true
-    /// while more steps are left (the caller schedules the next one when idle).
+    /// @brief One refinement step after a frame that drew `splatsDrawn` splats: a 4× larger
+    /// budget, or the scene's own settings once the cut holds everything. Returns true when the
+    /// step raised the budget (a finer frame follows, then the caller's next step); false once
+    /// the scene's own settings are back (stage() is FullQuality).
     bool refine(std::size_t splatsDrawn);
 
     /// @brief Where the refinement stands.
@@ -50,12 +52,13 @@ public:
     bool hasSplatNodes() const { return !mSplats.empty(); }
 
 private:
-    void apply(std::int32_t budget);
+    bool apply(std::int32_t budget); // true when a node's maxSplats changed
     void restore();
 
     std::vector<std::pair<std::shared_ptr<nodes::ScalarSplat>, std::int32_t>> mSplats;
     std::int32_t mInteractiveBudget;
     std::int32_t mBudget = 0;
+    std::size_t mLastDrawn = 0; // splats of the previous refinement step
     Stage mStage = Stage::FullQuality;
 };
 

@@ -7,7 +7,6 @@
 #include "apps/viewer/ViewerPanel.h"
 #include "nodes/Camera.h"
 #include "nodes/image/ImageIo.h"
-#include "nodes/render/RenderedImage.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
@@ -27,21 +26,34 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <optional>
 
 namespace texsplat::apps {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Mouse state between frames; the scroll wheel arrives through a callback.
+// Mouse state between frames. The wheel and the button presses arrive through callbacks: a
+// frame may take longer than a whole gesture on a software rasterizer, and a drag then starts
+// where the button went down, not where the next frame finds the cursor.
 struct Pointer {
     glm::dvec2 last{0.0};
     bool wasDragging = false;
     double scroll = 0.0;
+    std::optional<glm::dvec2> pressedAt;
 };
 
 void onScroll(GLFWwindow* window, double /*x*/, double y) {
     static_cast<Pointer*>(glfwGetWindowUserPointer(window))->scroll += y;
+}
+
+void onMouseButton(GLFWwindow* window, int /*button*/, int action, int /*mods*/) {
+    auto* pointer = static_cast<Pointer*>(glfwGetWindowUserPointer(window));
+    if (action == GLFW_PRESS && !pointer->pressedAt) {
+        glm::dvec2 cursor(0.0);
+        glfwGetCursorPos(window, &cursor.x, &cursor.y);
+        pointer->pressedAt = cursor;
+    }
 }
 
 nodes::Camera& cameraOf(sg::Node& root) {
@@ -53,7 +65,8 @@ nodes::Camera& cameraOf(sg::Node& root) {
 }
 
 std::string title(const ViewerOptions& options) {
-    return "texsplat view: " + (options.scene.empty() ? std::string("default scene") : options.scene);
+    return "texsplat view: " +
+           (options.scene.empty() ? std::string("default scene") : options.scene);
 }
 
 } // namespace
@@ -72,7 +85,8 @@ void Viewer::run() {
     GlfwWindow window(mOptions.size, title(mOptions));
     Pointer pointer;
     glfwSetWindowUserPointer(window.handle(), &pointer);
-    glfwSetScrollCallback(window.handle(), onScroll); // before ImGui, which chains to it
+    glfwSetScrollCallback(window.handle(), onScroll); // before ImGui, which chains to them
+    glfwSetMouseButtonCallback(window.handle(), onMouseButton);
 
     sg::BoundingBoxAction boxAction;
     boxAction.apply(root);
@@ -86,12 +100,9 @@ void Viewer::run() {
     sg::NodeSensor changed(queue, [&] { needsRender = true; });
     changed.attach(root);
     std::size_t lastSplats = 0;
+    // One refinement step per idle moment after a coarse frame was drawn (scheduled below).
     sg::IdleSensor refineStep(queue);
-    refineStep.setCallback([&] {
-        if (refinement.refine(lastSplats)) {
-            refineStep.schedule();
-        }
-    });
+    refineStep.setCallback([&] { refinement.refine(lastSplats); });
 
     FramePresenter presenter;
     ViewerPanel panel(window.handle());
@@ -128,8 +139,14 @@ void Viewer::run() {
                              glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
         const bool dragging = (orbiting || panning) && (pointer.wasDragging || !panel.wantsMouse());
         const glm::ivec2 size = window.framebufferSize();
+        if (dragging && !pointer.wasDragging && pointer.pressedAt) {
+            pointer.last = *pointer.pressedAt; // the drag so far counts from the press
+            pointer.wasDragging = true;
+        }
+        pointer.pressedAt.reset();
         if (dragging && pointer.wasDragging && cursor != pointer.last) {
             refinement.beginInteraction();
+            refineStep.unschedule();
             const glm::vec2 delta(cursor - pointer.last);
             if (orbiting) {
                 controller.orbit(delta, static_cast<float>(size.y));
@@ -137,13 +154,14 @@ void Viewer::run() {
                 controller.pan(delta, static_cast<float>(size.y));
             }
         }
-        if (pointer.wasDragging && !dragging) {
-            refineStep.schedule();
+        if (pointer.wasDragging && !dragging &&
+            refinement.stage() != ProgressiveRefinement::Stage::FullQuality) {
+            refineStep.schedule(); // the last coarse frame is drawn: refine from it
         }
         if (pointer.scroll != 0.0 && !panel.wantsMouse()) {
             refinement.beginInteraction();
+            refineStep.unschedule();
             controller.zoom(static_cast<float>(pointer.scroll));
-            refineStep.schedule();
         }
         pointer.scroll = 0.0;
         pointer.wasDragging = dragging;
@@ -168,6 +186,9 @@ void Viewer::run() {
             lastSplats = action->statistics().splats;
             report.splats = lastSplats;
             report.triangles = action->statistics().triangles;
+            if (!dragging && refinement.stage() != ProgressiveRefinement::Stage::FullQuality) {
+                refineStep.schedule(); // the next step once the queue is idle
+            }
         }
         report.stage = refinement.stage();
         report.budget = refinement.budget();
@@ -177,7 +198,14 @@ void Viewer::run() {
     }
 
     if (!mOptions.screenshot.empty() && action) {
-        image::writeImage(render::renderedImage(*action), mOptions.screenshot);
+        // The window's last frame without the panel: drawn again into its back buffer (not
+        // shown) and read back, so the file holds the bytes the window showed.
+        const glm::ivec2 size = window.framebufferSize();
+        if (size.x <= 0 || size.y <= 0) {
+            throw GlError(mOptions.screenshot + ": the window is minimized, nothing to read back");
+        }
+        presenter.present(action->framebuffer(), mOptions.background, size);
+        image::writeImage(FramePresenter::readBack(size), mOptions.screenshot);
     }
 }
 

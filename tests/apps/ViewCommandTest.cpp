@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <string>
@@ -48,6 +50,23 @@ TEST_F(ViewCommandTest, showsTheDefaultSceneInAWindowAndWritesItsLastFrame) {
     EXPECT_LT(corner.r, 0.05f);
     EXPECT_GT(centre.r, corner.r + 0.2f);
     EXPECT_FLOAT_EQ(centre.a, 1.0f);
+
+    // The window shows what `render` draws (same framing, upright), over the viewer's dark
+    // background (linear 0.02) instead of black.
+    const std::string rendered = path("render.png");
+    const auto renderOutput = runTexsplat("render --size 96x80 -o " + rendered);
+    ASSERT_EQ(renderOutput.exitCode, 0) << renderOutput.standardError;
+    const texsplat::image::Image reference = texsplat::image::readImage(rendered);
+    float largest = 0.0f;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const glm::vec4 difference = image.pixel(x, y) - reference.pixel(x, y);
+            for (int c = 0; c < 3; ++c) {
+                largest = std::max(largest, std::abs(difference[c]));
+            }
+        }
+    }
+    EXPECT_LT(largest, 0.035f);
 }
 
 TEST_F(ViewCommandTest, withoutADisplayItSaysSoAndWritesNothing) {

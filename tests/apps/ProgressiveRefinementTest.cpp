@@ -1,0 +1,114 @@
+// The viewer's refinement policy, on the real default scene drawn headless (EGL): the viewer
+// itself needs a display, its policy does not. Only in builds with the viewer.
+#ifdef TEXSPLAT_WITH_VIEWER
+
+#include "apps/viewer/ProgressiveRefinement.h"
+
+#include "apps/SceneSetup.h"
+#include "nodes/ScalarSplat.h"
+#include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/gl/EglContext.h"
+
+#include <gtest/gtest.h>
+
+#include <cstddef>
+#include <memory>
+#include <vector>
+
+namespace {
+
+using texsplat::apps::ProgressiveRefinement;
+using Stage = ProgressiveRefinement::Stage;
+namespace nodes = texsplat::nodes;
+namespace sg = texsplat::sg;
+
+std::vector<nodes::ScalarSplat*> splatNodes(sg::Node& root) {
+    sg::SearchAction search;
+    search.setType(nodes::ScalarSplat::classType());
+    search.setInterest(sg::SearchAction::Interest::All);
+    search.apply(root);
+    std::vector<nodes::ScalarSplat*> result;
+    for (const sg::Path& path : search.paths()) {
+        result.push_back(static_cast<nodes::ScalarSplat*>(path.tail().get()));
+    }
+    return result;
+}
+
+class ProgressiveRefinementTest : public ::testing::Test {
+protected:
+    std::size_t render() {
+        mAction.render(*mRoot);
+        return mAction.statistics().splats;
+    }
+
+    texsplat::gl::EglContext mContext;
+    sg::RenderAction mAction{64, 64};
+    sg::Node::Ptr mRoot =
+        texsplat::apps::withCamera(texsplat::apps::loadScene(""), texsplat::apps::Framing{}, 1.0f);
+};
+
+TEST_F(ProgressiveRefinementTest, coarseWhileMovingThenRefinesToTheScenesOwnCut) {
+    const std::vector<nodes::ScalarSplat*> splats = splatNodes(*mRoot);
+    ASSERT_FALSE(splats.empty());
+    const std::size_t full = render();
+    constexpr std::int32_t kBudget = 500;
+    ASSERT_GT(full, 16u * kBudget * splats.size()) << "the test needs a scene finer than 2 steps";
+
+    ProgressiveRefinement refinement(*mRoot, kBudget);
+    EXPECT_EQ(refinement.stage(), Stage::FullQuality);
+    refinement.beginInteraction();
+    EXPECT_EQ(refinement.stage(), Stage::Interactive);
+    EXPECT_EQ(refinement.budget(), kBudget);
+    for (const nodes::ScalarSplat* splat : splats) {
+        EXPECT_EQ(splat->maxSplats.value(), kBudget);
+    }
+    std::size_t drawn = render();
+    EXPECT_GT(drawn, 0u);
+    EXPECT_LE(drawn, kBudget * splats.size());
+
+    // Each idle step quadruples the budget and draws more, until the whole tree is drawn.
+    int steps = 0;
+    while (refinement.refine(drawn)) {
+        ASSERT_LT(++steps, 12) << "refinement does not end";
+        EXPECT_EQ(refinement.stage(), Stage::Refining);
+        const std::size_t finer = render();
+        EXPECT_GT(finer, drawn);
+        drawn = finer;
+    }
+    EXPECT_GE(steps, 2);
+    EXPECT_EQ(refinement.stage(), Stage::FullQuality);
+    EXPECT_EQ(refinement.budget(), 0);
+    for (const nodes::ScalarSplat* splat : splats) {
+        EXPECT_EQ(splat->maxSplats.value(), 0) << "the scene's own setting is restored";
+    }
+    EXPECT_EQ(render(), full);
+}
+
+TEST_F(ProgressiveRefinementTest, theScenesOwnBudgetStaysTheLimit) {
+    const std::vector<nodes::ScalarSplat*> splats = splatNodes(*mRoot);
+    ASSERT_FALSE(splats.empty());
+    constexpr std::int32_t kSceneBudget = 300;
+    for (nodes::ScalarSplat* splat : splats) {
+        splat->maxSplats.setValue(kSceneBudget);
+    }
+    ProgressiveRefinement refinement(*mRoot, 1000);
+    refinement.beginInteraction();
+    for (const nodes::ScalarSplat* splat : splats) {
+        EXPECT_EQ(splat->maxSplats.value(), kSceneBudget);
+    }
+    std::size_t drawn = render();
+    int steps = 0;
+    while (refinement.refine(drawn)) {
+        ASSERT_LT(++steps, 12) << "refinement does not end";
+        drawn = render();
+    }
+    EXPECT_EQ(refinement.stage(), Stage::FullQuality);
+    for (const nodes::ScalarSplat* splat : splats) {
+        EXPECT_EQ(splat->maxSplats.value(), kSceneBudget);
+    }
+}
+
+} // namespace
+
+#endif // TEXSPLAT_WITH_VIEWER
