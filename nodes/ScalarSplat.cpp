@@ -68,22 +68,29 @@ void ScalarSplat::checkFields() const {
     }
 }
 
-void ScalarSplat::render(sg::RenderAction& action) {
+std::pair<const VolumeData&, const TransferFunction&>
+ScalarSplat::renderInputs(sg::State& state) const {
     detail::withNodeContext(*this, [this] { checkFields(); });
-    const VolumeData* volume = action.state().get<VolumeElement>().volume;
-    const TransferFunction* transfer =
-        action.state().get<TransferFunctionElement>().transferFunction;
+    const VolumeData* volume = state.get<VolumeElement>().volume;
+    const TransferFunction* transfer = state.get<TransferFunctionElement>().transferFunction;
     if (!volume) {
         throw DataError(detail::nodeContext(*this) + ": no VolumeData before this node");
     }
     if (!transfer) {
         throw DataError(detail::nodeContext(*this) + ": no TransferFunction before this node");
     }
+    return {*volume, *transfer};
+}
+
+void ScalarSplat::render(sg::RenderAction& action) {
+    const auto inputs = renderInputs(action.state());
+    const VolumeData& volume = inputs.first;
+    const TransferFunction& transfer = inputs.second;
     const render::CameraView camera = render::CameraView::current(action, *this);
     const volume::ScalarGridPtr grid =
-        timed(action, sg::RenderPhase::Load, [volume] { return volume->scalarGrid(); });
+        timed(action, sg::RenderPhase::Load, [&volume] { return volume.scalarGrid(); });
     const std::shared_ptr<const octree::ClassifiedGrid> classified = timed(
-        action, sg::RenderPhase::Classify, [&] { return mCache->classified(grid, *transfer); });
+        action, sg::RenderPhase::Classify, [&] { return mCache->classified(grid, transfer); });
 
     const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
     const render::SplatView view = render::SplatView::fromMatrices(
@@ -130,21 +137,14 @@ void ScalarSplat::render(sg::RenderAction& action) {
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {
-    detail::withNodeContext(*this, [this] { checkFields(); });
-    const VolumeData* volume = action.state().get<VolumeElement>().volume;
-    const TransferFunction* transfer =
-        action.state().get<TransferFunctionElement>().transferFunction;
-    if (!volume) {
-        throw DataError(detail::nodeContext(*this) + ": no VolumeData before this node");
-    }
-    if (!transfer) {
-        throw DataError(detail::nodeContext(*this) + ": no TransferFunction before this node");
-    }
+    const auto inputs = renderInputs(action.state());
+    const VolumeData& volume = inputs.first;
+    const TransferFunction& transfer = inputs.second;
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
-    const volume::ScalarGridPtr grid = volume->scalarGrid();
+    const volume::ScalarGridPtr grid = volume.scalarGrid();
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
-        mCache->classified(grid, *transfer);
+        mCache->classified(grid, transfer);
     const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
     auto medium = detail::withNodeContext(
         *this, [&] { return std::make_shared<render::KernelVolumeMedium>(classified, model); });

@@ -1,11 +1,13 @@
 #pragma once
 
+#include "nodes/Fwd.h"
 #include "scenegraph/Declare.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/fields/Fields.h"
 
 #include <cstdint>
 #include <memory>
+#include <utility>
 
 namespace texsplat::sg {
 class RayCastAction;
@@ -83,6 +85,10 @@ protected:
 
 private:
     void checkFields() const;
+
+    /// @brief Checks the fields, then finds the VolumeData and TransferFunction of `state`;
+    /// throws DataError naming this node when a field is out of range or one of them is missing.
+    std::pair<const VolumeData&, const TransferFunction&> renderInputs(sg::State& state) const;
 
     std::unique_ptr<render::detail::ClassificationCache> mCache;
     std::shared_ptr<render::SplatBatch> mBatch;
