@@ -13,6 +13,14 @@ foreach(folder scenegraph nodes octree)
             FILES_MATCHING PATTERN "*.h"
             PATTERN "detail" EXCLUDE)
 endforeach()
+# Private headers that public ones include (field value traits behind SFFloat & co., the sensor
+# queue's lanes): installed so the public headers compile, still namespace detail. The installed-
+# package test compiles every installed header, so a missing one fails there.
+foreach(header scenegraph/fields/detail/ValueTraits.h scenegraph/sensors/detail/QueueLane.h)
+    get_filename_component(folder ${header} DIRECTORY)
+    install(FILES ${PROJECT_SOURCE_DIR}/${header}
+            DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/texsplat/${folder})
+endforeach()
 install(EXPORT texsplatTargets NAMESPACE texsplat:: DESTINATION ${TEXSPLAT_INSTALL_CMAKEDIR})
 
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/texsplatConfig.cmake.in
