@@ -1,5 +1,7 @@
 #include "scenegraph/actions/RayCastAction.h"
 
+#include "scenegraph/Log.h"
+
 #include <glm/ext/matrix_double4x4.hpp>
 #include <glm/ext/vector_double3.hpp>
 #include <glm/ext/vector_double4.hpp>
@@ -15,6 +17,7 @@
 #include <cstdint>
 #include <limits>
 #include <mutex>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -24,9 +27,6 @@ namespace {
 // Below this transmittance the rest of a ray cannot change a pixel by more than 1e-9 of what
 // the medium behind could emit, so the ray stops (early ray termination).
 constexpr double kOpaqueTransmittance = 1e-9;
-
-// Most midpoint steps in one piece of a ray (between breakpoints of the media's intervals).
-constexpr double kMaxStepsPerPiece = 16384.0;
 
 // Largest image side: keeps width * height * 4 floats addressable and the pixel loops in int.
 constexpr int kMaxImageSide = 1 << 15;
@@ -195,10 +195,20 @@ glm::vec4 RayCastAction::tracePixel(int x, int y, Scratch& scratch) const {
         if (scratch.active.empty()) {
             continue; // a gap between the stretches: empty space
         }
-        // Equal steps ending exactly at b. The count is bounded so that a step far below the
-        // piece length cannot run away; past that many midpoint steps a piece of at most a few
-        // voxels is converged to float precision anyway.
-        const double count = std::clamp(std::ceil((b - a) / step), 1.0, kMaxStepsPerPiece);
+        // Equal steps ending exactly at b, as many as the step asks for: a piece can be long (a
+        // run of active bricks, up to the grid's diagonal). The one limit: a step is not shorter
+        // than FLT_EPSILON·t at the piece's far end (one to two spacings of floats there), since
+        // sample() takes t as a float and a shorter step would only revisit the same positions.
+        // That also bounds the count by 1 / FLT_EPSILON = 2^23 per piece (t >= 0), so no step
+        // size can overflow it; when the limit applies, render() logs one warning.
+        const double finest =
+            std::max(std::abs(a), std::abs(b)) * std::numeric_limits<float>::epsilon();
+        const double most = std::max(1.0, std::floor((b - a) / finest));
+        double count = std::max(1.0, std::ceil((b - a) / step));
+        if (count > most) {
+            count = most;
+            scratch.stepLengthened = true;
+        }
         const auto steps = static_cast<std::int64_t>(count);
         const double ds = (b - a) / count;
         for (std::int64_t s = 0; s < steps; ++s) {
@@ -254,6 +264,7 @@ void RayCastAction::integrateRows() {
     std::atomic<int> nextRow{0};
     std::atomic<int> rowsDone{0};
     std::atomic<bool> cancelled{false};
+    std::atomic<bool> stepLengthened{false};
     std::mutex mutex;
     std::condition_variable finished;
     unsigned running = threadCount;
@@ -272,6 +283,9 @@ void RayCastAction::integrateRows() {
                 row[4 * x + 3] = color.a;
             }
             rowsDone.fetch_add(1, std::memory_order_relaxed);
+        }
+        if (scratch.stepLengthened) {
+            stepLengthened.store(true, std::memory_order_relaxed);
         }
         const std::lock_guard<std::mutex> lock(mutex);
         --running;
@@ -339,6 +353,15 @@ void RayCastAction::integrateRows() {
         throw RenderCancelled("RayCastAction::render(): cancelled by the progress callback after " +
                               std::to_string(rowsDone.load()) + " of " + std::to_string(mHeight) +
                               " rows");
+    }
+    // Once per render, not per ray: the workers only raise a flag (joined above).
+    if (stepLengthened.load()) {
+        std::ostringstream message;
+        message << "RayCastAction: the step of " << mStepSize
+                << " voxels is finer than float positions along some rays can resolve; there it "
+                   "was lengthened to the float spacing (about 1.2e-7 of the distance from the "
+                   "near plane)";
+        log(LogLevel::Warning, message.str());
     }
 }
 

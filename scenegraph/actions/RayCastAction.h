@@ -102,7 +102,10 @@ public:
     const glm::vec4& background() const { return mBackground; }
 
     /// @brief Integration step in voxels of each volume, along the ray (default
-    /// kDefaultStepSize: RMSE about 1e-5 of the converged image, docs/raycast.md).
+    /// kDefaultStepSize: RMSE about 1e-5 of the converged image, docs/raycast.md). Any step is
+    /// taken as given, except one finer than float positions along a ray can resolve (about
+    /// 1.2e-7 of the distance from the near plane), which is lengthened to that with one
+    /// warning per render().
     /// @throws DataError when `voxels` is not finite and positive.
     void setStepSize(float voxels);
 
@@ -167,6 +170,7 @@ private:
         std::vector<std::size_t> owners;
         std::vector<float> cuts;
         std::vector<const RayCastMedium*> active;
+        bool stepLengthened = false; // a step was limited to the float resolution of t
     };
 
     glm::vec4 tracePixel(int x, int y, Scratch& scratch) const;

@@ -4,6 +4,8 @@
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 
+#include "BenchmarkBaseline.h"
+
 #include <benchmark/benchmark.h>
 
 #include <vector>
@@ -59,5 +61,6 @@ void ClassifyGridBaselinePerValue(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(values.size()));
 }
 BENCHMARK(ClassifyGridBaselinePerValue)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+TEXSPLAT_BENCHMARK_BASELINE(ClassifyGrid, ClassifyGridBaselinePerValue);
 
 } // namespace

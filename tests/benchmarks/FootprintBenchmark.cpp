@@ -6,6 +6,8 @@
 #include "nodes/kernel/GaussianKernel.h"
 #include "nodes/kernel/KernelOptimizer.h"
 
+#include "BenchmarkBaseline.h"
+
 #include <benchmark/benchmark.h>
 
 #include <array>
@@ -74,6 +76,8 @@ void FootprintBaselineTextureLookup(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * kPoints);
 }
 BENCHMARK(FootprintBaselineTextureLookup);
+TEXSPLAT_BENCHMARK_BASELINE(FootprintClosedFormCubic, FootprintBaselineTextureLookup);
+TEXSPLAT_BENCHMARK_BASELINE(FootprintClosedFormGaussian, FootprintBaselineTextureLookup);
 
 // Tabulating the texture (what TextureSplat does when its batch is made).
 void FootprintTextureBuild(benchmark::State& state) {

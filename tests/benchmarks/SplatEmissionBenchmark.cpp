@@ -12,6 +12,8 @@
 #include "octree/SplatEmission.h"
 #include "octree/View.h"
 
+#include "BenchmarkBaseline.h"
+
 #include <benchmark/benchmark.h>
 
 #include <memory>
@@ -79,8 +81,9 @@ void EmitVoxelSplatsBaselineMemoryOrder(benchmark::State& state) {
     state.counters["splats"] = static_cast<double>(splats.size());
 }
 BENCHMARK(EmitVoxelSplatsBaselineMemoryOrder)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+TEXSPLAT_BENCHMARK_BASELINE(EmitVoxelSplatsSliceOrder, EmitVoxelSplatsBaselineMemoryOrder);
 
-// The slice order's walk alone (no emission).
+// The slice order's walk alone, compared with the full emission that it is part of.
 void SliceOrderWalk(benchmark::State& state) {
     const auto grid = classifiedMarschnerLobb(static_cast<int>(state.range(0)));
     const View view = obliqueView();
@@ -94,6 +97,7 @@ void SliceOrderWalk(benchmark::State& state) {
                             static_cast<std::int64_t>(grid->voxelCount()));
 }
 BENCHMARK(SliceOrderWalk)->Arg(64)->Arg(128)->Unit(benchmark::kMillisecond);
+TEXSPLAT_BENCHMARK_BASELINE(SliceOrderWalk, EmitVoxelSplatsSliceOrder);
 
 void OctreeBuild(benchmark::State& state) {
     const auto grid = classifiedMarschnerLobb(static_cast<int>(state.range(0)));

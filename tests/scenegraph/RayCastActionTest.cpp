@@ -3,6 +3,7 @@
 #include "scenegraph/Declare.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Group.h"
+#include "scenegraph/Log.h"
 #include "scenegraph/Node.h"
 
 #include <gtest/gtest.h>
@@ -10,6 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <functional>
 #include <memory>
@@ -215,7 +217,9 @@ TEST(RayCastAction, stiffAndExtremeValuesGiveFiniteImages) {
         for (float emission : {0.0f, 1e-30f, 1.0f, 1e30f, 3e38f}) {
             WorkNode::Ptr node = WorkNode::create();
             node->media.push_back(constantSlab(1.0, glm::vec3(emission), tau));
-            for (float step : {1e-6f, 0.01f, 1.0f, 1e6f}) {
+            // Steps below the float resolution of t (here about 1e-6): see
+            // lengthensStepsBelowTheFloatResolutionWithOneWarningPerRender.
+            for (float step : {1e-4f, 0.01f, 1.0f, 1e6f}) {
                 const std::vector<float> rgba = renderPixels(*node, 2, step);
                 for (float value : rgba) {
                     ASSERT_TRUE(std::isfinite(value) && value >= 0.0f)
@@ -225,6 +229,74 @@ TEST(RayCastAction, stiffAndExtremeValuesGiveFiniteImages) {
             }
         }
     }
+}
+
+// The slab is one piece of the ray; steps used to be capped at 16384 per piece, whatever the
+// piece's length (for a run of active bricks, a step of about 0.02 voxel on a 128³ grid).
+TEST(RayCastAction, aLongPieceTakesAsManyStepsAsTheStepSizeAsks) {
+    auto samples = std::make_shared<std::atomic<long long>>(0);
+    auto slab = constantSlab(1.0, glm::vec3(1.0f), 1.0f);
+    slab->medium = [samples](double) {
+        samples->fetch_add(1, std::memory_order_relaxed);
+        return glm::vec4(1.0f);
+    };
+    WorkNode::Ptr node = WorkNode::create();
+    node->media.push_back(slab);
+    std::vector<std::string> warnings;
+    const LogSink previous = setLogSink([&warnings](LogLevel level, std::string_view message) {
+        if (level == LogLevel::Warning) {
+            warnings.emplace_back(message);
+        }
+    });
+    const glm::dvec4 pixel = centre(renderPixels(*node, 2, 1.0f / 32768.0f), 2);
+    setLogSink(previous);
+    // 4 rays through 1 unit at 1/32768: 32768 steps each (32769 if rounding of t lengthens
+    // the piece by an ulp).
+    EXPECT_GE(samples->load(), 4 * 32768);
+    EXPECT_LE(samples->load(), 4 * 32769);
+    EXPECT_NEAR(pixel.r, 1.0 - std::exp(-1.0), 1e-6);
+    EXPECT_EQ(warnings, std::vector<std::string>{});
+}
+
+// The slab lies at t ∈ [8.5, 9.5] from the near plane, where floats are 9.5e-7 apart: a step
+// of 1e-9 is lengthened to 9.5·FLT_EPSILON = 1.1e-6 (8.8·10⁵ steps per ray, not 10⁹), with
+// one warning per render however many rays and threads hit the limit.
+TEST(RayCastAction, lengthensStepsBelowTheFloatResolutionWithOneWarningPerRender) {
+    const float tau = 1.0f;
+    auto samples = std::make_shared<std::atomic<long long>>(0);
+    auto slab = constantSlab(1.0, glm::vec3(1.0f), tau);
+    slab->medium = [samples, tau](double) {
+        samples->fetch_add(1, std::memory_order_relaxed);
+        return glm::vec4(1.0f, 1.0f, 1.0f, tau);
+    };
+    WorkNode::Ptr node = WorkNode::create();
+    node->media.push_back(slab);
+    std::vector<std::string> warnings;
+    const LogSink previous = setLogSink([&warnings](LogLevel level, std::string_view message) {
+        warnings.push_back(std::string(toString(level)) + ": " + std::string(message));
+    });
+    RayCastAction action(2, 2);
+    action.setStepSize(1e-9f);
+    action.setThreadCount(2);
+    action.render(*node);
+    const glm::dvec4 pixel = centre(action.readColor(), 2);
+    const long long firstSamples = samples->load();
+    action.render(*node);
+    setLogSink(previous);
+
+    const std::string expected =
+        "warning: RayCastAction: the step of 1e-09 voxels is finer than float positions along "
+        "some rays can resolve; there it was lengthened to the float spacing (about 1.2e-7 of "
+        "the distance from the near plane)";
+    ASSERT_EQ(warnings.size(), 2u);
+    EXPECT_EQ(warnings[0], expected);
+    EXPECT_EQ(warnings[1], expected);
+    // Per ray 1 / (9.5 · FLT_EPSILON) = 8.8·10⁵ steps.
+    EXPECT_GT(firstSamples, 4 * 800000LL);
+    EXPECT_LT(firstSamples, 4 * 900000LL);
+    // Exact for a constant medium whatever the step.
+    EXPECT_NEAR(pixel.r, (1.0 - std::exp(-1.0)) / tau, 1e-6);
+    EXPECT_NEAR(pixel.a, 1.0 - std::exp(-1.0), 1e-6);
 }
 
 TEST(RayCastAction, imagesDoNotDependOnTheThreadCount) {
