@@ -10,35 +10,19 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-#include <cstdio>
-#include <limits>
+#include <vector>
 
 namespace texsplat::render {
 namespace {
 
-// The paper's figure 2 (Crawfis & Max 1993, section 2): one layer of glowing, completely
-// transparent splats projected along z; the sum of footprints has max 1.00249 at (.5, .5) and
-// min 0.99845 at (.25, .25) relative to its mean 1.
-constexpr double kPaperLayerMax = 1.00249;
-constexpr double kPaperLayerMin = 0.99845;
+using test::kLayerVoxels;
+using test::kPaperLayerMax;
+using test::kPaperLayerMin;
+using test::kPixelsPerVoxel;
+using test::LayerStatistics;
 
-// Figure 2 set-up: a 16 x 16 layer of unit voxels, 8 pixels per voxel, pixel centres on the
-// lattice points k/8 (so they hit (.5,.5) and (.25,.25)), the interior keeps 2 voxels (more than
-// the support 1.556) from the layer's edge.
-constexpr int kLayerVoxels = 16;
-constexpr int kPixelsPerVoxel = 8;
-constexpr int kImageSize = kLayerVoxels * kPixelsPerVoxel;
-constexpr int kInteriorLow = 2 * kPixelsPerVoxel;
-constexpr int kInteriorHigh = (kLayerVoxels - 3) * kPixelsPerVoxel;
-
-struct LayerStatistics {
-    double mean = 0.0;
-    double max = 0.0;
-    double min = 0.0;
-    double relativeMax() const { return max / mean; }
-    double relativeMin() const { return min / mean; }
-};
+// The figure-2 constants live in SplatTestSupport.h: the node pipeline's test uses them too.
+constexpr int kImageSize = test::kLayerImageSize;
 
 // One layer of voxels with emission `emission` per unit length and no extinction, in slice
 // order for a view along −z.
@@ -59,25 +43,6 @@ render::SplatView layerView() {
     return test::topView(-0.5f * pixel, static_cast<float>(kLayerVoxels));
 }
 
-LayerStatistics interiorStatistics(const std::vector<float>& red, int width) {
-    LayerStatistics statistics;
-    statistics.max = -std::numeric_limits<double>::infinity();
-    statistics.min = std::numeric_limits<double>::infinity();
-    double sum = 0.0;
-    int count = 0;
-    for (int y = kInteriorLow; y <= kInteriorHigh; ++y) {
-        for (int x = kInteriorLow; x <= kInteriorHigh; ++x) {
-            const double value = red[static_cast<std::size_t>(y * width + x)];
-            sum += value;
-            ++count;
-            statistics.max = std::max(statistics.max, value);
-            statistics.min = std::min(statistics.min, value);
-        }
-    }
-    statistics.mean = sum / count;
-    return statistics;
-}
-
 LayerStatistics renderLayer(SplatBatch& batch) {
     batch.upload(glowingLayer(1.0f));
     const image::Image image =
@@ -87,12 +52,7 @@ LayerStatistics renderLayer(SplatBatch& batch) {
         red.push_back(pixel.r);
         EXPECT_EQ(pixel.a, 0.0f) << "transparent splats must leave alpha 0";
     }
-    return interiorStatistics(red, kImageSize);
-}
-
-void report(const char* what, const LayerStatistics& statistics) {
-    std::printf("figure2 %s: mean %.6f max/mean %.6f min/mean %.6f\n", what, statistics.mean,
-                statistics.relativeMax(), statistics.relativeMin());
+    return test::layerInteriorStatistics(red, kImageSize);
 }
 
 kernel::GaussianKernel sameExtentGaussian() {
@@ -105,7 +65,7 @@ TEST(SplatBatch, figure2LayerOfPaperSplatsIsAsFlatAsThePaperReports) {
     const kernel::FootprintTexture footprint(cubic, 64);
     SplatBatch batch = SplatBatch::textured(footprint);
     const LayerStatistics layer = renderLayer(batch);
-    report("paper cubic, 64x64 float texture", layer);
+    test::reportLayer("paper cubic, 64x64 float texture", layer);
     EXPECT_NEAR(layer.mean, 1.0, 2e-3);
     EXPECT_NEAR(layer.relativeMax(), kPaperLayerMax, 1e-3 * kPaperLayerMax);
     EXPECT_NEAR(layer.relativeMin(), kPaperLayerMin, 1e-3 * kPaperLayerMin);
@@ -128,8 +88,8 @@ TEST(SplatBatch, figure2GaussianOfTheSameExtentRipplesMore) {
     const LayerStatistics cubicLayer = renderLayer(paper);
     const LayerStatistics textured = renderLayer(texturedGaussian);
     const LayerStatistics polygonal = renderLayer(polygonalGaussian);
-    report("textured Gaussian (same extent)", textured);
-    report("polygonal Gaussian, 3 radial x 7 azimuth, Gouraud", polygonal);
+    test::reportLayer("textured Gaussian (same extent)", textured);
+    test::reportLayer("polygonal Gaussian, 3 radial x 7 azimuth, Gouraud", polygonal);
     const auto ripple = [](const LayerStatistics& s) { return s.relativeMax() - s.relativeMin(); };
     EXPECT_GT(ripple(textured), 2.0 * ripple(cubicLayer));
     EXPECT_GT(ripple(polygonal), ripple(textured));
@@ -167,8 +127,8 @@ TEST(SplatBatch, figure2InAnEightBitFramebufferDeviatesByQuantization) {
     for (std::size_t i = 0; i < rgba.size(); i += 4) {
         red.push_back(rgba[i]);
     }
-    const LayerStatistics layer = interiorStatistics(red, kImageSize);
-    report("paper cubic, 8-bit framebuffer", layer);
+    const LayerStatistics layer = test::layerInteriorStatistics(red, kImageSize);
+    test::reportLayer("paper cubic, 8-bit framebuffer", layer);
     EXPECT_NEAR(layer.mean, 0.5, 0.02);
     // Up to nine splats overlap a pixel, each rounded to 1/255: the deviation is a few levels,
     // well above the kernel's own ripple of 0.4%.

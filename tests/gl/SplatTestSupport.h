@@ -21,7 +21,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -94,12 +96,24 @@ inline std::string writeTestVolume(const std::string& name, const volume::Scalar
     return path;
 }
 
-/// @brief Renders `root` with a new action and reads color and depth back.
-inline image::Image renderScene(sg::Node& root, int width, int height) {
+/// @brief One rendered frame: the image (color and depth) and what the action counted.
+struct RenderedFrame {
+    image::Image image;
+    sg::RenderStatistics statistics;
+};
+
+/// @brief Renders `root` with a new action; answers the image and the frame's statistics.
+inline RenderedFrame renderFrame(sg::Node& root, int width, int height) {
     nodes::registerNodeTypes();
     sg::RenderAction action(width, height);
     action.render(root);
-    return render::renderedImage(action, render::DepthReadback::With);
+    image::Image image = render::renderedImage(action, render::DepthReadback::With);
+    return {std::move(image), action.statistics()};
+}
+
+/// @brief Renders `root` with a new action and reads color and depth back.
+inline image::Image renderScene(sg::Node& root, int width, int height) {
+    return renderFrame(root, width, height).image;
 }
 
 /// @brief Whether every pixel is finite and at least one has color.
@@ -107,6 +121,68 @@ inline void expectFiniteAndNotEmpty(const image::Image& image, const std::string
     const image::Image::Statistics statistics = image.statistics();
     EXPECT_EQ(statistics.nonFinitePixels, 0u) << what;
     EXPECT_GT(statistics.maximum.r + statistics.maximum.g + statistics.maximum.b, 0.0) << what;
+}
+
+/// @brief Whether every pixel is finite, with no negative color and alpha in [0, 1] (up to a
+/// rounding of the blend), as "over" compositing of physical splats must leave it.
+inline void expectFiniteWithAlphaInRange(const image::Image& image, const std::string& what) {
+    const image::Image::Statistics statistics = image.statistics();
+    EXPECT_EQ(statistics.nonFinitePixels, 0u) << what;
+    EXPECT_GE(statistics.minimum.a, 0.0) << what;
+    EXPECT_LE(statistics.maximum.a, 1.0 + 1e-6) << what;
+    EXPECT_GE(std::min({statistics.minimum.r, statistics.minimum.g, statistics.minimum.b}), 0.0)
+        << what;
+}
+
+// The paper's figure 2 (Crawfis & Max 1993, section 2): one layer of glowing, completely
+// transparent splats projected along z; the sum of footprints has max 1.00249 at (.5, .5) and
+// min 0.99845 at (.25, .25) relative to its mean 1.
+constexpr double kPaperLayerMax = 1.00249;
+constexpr double kPaperLayerMin = 0.99845;
+
+// Figure 2 set-up: a 16 x 16 layer of unit voxels, 8 pixels per voxel, pixel centres on the
+// lattice points k/8 (so they hit (.5,.5) and (.25,.25)), the interior keeps 2 voxels (more than
+// the support 1.556) from the layer's edge.
+constexpr int kLayerVoxels = 16;
+constexpr int kPixelsPerVoxel = 8;
+constexpr int kLayerImageSize = kLayerVoxels * kPixelsPerVoxel;
+constexpr int kLayerInteriorLow = 2 * kPixelsPerVoxel;
+constexpr int kLayerInteriorHigh = (kLayerVoxels - 3) * kPixelsPerVoxel;
+
+/// @brief Mean and extremes of a figure-2 layer image over its interior.
+struct LayerStatistics {
+    double mean = 0.0;
+    double max = 0.0;
+    double min = 0.0;
+    double relativeMax() const { return max / mean; }
+    double relativeMin() const { return min / mean; }
+};
+
+/// @brief LayerStatistics of one channel (`red`, `width` values a row) over the interior
+/// [kLayerInteriorLow, kLayerInteriorHigh]² pixels.
+inline LayerStatistics layerInteriorStatistics(const std::vector<float>& red, int width) {
+    LayerStatistics statistics;
+    statistics.max = -std::numeric_limits<double>::infinity();
+    statistics.min = std::numeric_limits<double>::infinity();
+    double sum = 0.0;
+    int count = 0;
+    for (int y = kLayerInteriorLow; y <= kLayerInteriorHigh; ++y) {
+        for (int x = kLayerInteriorLow; x <= kLayerInteriorHigh; ++x) {
+            const double value = red[static_cast<std::size_t>(y * width + x)];
+            sum += value;
+            ++count;
+            statistics.max = std::max(statistics.max, value);
+            statistics.min = std::min(statistics.min, value);
+        }
+    }
+    statistics.mean = sum / count;
+    return statistics;
+}
+
+/// @brief Prints a layer's numbers in the test output ("figure2 <what>: mean … max/mean …").
+inline void reportLayer(const char* what, const LayerStatistics& statistics) {
+    std::printf("figure2 %s: mean %.6f max/mean %.6f min/mean %.6f\n", what, statistics.mean,
+                statistics.relativeMax(), statistics.relativeMin());
 }
 
 } // namespace texsplat::test
