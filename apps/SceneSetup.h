@@ -30,7 +30,8 @@ struct Framing {
 
 /// @brief The scene as drawn: `scene` itself when it has a camera (then `framing` must not ask
 /// for one), else a Separator holding a new camera that frames the scene's bounding box for a
-/// viewport of `aspect`, then the scene.
+/// viewport of `aspect`, then the scene. Framing takes the scene's bounding box, which loads (or
+/// generates) its volumes: callers that time loading count this call in.
 /// @throws DataError for a bad option, or a scene with neither geometry nor camera.
 sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect);
 

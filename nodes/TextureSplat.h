@@ -22,9 +22,9 @@ inline const sg::EnumNames kSplatKernelNames{{"PAPER", SplatKernel::Paper},
 /// The footprint texture is tabulated at `textureResolution`² texels over the square
 /// [−size, size]² voxels (nodes/kernel/FootprintTexture) and sampled bilinearly. At the default
 /// 64² the one-layer sum of the paper's kernel through the GL pipeline stays within 0.02% of the
-/// paper's figure 2 extremes (docs/rendering.md). `kernel GAUSSIAN` swaps only the kernel, so the
-/// kernel and the drawing method (GaussianSplat) can be compared separately. Everything else is
-/// ScalarSplat's.
+/// paper's figure 2 extremes (docs/results/rendering.md). `kernel GAUSSIAN` swaps only the
+/// kernel, so the kernel and the drawing method (GaussianSplat) can be compared separately.
+/// Everything else is ScalarSplat's.
 ///
 /// File format:
 /// @code

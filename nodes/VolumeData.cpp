@@ -14,10 +14,24 @@
 #include "scenegraph/actions/BoundingBoxAction.h"
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <string>
 
 namespace texsplat::nodes {
+namespace {
+
+// Progress of reading `path` for the user, through texsplat::log and named like the node's
+// errors ("VolumeData 'cloud': cloud.raw: reading 40%"); volume::logProgress() decides when a
+// load is long enough to be worth it.
+volume::ProgressCallback loadProgress(const VolumeData& node, const std::string& path) {
+    std::error_code error; // a missing file fails in the loader, with the loader's message
+    const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+    return volume::logProgress(detail::nodeContext(node) + ": " + path,
+                               error ? 0 : static_cast<std::int64_t>(bytes));
+}
+
+} // namespace
 
 // What one load of the source yields.
 struct VolumeData::Loaded {
@@ -61,16 +75,18 @@ std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
         return fileName.value();
     };
     switch (kind) {
-    case VolumeSource::FileRaw:
-        result->grid = volume::readRawVolume(requireFile());
+    case VolumeSource::FileRaw: {
+        const std::string& path = requireFile();
+        result->grid = volume::readRawVolume(path, loadProgress(*this, path));
         break;
+    }
     case VolumeSource::FileVdb: {
         const std::string& path = requireFile();
         if (gridName.value().empty()) {
             throw DataError("gridName is empty; source FILE_VDB needs the name of a grid in " +
                             path);
         }
-        result->grid = volume::readVdbGrid(path, gridName.value());
+        result->grid = volume::readVdbGrid(path, gridName.value(), loadProgress(*this, path));
         break;
     }
     case VolumeSource::Tornado:

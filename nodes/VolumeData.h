@@ -52,6 +52,8 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 /// bounding box): a scene pays only for the grids it references. Any change of a field drops the
 /// cache, and the next use loads again. Errors name the node and then the source:
 /// "VolumeData 'cloud': cloud.raw: cannot open file (No such file or directory)".
+/// A long file load logs its progress at LogLevel::Info, named the same way
+/// ("VolumeData 'cloud': cloud.raw: reading 40%"; when, see volume::logProgress()).
 ///
 /// Fields:
 /// - `source`: see VolumeSource.

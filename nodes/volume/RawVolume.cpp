@@ -65,7 +65,7 @@ void readValues(std::ifstream& in, const std::string& path, const RawHeader& hea
     const bool swapBytes = (header.endian == RawEndian::Little) != kHostIsLittleEndian;
     std::vector<unsigned char> bytes;
     std::vector<float> values;
-    const std::string message = "reading " + path;
+    const std::string message = "reading";
     reportProgress(progress, path, 0.0, message);
     for (std::int64_t done = 0; done < totalValues;) {
         const std::int64_t count = std::min(chunkValues, totalValues - done);
@@ -159,7 +159,7 @@ AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress)
                    [target](std::int64_t first, const float* values, std::int64_t count) {
                        std::copy(values, values + count, target + first);
                    });
-        detail::warnAboutNonFiniteVoxels(path, grid->statistics());
+        detail::checkFiniteVoxels(path, grid->statistics());
         result = grid;
     } else {
         auto grid = std::make_shared<DenseVectorGrid>(geometry);
@@ -170,7 +170,7 @@ AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress)
                            target[(first + i) / 3] = glm::vec3(values[i], values[i + 1],
                                                                values[i + 2]);
                    });
-        detail::warnAboutNonFiniteVoxels(path, grid->statistics());
+        detail::checkFiniteVoxels(path, grid->statistics());
         result = grid;
     }
     return result;

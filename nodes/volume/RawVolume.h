@@ -12,10 +12,12 @@ namespace texsplat::volume {
 /// they are (uint8 255 reads as 255.0); NaN or infinite values become empty voxels and are
 /// reported in one warning through texsplat::log.
 ///
-/// `progress` is called as the data is read (about every 4 MiB) and may cancel.
+/// `progress` is called with the message "reading" as the data is read (about every 4 MiB) and
+/// may cancel.
 /// @throws IoError when the file cannot be opened or read; ParseError for a malformed header;
-/// DataError for a zero-size grid or when the data after the header is shorter or longer than
-/// the header says; LoadCancelled when `progress` answered false.
+/// DataError for a zero-size grid, when the data after the header is shorter or longer than the
+/// header says, or when every voxel is NaN or infinite; LoadCancelled when `progress` answered
+/// false.
 AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress = {});
 
 /// @brief Writes `grid` as a texsplat-raw file of float32, little endian, 1 component; empty

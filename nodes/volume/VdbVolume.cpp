@@ -100,7 +100,7 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
         }
     }
     reportProgress(progress, path, 1.0, message);
-    detail::warnAboutNonFiniteVoxels(path, grid->statistics());
+    detail::checkFiniteVoxels(where, grid->statistics());
     return grid;
 }
 
@@ -125,6 +125,8 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
                         (infos.empty() ? "the file has no grids" : "the file has: " + available));
     }
     const std::string where = path + ": grid '" + gridName + "'";
+    // OpenVDB reads and decompresses the whole grid in this one call, often the longest step.
+    reportProgress(progress, path, 0.0, "reading grid '" + gridName + "'");
     openvdb::GridBase::Ptr base;
     try {
         base = file->readGrid(gridName);

@@ -30,11 +30,14 @@ std::vector<VdbGridInfo> listVdbGrids(const std::string& path);
 /// The grid's index space starts at the low corner of its active voxels' bounding box, which
 /// becomes voxel (0,0,0); OpenVDB's leaf nodes map one to one onto SparseGrid blocks. Active
 /// tiles are expanded into voxels. NaN or infinite active values become empty voxels, reported
-/// in one warning through texsplat::log. `progress` is called as voxels are copied and may cancel.
+/// in one warning through texsplat::log. `progress` is called with "reading grid '<name>'"
+/// before OpenVDB reads the grid, then with "copying grid '<name>'" as voxels are copied; it may
+/// cancel.
 /// @throws IoError when the file cannot be opened or read (or OpenVDB is not built in);
 /// DataError when no grid has that name (the message lists the grids the file has), when the
-/// grid holds another value type, has no active voxels, or has a transform other than an
-/// axis-aligned scale and translation; LoadCancelled when `progress` answered false.
+/// grid holds another value type, has no active voxels, has only NaN or infinite active voxels,
+/// or has a transform other than an axis-aligned scale and translation; LoadCancelled when
+/// `progress` answered false.
 AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
                     const ProgressCallback& progress = {});
 

@@ -4,9 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
+
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -46,6 +51,18 @@ TEST_F(RenderCommandTest, rendersTheDefaultSceneAndReportsItsTimes) {
                               "read back", "write", "splats "}) {
         EXPECT_NE(result.standardOutput.find(phase), std::string::npos) << phase;
     }
+    // The default scene has no camera: framing it loads the tornado, which counts as load.
+    const std::size_t load = result.standardOutput.find("  load ");
+    ASSERT_NE(load, std::string::npos);
+    double loadSeconds = -1.0;
+    double framingSeconds = -1.0;
+    ASSERT_EQ(std::sscanf(result.standardOutput.c_str() + load,
+                          " load %lf (%lf of it while framing the scene)", &loadSeconds,
+                          &framingSeconds),
+              2)
+        << result.standardOutput;
+    EXPECT_GT(framingSeconds, 0.0);
+    EXPECT_GE(loadSeconds, framingSeconds);
     const Image image = texsplat::image::readImage(output);
     EXPECT_EQ(image.width(), 48);
     EXPECT_EQ(image.height(), 32);
@@ -53,6 +70,15 @@ TEST_F(RenderCommandTest, rendersTheDefaultSceneAndReportsItsTimes) {
     EXPECT_EQ(statistics.nonFinitePixels, 0u);
     EXPECT_GT(statistics.maximum.r, 0.1);
     EXPECT_EQ(statistics.minimum.a, 1.0); // composited over opaque black
+}
+
+TEST_F(RenderCommandTest, aSceneWithItsOwnCameraIsNotFramed) {
+    const std::string output = path("camera.png");
+    const auto result = runTexsplat("render " + writeScene("PerspectiveCamera { }\n") + " -o " +
+                                    output + " --size 16x16 --time-report");
+    ASSERT_EQ(result.exitCode, 0) << result.standardError;
+    EXPECT_NE(result.standardOutput.find("  load "), std::string::npos);
+    EXPECT_EQ(result.standardOutput.find("framing"), std::string::npos);
 }
 
 TEST_F(RenderCommandTest, rendersASceneFileToExrWithDepthAndCameraOptions) {
@@ -68,6 +94,21 @@ TEST_F(RenderCommandTest, rendersASceneFileToExrWithDepthAndCameraOptions) {
     EXPECT_EQ(statistics.nonFinitePixels, 0u);
     EXPECT_GT(statistics.maximum.r, 0.1);
     EXPECT_EQ(statistics.minimum.a, 0.0); // the EXR keeps the layer's own alpha
+    // Z is window-space depth; splats do not write it, so a volume alone leaves 1 everywhere.
+    ASSERT_TRUE(image.hasDepth());
+    for (const float depth : image.depths()) {
+        ASSERT_EQ(depth, 1.0f);
+    }
+    // The default scene's fibers are opaque: their depth lies in [0, 1), the rest stays 1.
+    const std::string fibers = path("default.exr");
+    ASSERT_EQ(runTexsplat("render -o " + fibers + " --size 48x32").exitCode, 0);
+    const Image withFibers = texsplat::image::readImage(fibers);
+    const std::vector<float>& depths = withFibers.depths();
+    ASSERT_EQ(depths.size(), 48u * 32u);
+    const auto [nearest, farthest] = std::minmax_element(depths.begin(), depths.end());
+    EXPECT_GE(*nearest, 0.0f);
+    EXPECT_LT(*nearest, 1.0f);
+    EXPECT_EQ(*farthest, 1.0f);
 }
 
 TEST_F(RenderCommandTest, raycastRendersTheSameViewWithoutGl) {
@@ -118,6 +159,18 @@ TEST_F(RenderCommandTest, reportsBadInputsAndWritesNothing) {
                 "--direction/--camera: the scene has its own camera (PerspectiveCamera); they "
                 "frame scenes without one",
                 png);
+    // A grid with no finite voxel would render as an empty picture that hides the bad input.
+    std::string nanVoxels = "texsplat-raw 1\ndims 2 2 2\ntype float32\ndata\n";
+    const float nan = std::nanf("");
+    for (int voxel = 0; voxel < 8; ++voxel) {
+        nanVoxels.append(reinterpret_cast<const char*>(&nan), sizeof nan);
+    }
+    const std::string raw = write("nan.raw", nanVoxels);
+    const std::string nanScene = write("nan.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                                                 "VolumeData { source FILE_RAW fileName \"" +
+                                                     raw + "\" }\nTextureSplat { }\n}\n");
+    expectError(nanScene + " -o " + png,
+                "VolumeData: " + raw + ": all 8 voxels are NaN or infinite; nothing to draw", png);
     const auto missing = runTexsplat("render " + path("missing.iv") + " -o " + png);
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_NE(missing.standardError.find(path("missing.iv")), std::string::npos);

@@ -129,7 +129,7 @@ TEST(RawVolume, largeReadReportsProgressAndCanBeCancelled) {
     std::vector<double> fractions;
     readRawVolume(path, [&](double fraction, std::string_view message) {
         fractions.push_back(fraction);
-        EXPECT_EQ(message, "reading " + path);
+        EXPECT_EQ(message, "reading");
         return true;
     });
     EXPECT_EQ(fractions, (std::vector<double>{0.0, 0.5, 1.0}));
@@ -160,6 +160,25 @@ TEST(RawVolume, nonFiniteVoxelsAreEmptyAndWarnedAboutOnce) {
     EXPECT_EQ(grid->statistics().finiteCount, 2);
     EXPECT_FALSE(grid->isActive({1, 0, 0}));
     EXPECT_EQ(grid->value({2, 0, 0}), 0.0f);
+}
+
+TEST(RawVolume, refusesAGridWithNoFiniteVoxel) {
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    const std::string scalars =
+        writeFile("nan.raw", header("2 2 1", "float32"), std::vector<float>{nan, inf, -inf, nan});
+    EXPECT_EQ(errorOf<DataError>(scalars),
+              scalars + ": all 4 voxels are NaN or infinite; nothing to draw");
+    // A vector is empty when any of its components is not finite.
+    const std::string vectors = writeFile("nanvec.raw", header("2 1 1", "float64", 3),
+                                          std::vector<double>{1, 2, nan, inf, 0, 0});
+    EXPECT_EQ(errorOf<DataError>(vectors),
+              vectors + ": all 2 voxels are NaN or infinite; nothing to draw");
+    // float64 beyond the float range becomes infinite, hence empty.
+    const std::string one = writeFile("huge.raw", header("1 1 1", "float64"),
+                                      std::vector<double>{1e300});
+    EXPECT_EQ(errorOf<DataError>(one),
+              one + ": its only voxel is NaN or infinite; nothing to draw");
 }
 
 TEST(RawVolume, reportsMissingFolderTruncatedAndOversizedFiles) {

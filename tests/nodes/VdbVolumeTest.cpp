@@ -120,7 +120,8 @@ TEST(VdbVolume, readsAFloatGridByNameWithItsTransform) {
     EXPECT_EQ(statistics.finiteCount, 2);
     EXPECT_EQ(statistics.nonFiniteCount, 2);
     ASSERT_EQ(warnings.size(), 1u);
-    EXPECT_EQ(warnings[0], path + ": 2 voxels are NaN or infinite; treated as empty");
+    EXPECT_EQ(warnings[0], path + ": grid 'density': 2 voxels are NaN or infinite; treated as "
+                                  "empty");
 }
 
 TEST(VdbVolume, readsAVectorGrid) {
@@ -143,9 +144,11 @@ TEST(VdbVolume, sparseGridsStaySparseInMemory) {
     openvdb::io::File(path).write({grid});
 
     std::vector<double> fractions;
+    std::vector<std::string> messages;
     const AnyGrid any = readVdbGrid(path, "sparse", [&](double fraction, std::string_view text) {
         fractions.push_back(fraction);
-        EXPECT_EQ(text, "copying grid 'sparse'");
+        if (messages.empty() || messages.back() != text)
+            messages.emplace_back(text);
         return true;
     });
     const auto& sparse = dynamic_cast<const SparseScalarGrid&>(*std::get<ScalarGridPtr>(any));
@@ -158,6 +161,9 @@ TEST(VdbVolume, sparseGridsStaySparseInMemory) {
     EXPECT_EQ(sparse.value({70, 8, 7}), 0.0f);
     EXPECT_EQ(fractions.front(), 0.0);
     EXPECT_EQ(fractions.back(), 1.0);
+    // OpenVDB's own read of the grid comes first, then the copy into blocks.
+    EXPECT_EQ(messages,
+              (std::vector<std::string>{"reading grid 'sparse'", "copying grid 'sparse'"}));
 
     EXPECT_EQ(errorOf<LoadCancelled>([&] {
                   readVdbGrid(path, "sparse", [](double, std::string_view) { return false; });
@@ -177,6 +183,26 @@ TEST(VdbVolume, reportsWrongNamesTypesAndTransforms) {
                      "transform; only axis-aligned scale and translation are supported");
     EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "empty"); }),
               path + ": grid 'empty' has no active voxels");
+}
+
+TEST(VdbVolume, refusesAGridWhoseActiveVoxelsAreAllNanOrInfinite) {
+    openvdb::initialize();
+    auto fog = openvdb::FloatGrid::create(0.0f);
+    fog->setName("fog");
+    fog->getAccessor().setValue({0, 0, 0}, std::numeric_limits<float>::quiet_NaN());
+    fog->getAccessor().setValue({100, 0, 0}, -std::numeric_limits<float>::infinity());
+    // An active tile of NaN: 512 more voxels, none finite.
+    fog->tree().addTile(1, openvdb::Coord(64, 0, 0), std::numeric_limits<float>::quiet_NaN(),
+                        true);
+    auto wind = openvdb::Vec3SGrid::create(openvdb::Vec3s(0.0f));
+    wind->setName("wind");
+    wind->getAccessor().setValue({1, 2, 3}, openvdb::Vec3s(1.0f, std::nanf(""), 0.0f));
+    const std::string path = testPath("nan.vdb");
+    openvdb::io::File(path).write({fog, wind});
+    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "fog"); }),
+              path + ": grid 'fog': all 514 voxels are NaN or infinite; nothing to draw");
+    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "wind"); }),
+              path + ": grid 'wind': its only voxel is NaN or infinite; nothing to draw");
 }
 
 TEST(VdbVolume, reportsMissingAndForeignFiles) {

@@ -6,6 +6,7 @@
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/RawVolume.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/Log.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/SearchAction.h"
@@ -16,13 +17,38 @@
 #include <openvdb/openvdb.h>
 #endif
 
+#include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
 
 namespace texsplat::nodes {
 namespace {
 
 using test::errorOf;
 using test::testPath;
+
+// Collects the Info messages logged while it lives.
+class InfoLog {
+public:
+    InfoLog()
+        : mPrevious(setLogSink([this](LogLevel level, std::string_view message) {
+              if (level == LogLevel::Info)
+                  mMessages.emplace_back(message);
+          })) {}
+    ~InfoLog() { setLogSink(mPrevious); }
+    InfoLog(const InfoLog&) = delete;
+    InfoLog& operator=(const InfoLog&) = delete;
+
+    const std::vector<std::string>& messages() const { return mMessages; }
+
+private:
+    std::vector<std::string> mMessages;
+    LogSink mPrevious;
+};
 
 VolumeData::Ptr generated(VolumeSource source, float samples) {
     const auto volume = VolumeData::create();
@@ -101,9 +127,50 @@ TEST(VolumeData, readsARawFile) {
     const auto volume = VolumeData::create();
     volume->source.setValue(VolumeSource::FileRaw);
     volume->fileName = path;
+    const InfoLog log;
     const volume::ScalarGridPtr read = volume->scalarGrid();
     EXPECT_EQ(read->geometry(), grid.geometry());
     EXPECT_EQ(read->value({1, 2, 3}), 42.0f);
+    EXPECT_TRUE(log.messages().empty()) << "a small file loads quietly";
+}
+
+TEST(VolumeData, logsTheProgressOfABigFile) {
+    // 256^3 float32 = 64 MiB, the size from which progress is logged: a file of zeros, sparse on
+    // disk, read in 16 chunks of 4 MiB.
+    const std::string path = testPath("big.raw");
+    {
+        std::ofstream(path, std::ios::binary) << "texsplat-raw 1\ndims 256 256 256\ntype float32\n"
+                                                 "data\n";
+    }
+    std::filesystem::resize_file(path, std::filesystem::file_size(path) +
+                                           volume::kLogProgressFileBytes);
+    const auto volume = VolumeData::create();
+    volume->setName("big");
+    volume->source.setValue(VolumeSource::FileRaw);
+    volume->fileName = path;
+    std::vector<std::string> expected;
+    for (const char* step : {"", " 12%", " 25%", " 31%", " 43%", " 50%", " 62%", " 75%", " 81%",
+                             " 93%", " 100%"})
+        expected.push_back("VolumeData 'big': " + path + ": reading" + step);
+    {
+        const InfoLog log;
+        EXPECT_EQ(volume->scalarGrid()->geometry().dims(), glm::i64vec3(256));
+        EXPECT_EQ(log.messages(), expected);
+    }
+    std::filesystem::remove(path);
+}
+
+TEST(VolumeData, progressOfSmallFilesIsLoggedOnlyOnceTheLoadIsSlow) {
+    const InfoLog log;
+    volume::ProgressCallback progress = volume::logProgress("slow.vdb", 1000);
+    EXPECT_TRUE(progress(0.0, "reading grid 'fog'"));
+    std::this_thread::sleep_for(std::chrono::duration<double>(volume::kLogProgressDelaySeconds));
+    EXPECT_TRUE(progress(0.42, "copying grid 'fog'"));
+    EXPECT_TRUE(progress(0.45, "copying grid 'fog'"));
+    EXPECT_TRUE(progress(0.5, "copying grid 'fog'"));
+    EXPECT_EQ(log.messages(),
+              (std::vector<std::string>{"slow.vdb: copying grid 'fog' 42%",
+                                        "slow.vdb: copying grid 'fog' 50%"}));
 }
 
 #ifdef TEXSPLAT_WITH_OPENVDB

@@ -23,12 +23,16 @@ std::ifstream openForReading(const std::string& path) {
     return in;
 }
 
-void warnAboutNonFiniteVoxels(const std::string& source, const GridStatistics& statistics) {
+void checkFiniteVoxels(const std::string& source, const GridStatistics& statistics) {
     if (statistics.nonFiniteCount == 0)
         return;
     const bool one = statistics.nonFiniteCount == 1;
-    log(LogLevel::Warning, source + ": " + std::to_string(statistics.nonFiniteCount) +
-                               (one ? " voxel is" : " voxels are") +
+    const std::string count = std::to_string(statistics.nonFiniteCount);
+    if (statistics.finiteCount == 0)
+        throw DataError(source + ": " +
+                        (one ? std::string("its only voxel is") : "all " + count + " voxels are") +
+                        " NaN or infinite; nothing to draw");
+    log(LogLevel::Warning, source + ": " + count + (one ? " voxel is" : " voxels are") +
                                " NaN or infinite; treated as empty");
 }
 

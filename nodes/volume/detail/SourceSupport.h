@@ -11,8 +11,11 @@ namespace texsplat::volume::detail {
 /// @throws IoError "path: cannot open file (reason)" when it is missing, unreadable or a folder.
 std::ifstream openForReading(const std::string& path);
 
-/// @brief Logs the one warning a loader gives for empty (NaN or infinite) voxels, naming the
-/// source and the count; nothing when there are none.
-void warnAboutNonFiniteVoxels(const std::string& source, const GridStatistics& statistics);
+/// @brief The one check a loader makes of the voxels it read. Logs one warning for empty (NaN or
+/// infinite) voxels, naming the source and the count ("f.raw: 3 voxels are NaN or infinite;
+/// treated as empty"); nothing when there are none.
+/// @throws DataError "<source>: all N voxels are NaN or infinite; nothing to draw" when no voxel
+/// is finite: such a grid would render as an empty image that hides the bad input.
+void checkFiniteVoxels(const std::string& source, const GridStatistics& statistics);
 
 } // namespace texsplat::volume::detail
