@@ -17,11 +17,13 @@
 namespace texsplat::nodes {
 
 Camera::Camera() {
+    addField(viewportMapping, "viewportMapping", ViewportMapping::AdjustCamera,
+             kViewportMappingNames);
     addField(position, "position", glm::vec3(0.0f, 0.0f, 1.0f));
     addField(orientation, "orientation", sg::Rotation());
-    addField(aspectRatio, "aspectRatio", 1.0f);
     addField(nearDistance, "nearDistance", 1.0f);
     addField(farDistance, "farDistance", 10.0f);
+    addField(aspectRatio, "aspectRatio", 1.0f);
     addField(focalDistance, "focalDistance", 5.0f);
 }
 

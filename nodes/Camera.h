@@ -2,12 +2,32 @@
 
 #include "scenegraph/Box3.h"
 #include "scenegraph/Declare.h"
+#include "scenegraph/EnumNames.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/fields/Fields.h"
+#include "scenegraph/fields/SFEnum.h"
 
 #include <glm/glm.hpp>
 
 namespace texsplat::nodes {
+
+/// @brief How Inventor fits a camera's view volume to a viewport of another aspect ratio
+/// (SoCamera::ViewportMapping).
+enum class ViewportMapping {
+    CropViewportFillFrame, ///< crop the viewport to the camera's aspect, fill the rest
+    CropViewportLineFrame, ///< crop the viewport, draw a frame around it
+    CropViewportNoFrame,   ///< crop the viewport
+    AdjustCamera,          ///< widen the view volume to the viewport (Inventor's default)
+    LeaveAlone,            ///< stretch the image to the viewport
+};
+
+/// @brief Scene-file names of ViewportMapping.
+inline const sg::EnumNames kViewportMappingNames{
+    {"CROP_VIEWPORT_FILL_FRAME", ViewportMapping::CropViewportFillFrame},
+    {"CROP_VIEWPORT_LINE_FRAME", ViewportMapping::CropViewportLineFrame},
+    {"CROP_VIEWPORT_NO_FRAME", ViewportMapping::CropViewportNoFrame},
+    {"ADJUST_CAMERA", ViewportMapping::AdjustCamera},
+    {"LEAVE_ALONE", ViewportMapping::LeaveAlone}};
 
 /// @brief Near and far clipping distances along the viewing direction.
 struct DepthRange {
@@ -24,30 +44,35 @@ struct DepthRange {
 /// into CameraElement (so a Transform above a camera moves it, as in Inventor). The render action
 /// uses the last camera met.
 ///
-/// `aspectRatio` (width / height) is kept for Inventor files; the render action passes the
-/// viewport's aspect to projectionMatrix(). `focalDistance` is the distance to the point of
-/// interest (what a viewer orbits around); viewAll() sets it to the bounding sphere's centre.
+/// `viewportMapping` and `aspectRatio` (width / height) are read and written, so Inventor files
+/// pass through unchanged, but not used by texsplat's renderer: it passes the viewport's aspect
+/// to projectionMatrix(), which keeps the vertical opening and fits the width to the viewport
+/// (Inventor's ADJUST_CAMERA does the same for viewports wider than tall).
+/// `focalDistance` is the distance to the point of interest (what a viewer orbits around);
+/// viewAll() sets it to the bounding sphere's centre. The fields come in Inventor's order.
 ///
 /// File format (fields common to both cameras):
 /// @code
-/// position       0 0 1
-/// orientation    0 0 1 0
-/// aspectRatio    1
-/// nearDistance   1
-/// farDistance    10
-/// focalDistance  5
+/// viewportMapping  ADJUST_CAMERA   # SFEnum (ViewportMapping), not used
+/// position         0 0 1
+/// orientation      0 0 1 0
+/// nearDistance     1
+/// farDistance      10
+/// aspectRatio      1               # not used
+/// focalDistance    5
 /// @endcode
 class Camera : public sg::Declare<Camera, sg::Node> {
 public:
     /// @brief The abstract type's name.
     static constexpr const char* kTypeName = "Camera";
 
-    sg::SFVec3f position;      ///< viewpoint, in the camera's local space
+    sg::SFEnum viewportMapping; ///< ViewportMapping; read and written, not used
+    sg::SFVec3f position;       ///< viewpoint, in the camera's local space
     sg::SFRotation orientation; ///< rotation of the default view direction (0,0,-1)
-    sg::SFFloat aspectRatio;   ///< width / height the camera was set up for (Inventor's field)
-    sg::SFFloat nearDistance;  ///< distance of the near clipping plane
-    sg::SFFloat farDistance;   ///< distance of the far clipping plane
-    sg::SFFloat focalDistance; ///< distance to the point of interest
+    sg::SFFloat nearDistance;   ///< distance of the near clipping plane
+    sg::SFFloat farDistance;    ///< distance of the far clipping plane
+    sg::SFFloat aspectRatio;    ///< width / height the camera was set up for; not used
+    sg::SFFloat focalDistance;  ///< distance to the point of interest
 
     /// @brief The world-to-camera matrix (column vectors): the inverse of the camera's
     /// placement, translation `position` after rotation `orientation`.

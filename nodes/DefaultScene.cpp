@@ -36,7 +36,7 @@ sg::Separator::Ptr fiberGeometry() {
     }
     faces->coordIndex.setValue(indices);
     Material::Ptr material = Material::create();
-    material->diffuseColor.setValue(glm::vec3(0.85f, 0.85f, 0.9f));
+    material->diffuseColor.setValue({glm::vec3(0.85f, 0.85f, 0.9f)});
     sg::Separator::Ptr fibers = sg::Separator::create();
     fibers->setName("fibers");
     fibers->addChild(material);

@@ -14,6 +14,9 @@ namespace texsplat::nodes {
 
 IndexedFaceSet::IndexedFaceSet() {
     addField(coordIndex, "coordIndex", std::vector<std::int32_t>{});
+    addField(materialIndex, "materialIndex", std::vector<std::int32_t>{-1});
+    addField(normalIndex, "normalIndex", std::vector<std::int32_t>{-1});
+    addField(textureCoordIndex, "textureCoordIndex", std::vector<std::int32_t>{-1});
 }
 
 namespace {

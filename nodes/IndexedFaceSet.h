@@ -22,10 +22,19 @@ namespace texsplat::nodes {
 /// colour of the current Material. A polygon with fewer than 3 points, an index below -1 or past
 /// the last point throws DataError naming the position in `coordIndex`.
 ///
+/// `materialIndex`, `normalIndex` and `textureCoordIndex` are Inventor's per-face or per-vertex
+/// indices into the current materials, normals and texture coordinates. They are read and
+/// written, so Inventor files pass through unchanged, but not used by texsplat's renderer (it
+/// has one material per shape and computes the normals). Unlike Inventor (`coordIndex 0`), an
+/// IndexedFaceSet has no polygons by default; either way nothing is drawn.
+///
 /// File format:
 /// @code
 /// IndexedFaceSet {
-///     coordIndex  [ ]
+///     coordIndex         [ ]
+///     materialIndex      -1   # not used
+///     normalIndex        -1   # not used
+///     textureCoordIndex  -1   # not used
 /// }
 /// @endcode
 class IndexedFaceSet : public sg::Declare<IndexedFaceSet, sg::Node> {
@@ -33,7 +42,10 @@ public:
     /// @brief The scene-file name.
     static constexpr const char* kTypeName = "IndexedFaceSet";
 
-    sg::MFInt32 coordIndex; ///< polygons of point indices, each ended by -1
+    sg::MFInt32 coordIndex;        ///< polygons of point indices, each ended by -1
+    sg::MFInt32 materialIndex;     ///< Inventor's material indices; read and written, not used
+    sg::MFInt32 normalIndex;       ///< Inventor's normal indices; read and written, not used
+    sg::MFInt32 textureCoordIndex; ///< Inventor's texture coordinate indices; not used
 
     /// @brief The triangles of the polygons over `points`, coloured `color`.
     /// @throws DataError for a bad index or a polygon with fewer than 3 points.

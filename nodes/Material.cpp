@@ -4,33 +4,51 @@
 #include "nodes/elements/MaterialElement.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/Action.h"
+#include "scenegraph/fields/ValueFormat.h"
 
 #include <cmath>
+#include <vector>
 
 namespace texsplat::nodes {
 
 Material::Material() {
     const MaterialElement defaults;
-    addField(diffuseColor, "diffuseColor", defaults.diffuseColor);
-    addField(emissiveColor, "emissiveColor", defaults.emissiveColor);
-    addField(transparency, "transparency", defaults.transparency);
+    // Inventor's defaults; the ones texsplat uses come from MaterialElement.
+    addField(ambientColor, "ambientColor", std::vector<glm::vec3>{glm::vec3(0.2f)});
+    addField(diffuseColor, "diffuseColor", std::vector<glm::vec3>{defaults.diffuseColor});
+    addField(specularColor, "specularColor", std::vector<glm::vec3>{glm::vec3(0.0f)});
+    addField(emissiveColor, "emissiveColor", std::vector<glm::vec3>{defaults.emissiveColor});
+    addField(shininess, "shininess", std::vector<float>{0.2f});
+    addField(transparency, "transparency", std::vector<float>{defaults.transparency});
 }
 
 void Material::doAction(sg::Action& action) {
-    for (const sg::SFColor* color : {&diffuseColor, &emissiveColor}) {
-        const glm::vec3& rgb = color->value();
+    // Check before modifying, so that a bad value leaves the state as it was.
+    for (const sg::MFColor* color : {&diffuseColor, &emissiveColor}) {
+        if (color->isEmpty()) {
+            continue;
+        }
+        const glm::vec3& rgb = (*color)[0];
         if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b)) {
             throw DataError(detail::nodeContext(*this) + ": " + color->name() +
-                            " must be finite, got " + color->valueText());
+                            " must be finite, got " + sg::formatFloat(rgb.r) + " " +
+                            sg::formatFloat(rgb.g) + " " + sg::formatFloat(rgb.b));
         }
     }
-    const float t = transparency.value();
-    if (!(t >= 0.0f && t <= 1.0f)) {
+    if (!transparency.isEmpty() && !(transparency[0] >= 0.0f && transparency[0] <= 1.0f)) {
         throw DataError(detail::nodeContext(*this) + ": transparency must lie in [0, 1], got " +
-                        transparency.valueText());
+                        sg::formatFloat(transparency[0]));
     }
-    action.state().modify<MaterialElement>() =
-        MaterialElement{diffuseColor.value(), emissiveColor.value(), t};
+    MaterialElement& element = action.state().modify<MaterialElement>();
+    if (!diffuseColor.isEmpty()) {
+        element.diffuseColor = diffuseColor[0];
+    }
+    if (!emissiveColor.isEmpty()) {
+        element.emissiveColor = emissiveColor[0];
+    }
+    if (!transparency.isEmpty()) {
+        element.transparency = transparency[0];
+    }
 }
 
 } // namespace texsplat::nodes

@@ -14,13 +14,14 @@ namespace texsplat::nodes {
 /// File format:
 /// @code
 /// OrthographicCamera {
-///     position       0 0 1
-///     orientation    0 0 1 0
-///     aspectRatio    1
-///     nearDistance   1
-///     farDistance    10
-///     focalDistance  5
-///     height         2
+///     viewportMapping  ADJUST_CAMERA
+///     position         0 0 1
+///     orientation      0 0 1 0
+///     nearDistance     1
+///     farDistance      10
+///     aspectRatio      1
+///     focalDistance    5
+///     height           2
 /// }
 /// @endcode
 class OrthographicCamera : public sg::Declare<OrthographicCamera, Camera> {

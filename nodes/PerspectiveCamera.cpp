@@ -12,14 +12,13 @@
 namespace texsplat::nodes {
 
 namespace {
-// Inventor's default: 45 degrees.
-constexpr float kDefaultHeightAngle = 0.785398f;
 // A perspective near plane closer than far / kDepthRatio wastes the depth buffer's precision.
 constexpr float kDepthRatio = 1000.0f;
 } // namespace
 
 PerspectiveCamera::PerspectiveCamera() {
-    addField(heightAngle, "heightAngle", kDefaultHeightAngle);
+    // Inventor's default: 45 degrees.
+    addField(heightAngle, "heightAngle", glm::quarter_pi<float>());
 }
 
 void PerspectiveCamera::checkHeightAngle() const {

@@ -14,13 +14,14 @@ namespace texsplat::nodes {
 /// File format:
 /// @code
 /// PerspectiveCamera {
-///     position       0 0 1
-///     orientation    0 0 1 0
-///     aspectRatio    1
-///     nearDistance   1
-///     farDistance    10
-///     focalDistance  5
-///     heightAngle    0.785398
+///     viewportMapping  ADJUST_CAMERA
+///     position         0 0 1
+///     orientation      0 0 1 0
+///     nearDistance     1
+///     farDistance      10
+///     aspectRatio      1
+///     focalDistance    5
+///     heightAngle      0.7853982   # pi / 4
 /// }
 /// @endcode
 class PerspectiveCamera : public sg::Declare<PerspectiveCamera, Camera> {

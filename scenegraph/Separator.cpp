@@ -4,6 +4,13 @@
 
 namespace texsplat::sg {
 
+Separator::Separator() {
+    addField(renderCaching, "renderCaching", CacheEnabled::Auto, kCacheEnabledNames);
+    addField(boundingBoxCaching, "boundingBoxCaching", CacheEnabled::Auto, kCacheEnabledNames);
+    addField(renderCulling, "renderCulling", CacheEnabled::Auto, kCacheEnabledNames);
+    addField(pickCulling, "pickCulling", CacheEnabled::Auto, kCacheEnabledNames);
+}
+
 void Separator::doAction(Action& action) {
     State& state = action.state();
     state.push();

@@ -7,7 +7,7 @@ ElapsedTime::ElapsedTime() {
     addField(speed, "speed", 1.0f);
     addField(on, "on", true);
     addField(pause, "pause", false);
-    addField(reset, "reset", false);
+    addField(reset, "reset", SFTrigger::Value{});
     addOutput(timeOut, "timeOut");
 }
 

@@ -4,6 +4,7 @@
 #include "scenegraph/Engine.h"
 #include "scenegraph/EngineOutput.h"
 #include "scenegraph/fields/Fields.h"
+#include "scenegraph/fields/SFTrigger.h"
 
 namespace texsplat::sg {
 
@@ -23,11 +24,12 @@ namespace texsplat::sg {
 ///   lost).
 /// - `pause`: TRUE freezes the output while the time keeps counting; FALSE makes the output
 ///   jump to where it would have been.
-/// - `reset`: any set (or touch) restarts the count at 0. Inventor declares it an SFTrigger,
-///   a field without a value; the core has none yet, so it is an SFBool whose value is ignored.
+/// - `reset`: a trigger (SFTrigger, no value): firing it (`reset.setValue()`, or `reset` alone
+///   in a file) or touching it restarts the count at 0.
 ///
 /// Times are SFFloat (Inventor's SFTime is a double; the core has no double field yet); the
-/// engine accumulates in double and rounds only the output.
+/// engine accumulates in double and rounds only the output. Coin reads and writes these files:
+/// it converts its SFTime output to the SFFloat fields connected from it.
 ///
 /// File format:
 /// @code
@@ -36,7 +38,7 @@ namespace texsplat::sg {
 ///     speed 1       # SFFloat
 ///     on TRUE       # SFBool
 ///     pause FALSE   # SFBool
-///     reset FALSE   # SFBool (a trigger; the value is ignored)
+///     reset         # SFTrigger (no value: the name alone fires it)
 /// }               # output: timeOut (SFFloat)
 /// @endcode
 class ElapsedTime : public Declare<ElapsedTime, Engine> {
@@ -52,8 +54,8 @@ public:
     SFBool on;
     /// @brief TRUE freezes the output; the time keeps counting.
     SFBool pause;
-    /// @brief A trigger: any set restarts the count at 0.
-    SFBool reset;
+    /// @brief Firing it restarts the count at 0.
+    SFTrigger reset;
     /// @brief The elapsed time in seconds.
     EngineOutput<SFFloat> timeOut;
 

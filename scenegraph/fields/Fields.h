@@ -1,8 +1,8 @@
 #pragma once
 
 /// @file
-/// @brief The value field types, as Inventor names them. SFEnum, SFNode and MFNode have their
-/// own headers (they need more than a value).
+/// @brief The value field types, as Inventor names them. SFEnum, SFNode, MFNode and SFTrigger
+/// have their own headers (they need more than a value, or have none).
 ///
 /// | type       | C++ value        | ASCII                                  | zero value   |
 /// |------------|------------------|----------------------------------------|--------------|

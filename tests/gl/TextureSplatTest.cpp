@@ -133,8 +133,8 @@ TEST(TextureSplat, splatsBehindAnOpaqueMeshAreHiddenAndInFrontBlendOverIt) {
     IndexedFaceSet::Ptr square = IndexedFaceSet::create();
     square->coordIndex.setValue({0, 1, 2, 3, -1});
     Material::Ptr red = Material::create();
-    red->diffuseColor.setValue(glm::vec3(0.0f));
-    red->emissiveColor.setValue(glm::vec3(1.0f, 0.0f, 0.0f));
+    red->diffuseColor.setValue({glm::vec3(0.0f)});
+    red->emissiveColor.setValue({glm::vec3(1.0f, 0.0f, 0.0f)});
     sg::Separator::Ptr root =
         volumeScene(camera, path, {red, corners, square, TextureSplat::create()});
     frame(*camera, *root);
@@ -183,6 +183,92 @@ TEST(TextureSplat, cameraInsideAtTheNearPlaneFarAwayAndCloseGivesFiniteImages) {
     const image::Image close = render({-0.3f, -0.3f, -0.3f}, {1.0f, 1.0f, 1.0f}, 0.001f, 100.0f);
     test::expectFiniteAndNotEmpty(close, "close: one splat covers the screen");
     EXPECT_GT(close.statistics().minimum.r, 0.0);
+}
+
+// With the eye inside the volume, only the voxels in front of the eye plane make splats: the
+// count is exactly the number of voxel centres c with (c − eye)·d > 0, fewer than from outside.
+TEST(TextureSplat, eyeInsideTheVolumeCullsTheSplatsBehindIt) {
+    test::sharedContext();
+    constexpr int kSize = 10;
+    const std::string path = shellVolume(kSize, 2);
+    const auto splatsDrawn = [&path](const glm::vec3& position, const glm::vec3& direction) {
+        PerspectiveCamera::Ptr camera = PerspectiveCamera::create();
+        camera->position.setValue(position);
+        camera->orientation.setValue(render::rotationLookingAlong(direction));
+        camera->nearDistance.setValue(0.01f);
+        camera->farDistance.setValue(100.0f);
+        sg::Separator::Ptr root = volumeScene(camera, path, {TextureSplat::create()});
+        const test::RenderedFrame frame = test::renderFrame(*root, 33, 33);
+        test::expectFiniteAndNotEmpty(frame.image, "camera at " + std::to_string(position.z));
+        return frame.statistics.splats;
+    };
+    const glm::vec3 direction(0.3f, 0.2f, -1.0f);
+    const glm::vec3 inside(4.5f, 4.5f, 4.5f);
+    std::size_t inFront = 0;
+    for (int k = 0; k < kSize; ++k) {
+        for (int j = 0; j < kSize; ++j) {
+            for (int i = 0; i < kSize; ++i) {
+                // No voxel centre lies on this eye plane (0.3a + 0.2b − c = 0 has no solution in
+                // half-odd a, b, c), so float rounding cannot flip one.
+                inFront += glm::dot(glm::vec3(i, j, k) - inside, direction) > 0.0f ? 1 : 0;
+            }
+        }
+    }
+    const std::size_t outsideCount = splatsDrawn(inside - 30.0f * direction, direction);
+    const std::size_t insideCount = splatsDrawn(inside, direction);
+    EXPECT_EQ(outsideCount, static_cast<std::size_t>(kSize * kSize * kSize));
+    EXPECT_EQ(insideCount, inFront);
+    EXPECT_LT(insideCount, outsideCount);
+    RecordProperty("splats_outside", std::to_string(outsideCount));
+    RecordProperty("splats_inside", std::to_string(insideCount));
+}
+
+// The paper's figure 2 through the scene nodes: a raw file of one 16 x 16 layer of value 1,
+// classified to emission 1 and no opacity, drawn by TextureSplat (paper kernel, default 64²
+// texture) through an orthographic camera looking down z into the float framebuffer.
+TEST(TextureSplat, figure2LayerThroughTheNodesIsAsFlatAsThePaperReports) {
+    test::sharedContext();
+    volume::DenseGrid<float> layer{
+        volume::GridGeometry(glm::i64vec3(test::kLayerVoxels, test::kLayerVoxels, 1))};
+    for (int j = 0; j < test::kLayerVoxels; ++j) {
+        for (int i = 0; i < test::kLayerVoxels; ++i) {
+            layer.setValue({i, j, 0}, 1.0f);
+        }
+    }
+    TransferFunction::Ptr glow = TransferFunction::create();
+    glow->colorValues.setValue({0.0f, 1.0f});
+    glow->colors.setValue({glm::vec3(1.0f), glm::vec3(1.0f)});
+    glow->opacities.setValue({0.0f, 0.0f});
+    glow->emission.setValue(1.0f);
+    // Pixel centres on the lattice k/8 (as SplatBatch's figure-2 test): the view's left edge is
+    // half a pixel left of voxel 0's centre.
+    const float pixel = 1.0f / test::kPixelsPerVoxel;
+    const float half = 0.5f * static_cast<float>(test::kLayerVoxels);
+    OrthographicCamera::Ptr camera = OrthographicCamera::create();
+    camera->position.setValue(glm::vec3(half - 0.5f * pixel, half - 0.5f * pixel, 10.0f));
+    camera->height.setValue(static_cast<float>(test::kLayerVoxels));
+    camera->nearDistance.setValue(1.0f);
+    camera->farDistance.setValue(20.0f);
+    sg::Separator::Ptr root = sg::Separator::create();
+    root->addChild(camera);
+    root->addChild(glow);
+    root->addChild(rawVolume(test::writeTestVolume("figure2_layer", layer)));
+    root->addChild(TextureSplat::create());
+    const test::RenderedFrame frame =
+        test::renderFrame(*root, test::kLayerImageSize, test::kLayerImageSize);
+    EXPECT_EQ(frame.statistics.splats,
+              static_cast<std::size_t>(test::kLayerVoxels * test::kLayerVoxels));
+    std::vector<float> red;
+    for (const glm::vec4& color : frame.image.pixels()) {
+        red.push_back(color.r);
+    }
+    EXPECT_EQ(frame.image.statistics().maximum.a, 0.0) << "transparent splats must leave alpha 0";
+    const test::LayerStatistics statistics =
+        test::layerInteriorStatistics(red, test::kLayerImageSize);
+    test::reportLayer("scene nodes: raw file, TransferFunction, TextureSplat", statistics);
+    EXPECT_NEAR(statistics.mean, 1.0, 2e-3);
+    EXPECT_NEAR(statistics.relativeMax(), test::kPaperLayerMax, 1e-3 * test::kPaperLayerMax);
+    EXPECT_NEAR(statistics.relativeMin(), test::kPaperLayerMin, 1e-3 * test::kPaperLayerMin);
 }
 
 TEST(TextureSplat, reportsMissingStateAndBadFields) {

@@ -65,7 +65,7 @@ TEST(Fibers, drawsTheAerogelFibersOfTheCurrentVolume) {
     volume->source.setValue(VolumeSource::Aerogel);
     volume->resolution = glm::vec3(6.0f);
     const auto material = Material::create();
-    material->diffuseColor = glm::vec3(0.1f, 0.2f, 0.3f);
+    material->diffuseColor.setValue({glm::vec3(0.1f, 0.2f, 0.3f)});
     const auto fibers = Fibers::create();
     fibers->segments = 6;
     const auto probe = test::StateProbe::create();

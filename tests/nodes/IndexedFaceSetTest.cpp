@@ -69,7 +69,7 @@ TEST(IndexedFaceSet, usesTheStatesCoordinatesAndMaterial) {
     const auto coordinates = Coordinate3::create();
     coordinates->point.setValue(kPoints);
     const auto material = Material::create();
-    material->diffuseColor = glm::vec3(0.0f, 1.0f, 0.0f);
+    material->diffuseColor.setValue({glm::vec3(0.0f, 1.0f, 0.0f)});
     const auto faces = IndexedFaceSet::create();
     faces->coordIndex.setValue({1, 4, 5, -1});
     const auto probe = test::StateProbe::create();

@@ -42,7 +42,7 @@ TEST(PerspectiveCamera, hasInventorDefaults) {
     EXPECT_EQ(camera->farDistance.value(), 10.0f);
     EXPECT_EQ(camera->focalDistance.value(), 5.0f);
     EXPECT_EQ(camera->aspectRatio.value(), 1.0f);
-    EXPECT_FLOAT_EQ(camera->heightAngle.value(), 0.785398f);
+    EXPECT_EQ(camera->heightAngle.value(), glm::quarter_pi<float>());
     EXPECT_EQ(camera->viewDirection(), glm::vec3(0.0f, 0.0f, -1.0f));
 }
 

@@ -93,8 +93,8 @@ TEST(RayCastMethods, anOpaqueMeshHidesTheVolumeBehindItAndShowsThroughTheFront) 
     IndexedFaceSet::Ptr square = IndexedFaceSet::create();
     square->coordIndex.setValue({0, 1, 2, 3, -1});
     Material::Ptr red = Material::create();
-    red->diffuseColor.setValue(glm::vec3(0.0f));
-    red->emissiveColor.setValue(glm::vec3(1.0f, 0.0f, 0.0f));
+    red->diffuseColor.setValue({glm::vec3(0.0f)});
+    red->emissiveColor.setValue({glm::vec3(1.0f, 0.0f, 0.0f)});
     sg::Separator::Ptr root = sg::Separator::create();
     for (const sg::Node::Ptr& node : std::vector<sg::Node::Ptr>{
              camera, glowAndWall(), cube("glow8", 8, 1.0f), red, corners, square,
@@ -125,7 +125,7 @@ TEST(RayCastMethods, meshesAreLitLikeTheOpaquePass) {
         IndexedFaceSet::Ptr square = IndexedFaceSet::create();
         square->coordIndex.setValue({0, 1, 2, 3, -1});
         Material::Ptr material = Material::create();
-        material->diffuseColor.setValue(glm::vec3(0.2f, 0.4f, 0.8f));
+        material->diffuseColor.setValue({glm::vec3(0.2f, 0.4f, 0.8f)});
         OrthographicCamera::Ptr camera = OrthographicCamera::create();
         camera->position.setValue(glm::vec3(0.0f, 0.0f, 10.0f));
         camera->height.setValue(2.0f);

@@ -1,6 +1,7 @@
 // Coin3D, a real Open Inventor implementation, reads what WriteAction writes (standard and
 // extension nodes), and SceneReader reads what Coin writes. coin_interop_tool is the Coin side.
 
+#include "CoinInteropSupport.h"
 #include "SceneTestSupport.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/Switch.h"
@@ -11,55 +12,18 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
-#include <unistd.h>
 
 using namespace texsplat::sg;
 using namespace texsplat::sg::test;
 
 namespace {
 
-class CoinInteropTest : public ::testing::Test {
+class CoinInteropTest : public CoinInteropFixture {
 protected:
     void SetUp() override {
-#ifndef TEXSPLAT_COIN_INTEROP_TOOL
-        GTEST_SKIP() << "Coin3D (libcoin-dev, CMake package Coin) was not found when "
-                        "configuring: the Coin interop tests are skipped";
-#endif
+        CoinInteropFixture::SetUp();
         registerSceneTestTypes();
-        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        mDirectory = std::filesystem::path(::testing::TempDir()) /
-                     ("texsplat_coin_" + std::to_string(getpid()) + "_" + info->name());
-        std::filesystem::create_directories(mDirectory);
-    }
-    void TearDown() override { std::filesystem::remove_all(mDirectory); }
-
-    std::string path(const std::string& name) const { return (mDirectory / name).string(); }
-
-    // Runs coin_interop_tool with `arguments`; returns its stdout, fails the test on exit != 0.
-    std::string runCoin(const std::string& arguments) const {
-#ifdef TEXSPLAT_COIN_INTEROP_TOOL
-        const std::string output = path("coin_stdout.txt");
-        const std::string command = std::string(TEXSPLAT_COIN_INTEROP_TOOL) + " " + arguments +
-                                    " >" + output + " 2>" + path("coin_stderr.txt");
-        const int status = std::system(command.c_str());
-        EXPECT_EQ(status, 0) << "coin_interop_tool " << arguments << ": "
-                             << readText(path("coin_stderr.txt"));
-        return readText(output);
-#else
-        return arguments;
-#endif
-    }
-
-    static std::string readText(const std::string& file) {
-        std::ifstream stream(file);
-        std::ostringstream text;
-        text << stream.rdbuf();
-        return text.str();
     }
 
     // Standard nodes, sharing, names, every field type of an extension node and a pass-through
@@ -68,6 +32,7 @@ protected:
     // it decides which nodes are shared (it warns "writeref < 0"), so those are not shared.
     static Node::Ptr makeScene() {
         const auto root = Separator::create();
+        root->renderCulling.setValue(CacheEnabled::On);
         const auto shared = Group::create();
         const auto chooser = Switch::create();
         chooser->setName("chooser");
@@ -105,15 +70,13 @@ protected:
         }
         return root;
     }
-
-private:
-    std::filesystem::path mDirectory;
 };
 
 TEST_F(CoinInteropTest, coinReadsOurStandardAndExtensionNodes) {
     const Node::Ptr scene = makeScene();
     WriteAction::writeFile(*scene, path("ours.iv"));
     const std::string description = runCoin("describe " + path("ours.iv"));
+    EXPECT_EQ(description.rfind("Separator\n  renderCulling ON\n", 0), 0u) << description;
     EXPECT_NE(description.find("  Switch \"chooser\"\n    whichChild 0\n    Group\n"),
               std::string::npos)
         << description;
@@ -121,7 +84,7 @@ TEST_F(CoinInteropTest, coinReadsOurStandardAndExtensionNodes) {
               std::string::npos)
         << description;
     EXPECT_NE(description.find("    quality FINAL\n"), std::string::npos) << description;
-    EXPECT_NE(description.find("  ForeignNode\n    mode WEIRD\n    points [  ]\n"
+    EXPECT_NE(description.find("  ForeignNode\n    mode WEIRD\n    points [ ]\n"
                                "  TestCube \"cube\"\n    size 0.1\n"),
               std::string::npos)
         << description;
@@ -139,9 +102,12 @@ TEST_F(CoinInteropTest, coinReadsEngineConnectionsToExtensionNodes) {
     const auto cube = TestCube::create();
     const auto time = ElapsedTime::create();
     time->speed.setValue(2.0f);
+    time->reset.setValue(); // written as `reset` alone, which Coin reads (not `reset TRUE`)
     cube->size.connectFrom(time->timeOut);
     WriteAction::writeFile(*cube, path("ours.iv"));
-    EXPECT_EQ(runCoin("describe " + path("ours.iv")), "Separator\n  TestCube\n    size connected\n");
+    EXPECT_NE(readText(path("ours.iv")).find("        reset\n"), std::string::npos);
+    EXPECT_EQ(runCoin("describe " + path("ours.iv")),
+              "Separator\n  TestCube\n    size = ElapsedTime . timeOut\n        speed 2\n");
     runCoin("rewrite " + path("ours.iv") + " " + path("coin.iv"));
     const auto reread = std::dynamic_pointer_cast<Group>(SceneReader::readFile(path("coin.iv")));
     ASSERT_NE(reread, nullptr);
@@ -155,6 +121,10 @@ TEST_F(CoinInteropTest, weReadWhatCoinWrites) {
     runCoin("sample " + path("coin.iv"));
     const auto root = std::dynamic_pointer_cast<Separator>(SceneReader::readFile(path("coin.iv")));
     ASSERT_NE(root, nullptr);
+    EXPECT_EQ(root->renderCaching.as<CacheEnabled>(), CacheEnabled::Off);
+    EXPECT_TRUE(root->boundingBoxCaching.isDefault());
+    EXPECT_TRUE(root->renderCulling.isDefault());
+    EXPECT_EQ(root->pickCulling.as<CacheEnabled>(), CacheEnabled::On);
     ASSERT_EQ(root->childCount(), 4u);
     const auto chooser = std::dynamic_pointer_cast<Switch>(root->child(0));
     ASSERT_NE(chooser, nullptr);

@@ -1,11 +1,14 @@
 #include "scenegraph/engines/ElapsedTime.h"
 
+#include "scenegraph/Error.h"
 #include "scenegraph/NodeRegistry.h"
 #include "scenegraph/engines/EngineTypes.h"
+#include "scenegraph/io/SceneReader.h"
+#include "scenegraph/io/WriteAction.h"
 #include "scenegraph/sensors/SensorQueue.h"
 #include "scenegraph/sensors/SimulatedClock.h"
 
-#include "TestNodes.h"
+#include "SceneTestSupport.h"
 
 #include <gtest/gtest.h>
 
@@ -90,8 +93,33 @@ TEST(ElapsedTime, resetRestartsAtZero) {
     elapsed->reset.touch();
     EXPECT_EQ(elapsed->timeOut.value(), 0.0f);
     EXPECT_EQ(at(*elapsed, 6.0f), 2.0f);
-    elapsed->reset = true; // any set is a trigger, whatever the value
+    elapsed->reset.setValue();
     EXPECT_EQ(at(*elapsed, 6.5f), 1.0f);
+}
+
+// Inventor's reset is an SFTrigger: its name alone, no value (Coin rejects `reset TRUE`).
+TEST(ElapsedTime, resetIsWrittenAndReadAsItsNameAlone) {
+    test::registerSceneTestTypes();
+    const auto cube = test::TestCube::create();
+    const auto elapsed = ElapsedTime::create();
+    cube->size.connectFrom(elapsed->timeOut);
+    elapsed->reset.setValue();
+    const std::string text = WriteAction::writeString(*cube);
+    EXPECT_NE(text.find("    size = ElapsedTime {\n        reset\n    } . timeOut\n"),
+              std::string::npos)
+        << text;
+    const Node::Ptr copy = SceneReader::readString(text, "reset.iv");
+    EXPECT_EQ(test::graphDifference(*cube, *copy), "");
+    try {
+        SceneReader::readString("#Inventor V2.1 ascii\n"
+                                "TestCube { size = ElapsedTime { reset TRUE } . timeOut }\n",
+                                "value.iv");
+        FAIL() << "read a value for a trigger";
+    } catch (const texsplat::ParseError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  "value.iv:2:39: unknown field 'TRUE' of ElapsedTime (fields: timeIn, speed, on, "
+                  "pause, reset)");
+    }
 }
 
 TEST(ElapsedTime, pausedEngineDoesNotNotifyConnectedFields) {
@@ -138,7 +166,7 @@ TEST(ElapsedTime, isRegisteredForSceneFiles) {
     EXPECT_EQ(object->asNode(), nullptr);
     ASSERT_NE(object->findField("speed"), nullptr);
     EXPECT_EQ(object->findField("speed")->typeName(), "SFFloat");
-    EXPECT_EQ(object->findField("reset")->typeName(), "SFBool");
+    EXPECT_EQ(object->findField("reset")->typeName(), "SFTrigger");
     auto* engine = dynamic_cast<Engine*>(object.get());
     ASSERT_NE(engine, nullptr);
     ASSERT_NE(engine->findOutput("timeOut"), nullptr);

@@ -2,8 +2,13 @@
 
 #include "TestNodes.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/io/SceneReader.h"
+#include "scenegraph/io/WriteAction.h"
 
 #include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
 
 namespace texsplat::sg {
 namespace {
@@ -47,7 +52,27 @@ TEST(Separator, isRegisteredAsAGroup) {
     Separator::Ptr separator = Separator::create();
     EXPECT_EQ(separator->typeName(), "Separator");
     EXPECT_TRUE(separator->type().isDerivedFrom(Group::classType()));
-    EXPECT_TRUE(separator->fields().empty());
+}
+
+// Inventor's caching and culling hints: read and written (Coin writes them), not used.
+TEST(Separator, readsAndWritesInventorsCachingFields) {
+    const Separator::Ptr separator = Separator::create();
+    std::vector<std::string> names;
+    for (const Field* field : separator->fields()) {
+        names.push_back(field->name() + " " + field->valueText());
+    }
+    EXPECT_EQ(names, (std::vector<std::string>{"renderCaching AUTO", "boundingBoxCaching AUTO",
+                                               "renderCulling AUTO", "pickCulling AUTO"}));
+    const std::string text = "#Inventor V2.1 ascii\n\nSeparator {\n    renderCaching OFF\n"
+                             "    boundingBoxCaching ON\n    renderCulling OFF\n"
+                             "    pickCulling ON\n}\n";
+    const auto read = std::dynamic_pointer_cast<Separator>(SceneReader::readString(text));
+    ASSERT_NE(read, nullptr);
+    EXPECT_EQ(read->renderCaching.as<CacheEnabled>(), CacheEnabled::Off);
+    EXPECT_EQ(read->boundingBoxCaching.as<CacheEnabled>(), CacheEnabled::On);
+    EXPECT_EQ(read->renderCulling.as<CacheEnabled>(), CacheEnabled::Off);
+    EXPECT_EQ(read->pickCulling.as<CacheEnabled>(), CacheEnabled::On);
+    EXPECT_EQ(WriteAction::writeString(*read), text);
 }
 
 } // namespace
