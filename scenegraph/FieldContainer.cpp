@@ -5,23 +5,22 @@
 #include "scenegraph/fields/Field.h"
 
 #include <cctype>
+#include <string>
+#include <string_view>
 
 namespace texsplat::sg {
 
 namespace {
 
-// Inventor's name rule (Coin's SbName::isBaseNameChar / isIdentStartChar).
+// Inventor's name rule (Coin's SbName::isBaseNameChar), made exactly what the scene reader reads
+// back whole (SceneLexer::readName()): names also end at the list punctuation `[`, `]` and `,`,
+// and '+' starts the `+N` suffix that the reader strips (a leading '#' starts a comment, and a
+// leading digit is excluded by setName()).
+constexpr std::string_view kForbiddenNameChars = "\"'+,.[\\]{}";
+
 bool isNameChar(char c) {
     const auto byte = static_cast<unsigned char>(c);
-    if (byte <= 0x20 || byte == 0x7f) {
-        return false;
-    }
-    for (char bad : std::string_view("\"'+.\\{}")) {
-        if (c == bad) {
-            return false;
-        }
-    }
-    return true;
+    return byte > 0x20 && byte != 0x7f && kForbiddenNameChars.find(c) == std::string_view::npos;
 }
 
 } // namespace
@@ -43,14 +42,16 @@ Field* FieldContainer::findField(std::string_view name) const {
 }
 
 void FieldContainer::setName(std::string name) {
-    bool isValid = name.empty() || std::isdigit(static_cast<unsigned char>(name.front())) == 0;
+    bool isValid = name.empty() || (std::isdigit(static_cast<unsigned char>(name.front())) == 0 &&
+                                    name.front() != '#');
     for (char c : name) {
         isValid = isValid && isNameChar(c);
     }
     if (!isValid) {
         throw DataError(describe() + ": invalid name '" + name +
-                        "' (a name must not start with a digit and must not contain "
-                        "whitespace, control characters or any of \"'+.\\{})");
+                        "' (a name must not start with a digit or '#' and must not contain "
+                        "whitespace, control characters or any of " +
+                        std::string(kForbiddenNameChars) + ")");
     }
     mName = std::move(name);
 }

@@ -42,9 +42,9 @@ public:
     /// @brief The name used for DEF/USE and SearchAction; empty when unnamed.
     const std::string& name() const { return mName; }
 
-    /// @brief Sets the name. Throws DataError when it is not a valid Inventor name (it must not
-    /// start with a digit and must not contain whitespace, control characters or any of
-    /// `"'+.\{}`). An empty name removes it.
+    /// @brief Sets the name. Throws DataError unless it is a valid Inventor name that scene files
+    /// can hold: it must not start with a digit or `#` and must not contain whitespace, control
+    /// characters or any of `"'+,.[\]{}`. An empty name removes it.
     void setName(std::string name);
 
     /// @brief "Type" or "Type(name)": how error messages refer to this container.

@@ -1,5 +1,6 @@
 #include "scenegraph/fields/Field.h"
 
+#include "scenegraph/Assert.h"
 #include "scenegraph/Engine.h"
 #include "scenegraph/EngineOutputBase.h"
 #include "scenegraph/Error.h"
@@ -8,7 +9,7 @@
 #include "scenegraph/fields/FieldValueWriter.h"
 
 #include <algorithm>
-#include <unordered_set>
+#include <unordered_map>
 
 namespace texsplat::sg {
 
@@ -48,6 +49,66 @@ private:
     bool mIsInList = false;
     bool mIsListStart = false;
 };
+
+// One element of a connection chain: a field or an engine output.
+struct ChainLink {
+    const Field* field;
+    const EngineOutputBase* output;
+
+    const void* key() const {
+        return field != nullptr ? static_cast<const void*>(field)
+                                : static_cast<const void*>(output);
+    }
+    std::string fullName() const {
+        return field != nullptr ? field->fullName() : output->fullName();
+    }
+};
+
+// The longest chain, in links, that leaves `start` through `next(link, neighbours)`, which appends
+// the links one step further. Each link is visited once and no recursion is used, so the cost is
+// the size of the region reached. Reaching `stop` calls `onStop(path)` (which must throw) with the
+// links from `start` to the one that leads to `stop`; otherwise the region must be acyclic.
+template <class Next, class OnStop>
+std::size_t longestChain(ChainLink start, const void* stop, const Next& next,
+                         const OnStop& onStop) {
+    struct Step {
+        ChainLink link;
+        std::vector<ChainLink> neighbours;
+        std::size_t nextNeighbour = 0;
+        std::size_t length = 0;
+    };
+    std::unordered_map<const void*, std::size_t> lengths;
+    std::vector<Step> steps(1, Step{start, {}});
+    next(start, steps.back().neighbours);
+    std::vector<ChainLink> path;
+    while (true) {
+        Step& step = steps.back();
+        if (step.nextNeighbour < step.neighbours.size()) {
+            const ChainLink neighbour = step.neighbours[step.nextNeighbour++];
+            if (neighbour.key() == stop) {
+                path.clear();
+                for (const Step& onPath : steps) {
+                    path.push_back(onPath.link);
+                }
+                onStop(path);
+            }
+            if (const auto known = lengths.find(neighbour.key()); known != lengths.end()) {
+                step.length = std::max(step.length, known->second + 1);
+            } else {
+                steps.push_back(Step{neighbour, {}});
+                next(neighbour, steps.back().neighbours);
+            }
+            continue;
+        }
+        const std::size_t length = step.length;
+        lengths.emplace(step.link.key(), length);
+        steps.pop_back();
+        if (steps.empty()) {
+            return length;
+        }
+        steps.back().length = std::max(steps.back().length, length + 1);
+    }
+}
 
 void eraseOne(std::vector<Field*>& fields, Field* field) {
     auto found = std::find(fields.begin(), fields.end(), field);
@@ -125,7 +186,7 @@ void Field::connectFrom(EngineOutputBase& output) {
     std::shared_ptr<FieldContainer> engine = output.engine().shared_from_this();
     disconnect();
     mSourceOutput = &output;
-    mSourceEngine = std::move(engine);
+    mSourceOwner = std::move(engine);
     output.mTargets.push_back(this);
     receive(output.valueField());
 }
@@ -139,8 +200,14 @@ void Field::disconnect() {
         eraseOne(mSourceOutput->mTargets, this);
         mSourceOutput = nullptr;
     }
-    // Last: releasing the engine may destroy it and its outputs.
-    std::shared_ptr<FieldContainer> engine = std::move(mSourceEngine);
+    // Last: releasing the owner may destroy it and its fields or outputs.
+    std::shared_ptr<FieldContainer> owner = std::move(mSourceOwner);
+}
+
+void Field::keepSourceAlive() {
+    TEXSPLAT_ASSERT(mSourceField != nullptr && mSourceField->mContainer != nullptr,
+                    "Field::keepSourceAlive(): not connected from a field of a container");
+    mSourceOwner = mSourceField->mContainer->shared_from_this();
 }
 
 void Field::checkConnectable(std::string_view sourceType, const std::string& sourceName,
@@ -151,51 +218,65 @@ void Field::checkConnectable(std::string_view sourceType, const std::string& sou
     if (sourceType != typeName()) {
         throw DataError(what + ": the types differ");
     }
-    // Depth-first search upstream of the source (fields follow their source; an engine output
-    // depends on all inputs of its engine). Reaching this field means a cycle.
-    struct Step {
-        const Field* field;
-        const EngineOutputBase* output;
-        std::size_t previous;
+    if (sourceField == this) {
+        throw DataError(what + ": connection cycle " + fullName() + " <- " + fullName());
+    }
+    // Reaching this field upstream of the source means the connection closes a cycle.
+    const auto cycle = [&](const std::vector<ChainLink>& path) {
+        std::string chain = fullName();
+        for (const ChainLink& link : path) {
+            chain += " <- " + link.fullName();
+        }
+        throw DataError(what + ": connection cycle " + chain + " <- " + fullName());
     };
-    constexpr std::size_t kNone = static_cast<std::size_t>(-1);
-    std::vector<Step> steps{{sourceField, sourceOutput, kNone}};
-    std::vector<std::size_t> pending{0};
-    std::unordered_set<const void*> visited{sourceField != nullptr
-                                                ? static_cast<const void*>(sourceField)
-                                                : static_cast<const void*>(sourceOutput)};
-    auto visit = [&](const Field* field, const EngineOutputBase* output, std::size_t from) {
-        const void* key = field != nullptr ? static_cast<const void*>(field)
-                                           : static_cast<const void*>(output);
-        if (key != nullptr && visited.insert(key).second) {
-            steps.push_back({field, output, from});
-            pending.push_back(steps.size() - 1);
+    // Upstream a field follows its source alone: a plain list, walked without bookkeeping.
+    std::vector<ChainLink> path{{sourceField, sourceOutput}};
+    while (path.back().field != nullptr && path.back().field->isConnected()) {
+        const Field& field = *path.back().field;
+        if (field.mSourceField == this) {
+            cycle(path);
+        }
+        path.push_back({field.mSourceField, field.mSourceOutput});
+    }
+    std::size_t above = path.size() - 1;
+    if (const EngineOutputBase* output = path.back().output) {
+        // An engine output follows all inputs of its engine: the chains branch from here.
+        const auto upstream = [](const ChainLink& link, std::vector<ChainLink>& next) {
+            if (link.field == nullptr) {
+                for (const Field* input : link.output->engine().fields()) {
+                    next.push_back({input, nullptr});
+                }
+            } else if (link.field->isConnected()) {
+                next.push_back({link.field->mSourceField, link.field->mSourceOutput});
+            }
+        };
+        path.pop_back();
+        above += longestChain({nullptr, output}, this, upstream,
+                              [&](const std::vector<ChainLink>& rest) {
+                                  path.insert(path.end(), rest.begin(), rest.end());
+                                  cycle(path);
+                              });
+    }
+    // Downstream a field feeds its targets and, as an engine input, its engine's outputs.
+    const auto downstream = [](const ChainLink& link, std::vector<ChainLink>& next) {
+        const std::vector<Field*>& targets =
+            link.field != nullptr ? link.field->mTargets : link.output->connectedFields();
+        for (const Field* target : targets) {
+            next.push_back({target, nullptr});
+        }
+        const auto* engine =
+            dynamic_cast<const Engine*>(link.field != nullptr ? link.field->mContainer : nullptr);
+        if (engine != nullptr) {
+            for (const EngineOutputBase* output : engine->outputs()) {
+                next.push_back({nullptr, output});
+            }
         }
     };
-    while (!pending.empty()) {
-        const std::size_t index = pending.back();
-        pending.pop_back();
-        const Step step = steps[index];
-        if (step.field == this) {
-            // Names from the source down to the field that depends on this one.
-            std::vector<std::string> names;
-            for (std::size_t i = step.previous; i != kNone; i = steps[i].previous) {
-                names.push_back(steps[i].field != nullptr ? steps[i].field->fullName()
-                                                          : steps[i].output->fullName());
-            }
-            std::string chain = fullName();
-            for (auto name = names.rbegin(); name != names.rend(); ++name) {
-                chain += " <- " + *name;
-            }
-            throw DataError(what + ": connection cycle " + chain + " <- " + fullName());
-        }
-        if (step.field != nullptr) {
-            visit(step.field->mSourceField, step.field->mSourceOutput, index);
-        } else {
-            for (const Field* input : step.output->engine().fields()) {
-                visit(input, nullptr, index);
-            }
-        }
+    // No cycle can be downstream (nothing to stop at): every connection so far was checked.
+    const std::size_t below = longestChain({this, nullptr}, nullptr, downstream, cycle);
+    if (above + 1 + below > kMaxConnectionChain) {
+        throw DataError(what + ": connection chain longer than the limit of " +
+                        std::to_string(kMaxConnectionChain) + " links");
     }
 }
 

@@ -13,7 +13,9 @@ namespace texsplat::sg {
 /// The syntax is Inventor's: `#` comments; nodes as `Type { fields… children… }`;
 /// `DEF name` / `USE name` (a USEd node is the same shared node, not a copy); field values as
 /// each field type defines them (`[ … ]` lists, a single MF value without brackets);
-/// connections `field = Engine { … } . output` and `field = USE name . field`. Types come from
+/// connections `field = Engine { … } . output` and `field = USE name . field` (a connection
+/// holds a source that nothing else in the scene holds, such as a node written in place; chains
+/// of connections may be Field::kMaxConnectionChain links long). Types come from
 /// the NodeRegistry; a node of an unregistered type is read when it describes itself
 /// (`fields [ SFFloat size ]`) and becomes an UnknownNode that writes back identically.
 ///

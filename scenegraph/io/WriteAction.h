@@ -24,7 +24,9 @@ namespace texsplat::sg {
 /// survive. Types that Inventor itself does not define (our extension nodes, UnknownNode)
 /// describe their fields, `fields [ SFFloat size, … ]` (engines: `inputs [ … ] outputs [ … ]`),
 /// so other Inventor readers can parse and pass them through. Connections are written as
-/// `field = Engine { … } . output` or `field = USE name . field`.
+/// `field = Engine { … } . output` or `field = USE name . field`, with the source in place where
+/// it is not written before, also when it is outside the scene (the reader makes the connection
+/// hold such a source, so the connection survives).
 ///
 /// The action registers one method, for Node::classType(), that writes any node; its
 /// traversal depth limit (Action::kMaxDepth) bounds the nesting.

@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <memory>
+
 namespace texsplat::sg {
 namespace {
 
@@ -103,6 +105,22 @@ TEST(Field, connectionIsDroppedWhenTheSourceDies) {
     }
     EXPECT_FALSE(b->size.isConnected());
     EXPECT_EQ(b->size.value(), 3.0f);
+}
+
+TEST(Field, aConnectionCanKeepItsSourceAlive) {
+    TestCube::Ptr b = TestCube::create();
+    std::weak_ptr<TestCube> source;
+    {
+        TestCube::Ptr a = TestCube::create();
+        source = a;
+        b->size.connectFrom(a->size);
+        b->size.keepSourceAlive();
+    }
+    ASSERT_FALSE(source.expired());
+    source.lock()->size = 4.0f;
+    EXPECT_EQ(b->size.value(), 4.0f);
+    b->size.disconnect();
+    EXPECT_TRUE(source.expired());
 }
 
 TEST(Field, connectingDifferentTypesIsRejected) {

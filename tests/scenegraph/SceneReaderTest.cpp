@@ -5,9 +5,12 @@
 #include "scenegraph/Separator.h"
 #include "scenegraph/Switch.h"
 #include "scenegraph/io/UnknownNode.h"
+#include "scenegraph/io/WriteAction.h"
 
 #include <gtest/gtest.h>
 
+#include <clocale>
+#include <locale>
 #include <string>
 #include <vector>
 
@@ -102,6 +105,43 @@ TEST_F(SceneReaderTest, readsNonFiniteAndDenormalFloats) {
     EXPECT_TRUE(std::isnan(as<TestCube>(read("TestCube { size nan }"))->size.value()));
 }
 
+TEST_F(SceneReaderTest, readsAndWritesNumbersTheSameInEveryLocale) {
+    // An application may switch to a locale whose decimal separator is a comma.
+    const std::string previousC = std::setlocale(LC_ALL, nullptr);
+    const std::locale previous;
+    const char* commaLocale = nullptr;
+    for (const char* name : {"de_DE.UTF-8", "de_DE.utf8", "fr_FR.UTF-8", "fr_FR.utf8", "de_DE",
+                             "fr_FR"}) {
+        if (std::setlocale(LC_ALL, name) != nullptr) {
+            commaLocale = name;
+            break;
+        }
+    }
+    if (commaLocale == nullptr) {
+        GTEST_SKIP() << "no comma-decimal locale (de_DE, fr_FR) is installed; `locale -a` lists "
+                        "those there are";
+    }
+    std::locale::global(std::locale(commaLocale));
+    struct Restore {
+        const std::string& previousC;
+        const std::locale& previous;
+        ~Restore() {
+            std::locale::global(previous);
+            std::setlocale(LC_ALL, previousC.c_str());
+        }
+    } restore{previousC, previous};
+    ASSERT_STREQ(std::localeconv()->decimal_point, ",");
+    const auto node = as<AllFields>(read("AllFields { size 0.5 weights [ 1.25, -2e-3 ] }"));
+    EXPECT_EQ(node->size.value(), 0.5f);
+    EXPECT_EQ(node->weights.values(), (std::vector<float>{1.25f, -2e-3f}));
+    const std::string text = WriteAction::writeString(*node);
+    EXPECT_NE(text.find("size 0.5\n"), std::string::npos) << text;
+    EXPECT_NE(text.find("weights [ 1.25, -0.002 ]\n"), std::string::npos) << text;
+    EXPECT_EQ(errorOf(kHeader + "TestCube { size 1e39 }"),
+              "scene.iv:2:17: number out of range for TestCube.size (SFFloat): '1e39' (largest "
+              "float is 3.4028235e+38)");
+}
+
 TEST_F(SceneReaderTest, keepsSharedNodesShared) {
     const auto root = as<Separator>(read(R"(
 Separator {
@@ -167,6 +207,42 @@ Separator {
     EXPECT_EQ(as<TestCube>(outer->child(0))->size.connectedField(), &outer->size);
 }
 
+TEST_F(SceneReaderTest, connectionsKeepSourcesThatNothingElseHolds) {
+    // A source written in place, and one whose only holder is dropped from the scene when its
+    // connection is replaced.
+    const auto root = as<Separator>(read(R"(
+Separator {
+    TestCube { size = TestCube { size 3 } . size }
+    TestCube {
+        size = AllFields { DEF inner TestCube { size 4 } } . size
+        size = USE inner . size
+    }
+})"));
+    for (std::size_t i = 0; i < 2; ++i) {
+        SCOPED_TRACE(i);
+        SFFloat& size = as<TestCube>(root->child(i))->size;
+        ASSERT_NE(size.connectedField(), nullptr);
+        EXPECT_EQ(size.value(), 3.0f + static_cast<float>(i));
+        static_cast<TestCube&>(*size.connectedField()->container()).size.setValue(8.0f);
+        EXPECT_EQ(size.value(), 8.0f);
+    }
+}
+
+TEST_F(SceneReaderTest, aSourceThatContainsItsTargetNeedsAnotherHolder) {
+    const auto root = as<Separator>(read(
+        "Separator { DEF t TestCube { size = DEF s AllFields { size 2 USE t } . size } USE s }"));
+    const auto target = as<TestCube>(root->child(0));
+    EXPECT_EQ(target->size.connectedField(), &as<AllFields>(root->child(1))->size);
+    EXPECT_EQ(target->size.value(), 2.0f);
+    // The inner source contains t1 too, but t1's own source is held by the scene: no cycle.
+    const auto outer = as<Separator>(read("Separator { DEF t1 TestCube { size = DEF s1 AllFields { "
+                                          "DEF t2 TestCube { size = AllFields { size 5 USE t1 } "
+                                          ". size } } . size } USE s1 }"));
+    const auto t2 = as<TestCube>(as<AllFields>(outer->child(1))->child(0));
+    ASSERT_NE(t2->size.connectedField(), nullptr);
+    EXPECT_EQ(t2->size.value(), 5.0f);
+}
+
 TEST_F(SceneReaderTest, putsSeveralTopLevelNodesUnderASeparator) {
     const auto root = as<Separator>(read("TestCube { } DEF g Group { } USE g"));
     ASSERT_EQ(root->childCount(), 3u);
@@ -230,8 +306,8 @@ TEST_F(SceneReaderTest, reportsEveryMalformedInputByLocationAndExpectation) {
          "scene.iv:3:1: expected '\"' to close the string opened at 2:19, got end of file"},
         {kHeader + "TestCube { sise 2 }",
          "scene.iv:2:12: unknown field 'sise' of TestCube (fields: size)"},
-        {kHeader + "Separator { size 2 }",
-         "scene.iv:2:13: unknown field 'size' of Separator (it has no fields)"},
+        {kHeader + "Group { size 2 }",
+         "scene.iv:2:9: unknown field 'size' of Group (it has no fields)"},
         {kHeader + "TestCube { size abc }",
          "scene.iv:2:17: expected a number for TestCube.size (SFFloat), got 'abc'"},
         {kHeader + "TestCube { size 1.5.2 }",
@@ -240,6 +316,15 @@ TEST_F(SceneReaderTest, reportsEveryMalformedInputByLocationAndExpectation) {
          "scene.iv:2:26: expected a number for AllFields.position (SFVec3f), got '}'"},
         {kHeader + "AllFields { position 1 2 3 4 }",
          "scene.iv:2:28: too many values for AllFields.position (SFVec3f), got '4'"},
+        {kHeader + "AllFields { label \"a\" \"b\" }",
+         "scene.iv:2:23: too many values for AllFields.label (SFString), got '\"b\"'"},
+        {kHeader + "AllFields { flag TRUE FALSE }",
+         "scene.iv:2:23: too many values for AllFields.flag (SFBool), got 'FALSE'"},
+        {kHeader + "AllFields { quality FINAL DRAFT }",
+         "scene.iv:2:27: too many values for AllFields.quality (SFEnum), got 'DRAFT'"},
+        {kHeader + "AllFields { names \"a\" \"b c\" }",
+         "scene.iv:2:23: too many values for AllFields.names (MFString), got '\"b c\"' (put "
+         "several values in [ ])"},
         {kHeader + "AllFields { weights 1 2 }",
          "scene.iv:2:23: too many values for AllFields.weights (MFFloat), got '2' "
          "(put several values in [ ])"},
@@ -293,13 +378,23 @@ TEST_F(SceneReaderTest, reportsEveryMalformedInputByLocationAndExpectation) {
         {kHeader + "NULL", "scene.iv:2:1: expected a node, got 'NULL' at the top level"},
         {kHeader + "1.5", "scene.iv:2:1: expected a node type name, got '1'"},
         {kHeader + "DEF 3d Group { }",
-         "scene.iv:2:8: Group: invalid name '3d' (a name must not start with a digit and must "
-         "not contain whitespace, control characters or any of \"'+.\\{})"},
+         "scene.iv:2:8: Group: invalid name '3d' (a name must not start with a digit or '#' "
+         "and must not contain whitespace, control characters or any of \"'+,.[\\]{})"},
         {kHeader + "TestCube { size = TestDoubler { } }",
          "scene.iv:2:35: expected '.' and a field or output name after the source of the "
          "connection to TestCube.size, got '}'"},
         {kHeader + "TestCube { size = TestDoubler { } . nothing }",
          "scene.iv:2:37: TestDoubler has no field or output 'nothing'"},
+        {kHeader + "DEF a TestCube { size = USE a . size }",
+         "scene.iv:2:33: cannot connect SFFloat TestCube(a).size from SFFloat TestCube(a).size: "
+         "connection cycle TestCube(a).size <- TestCube(a).size"},
+        {kHeader + "DEF a TestCube { size = DEF b TestCube { size = USE a . size } . size }",
+         "scene.iv:2:66: cannot connect SFFloat TestCube(a).size from SFFloat TestCube(b).size: "
+         "connection cycle TestCube(a).size <- TestCube(b).size <- TestCube(a).size"},
+        {kHeader + "DEF t TestCube { size = AllFields { USE t } . size }",
+         "scene.iv:2:25: cannot keep AllFields alive as the source of TestCube(t).size: it "
+         "contains TestCube(t) (directly or through others), and nothing else in the scene "
+         "holds it"},
         {kHeader + "TestCube { size = Bar { inputs [ SFFloat a ] outputs [ SFFloat b ] } . b }",
          "scene.iv:2:19: unknown engine type 'Bar' (engines must be registered to be read)"},
     };

@@ -119,6 +119,46 @@ Separator {
     expectRoundTrip(*root);
 }
 
+TEST_F(WriteActionTest, keepsConnectionsFromSourcesOutsideTheScene) {
+    // The source is not in the scene: it is written in place, and the connection read back
+    // holds it (here, the test holds it).
+    const auto source = TestCube::create();
+    source->size.setValue(3.0f);
+    const auto follower = TestCube::create();
+    follower->size.connectFrom(source->size);
+    EXPECT_EQ(WriteAction::writeString(*follower), R"(#Inventor V2.1 ascii
+
+TestCube {
+    fields [ SFFloat size ]
+    size = TestCube {
+        fields [ SFFloat size ]
+        size 3
+    } . size
+}
+)");
+    expectRoundTrip(*follower);
+    expectReadWriteRead(*follower);
+    const Node::Ptr copy = SceneReader::readString(
+        "#Inventor V2.1 ascii\nTestCube { size = TestCube { size 3 } . size }");
+    EXPECT_EQ(graphDifference(*follower, *copy), "");
+}
+
+TEST_F(WriteActionTest, writesEveryNameThatNodesAcceptSoThatItReadsBack) {
+    const auto root = Separator::create();
+    for (const char* name : {"_", "a#b", "box_1-a", "a=b", "a|b", "a/b", "a(1)", "a~!@$%^&*?<>;:`",
+                             "NULL", "USE", "DEF", "fields", "\xc3\xa9t\xc3\xa9"}) {
+        SCOPED_TRACE(name);
+        const auto named = TestCube::create();
+        named->setName(name);
+        const auto follower = TestCube::create();
+        follower->size.connectFrom(named->size);
+        root->addChild(named);
+        root->addChild(follower);
+        root->addChild(named);
+    }
+    expectRoundTrip(*root);
+}
+
 TEST_F(WriteActionTest, writesNodeListsOneNodePerLine) {
     const auto fields = AllFields::create();
     const auto inner = AllFields::create();

@@ -5,15 +5,17 @@
 
 namespace texsplat::sg::detail {
 
-/// @brief True for Inventor's number syntax: [sign] digits [. digits] [e [sign] digits] with
-/// at least one mantissa digit (`1`, `-.5`, `2.`, `1e-3`), and for `inf` and `nan` with an
-/// optional sign, which formatFloat() writes for non-finite values.
-bool isFloatText(std::string_view text);
+/// @brief How a word parses as a number.
+enum class ParsedNumber { Valid, Malformed, OutOfRange };
 
-/// @brief How a word parses as a 32-bit integer.
-enum class IntegerText { Valid, Malformed, OutOfRange };
+/// @brief Parses Inventor's number syntax into `value`: [sign] digits [. digits] [e [sign]
+/// digits] with at least one mantissa digit (`1`, `-.5`, `2.`, `1e-3`), and `inf` and `nan` with
+/// an optional sign, which formatFloat() writes for non-finite values. The same in every C and
+/// C++ locale. A value beyond the largest float is OutOfRange; one too small for a float reads as
+/// a denormal or a zero of its sign.
+ParsedNumber parseFloat(std::string_view text, float& value);
 
 /// @brief Parses a decimal or `0x` hexadecimal integer with an optional sign into `value`.
-IntegerText parseInt32(std::string_view text, std::int32_t& value);
+ParsedNumber parseInt32(std::string_view text, std::int32_t& value);
 
 } // namespace texsplat::sg::detail

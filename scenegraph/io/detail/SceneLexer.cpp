@@ -121,6 +121,15 @@ std::string SceneLexer::readWord() {
     return readWhile(isWordChar);
 }
 
+std::string SceneLexer::peekWord() {
+    peek();
+    std::size_t end = mPosition;
+    while (end < mText.size() && isWordChar(mText[end])) {
+        ++end;
+    }
+    return std::string(mText.substr(mPosition, end - mPosition));
+}
+
 std::string SceneLexer::readName() {
     peek();
     return readWhile(isNameChar);
@@ -156,11 +165,17 @@ std::string SceneLexer::describeNext() {
     if (c == '\0') {
         return "end of file";
     }
-    std::size_t end = mPosition;
-    while (end < mText.size() && isWordChar(mText[end])) {
-        ++end;
+    std::size_t end = mPosition + 1;
+    if (c == '"') {
+        // The whole string, if it closes on this line.
+        while (end < mText.size() && mText[end] != '"' && mText[end] != '\n') {
+            end += mText[end] == '\\' && end + 1 < mText.size() ? 2 : 1;
+        }
+        end += end < mText.size() && mText[end] == '"' ? 1 : 0;
+    } else if (isWordChar(c)) {
+        end = mPosition + peekWord().size();
     }
-    return quote(mText.substr(mPosition, end == mPosition ? 1 : end - mPosition));
+    return quote(mText.substr(mPosition, end - mPosition));
 }
 
 void SceneLexer::fail(SourceLocation where, const std::string& message) const {

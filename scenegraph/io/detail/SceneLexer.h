@@ -43,6 +43,9 @@ public:
     /// next character cannot start one.
     std::string readWord();
 
+    /// @brief The word readWord() would return, without consuming it.
+    std::string peekWord();
+
     /// @brief An Inventor name (DEF/USE names, type and field names): everything up to
     /// whitespace, a control character or one of `"'.\{}[],`. Empty when none comes next.
     std::string readName();
@@ -53,7 +56,8 @@ public:
     /// @brief Where the next token starts (after skipping whitespace and comments).
     SourceLocation location();
 
-    /// @brief The next token as a message shows it: `'word'`, `'}'` or `end of file`.
+    /// @brief The next token as a message shows it: `'word'`, `'"a string"'`, `'}'` or
+    /// `end of file`.
     std::string describeNext();
 
     /// @brief Throws ParseError located at `where`.

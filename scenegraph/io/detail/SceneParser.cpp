@@ -2,6 +2,7 @@
 
 #include "scenegraph/Engine.h"
 #include "scenegraph/EngineOutputBase.h"
+#include "scenegraph/EnumNames.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Group.h"
 #include "scenegraph/NodeRegistry.h"
@@ -13,9 +14,6 @@
 #include "scenegraph/io/detail/NumberText.h"
 
 #include <cctype>
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
 #include <limits>
 
 namespace texsplat::sg::detail {
@@ -57,25 +55,33 @@ std::shared_ptr<Node> SceneParser::parseFile() {
     if (roots.empty()) {
         mLexer.fail(mLexer.location(), "expected a node after the header, got end of file");
     }
-    if (roots.size() == 1) {
-        return roots.front();
+    std::shared_ptr<Node> root = roots.front();
+    if (roots.size() > 1) {
+        const Separator::Ptr separator = Separator::create();
+        for (std::shared_ptr<Node>& node : roots) {
+            separator->addChild(std::move(node));
+        }
+        root = separator;
     }
-    const Separator::Ptr root = Separator::create();
-    for (std::shared_ptr<Node>& node : roots) {
-        root->addChild(std::move(node));
+    if (const ReadConnection* unheld = keepUnheldSources(*root, mConnections)) {
+        mLexer.fail(unheld->where, "cannot keep " + unheld->source->describe() +
+                                       " alive as the source of " + unheld->field->fullName() +
+                                       ": it contains " + unheld->field->container()->describe() +
+                                       " (directly or through others), and nothing else in the "
+                                       "scene holds it");
     }
     return root;
 }
 
 float SceneParser::readFloat() {
     const std::string word = valueWord("a number");
-    if (!isFloatText(word)) {
+    float value = 0.0f;
+    switch (parseFloat(word, value)) {
+    case ParsedNumber::Valid:
+        break;
+    case ParsedNumber::Malformed:
         failExpected("a number", "'" + word + "'");
-    }
-    errno = 0;
-    const float value = std::strtof(word.c_str(), nullptr);
-    // ERANGE also reports underflow to a denormal or zero, which is a fine value.
-    if (errno == ERANGE && std::isinf(value)) {
+    case ParsedNumber::OutOfRange:
         fail("number out of range" + fieldContext() + ": '" + word + "' (largest float is " +
              formatFloat(std::numeric_limits<float>::max()) + ")");
     }
@@ -86,11 +92,11 @@ std::int32_t SceneParser::readInt32() {
     const std::string word = valueWord("an integer");
     std::int32_t value = 0;
     switch (parseInt32(word, value)) {
-    case IntegerText::Valid:
+    case ParsedNumber::Valid:
         break;
-    case IntegerText::Malformed:
+    case ParsedNumber::Malformed:
         failExpected("an integer", "'" + word + "'");
-    case IntegerText::OutOfRange:
+    case ParsedNumber::OutOfRange:
         fail("integer out of range" + fieldContext() + ": '" + word +
              "' (expected -2147483648 to 2147483647)");
     }
@@ -142,11 +148,6 @@ std::shared_ptr<Node> SceneParser::readNode() {
 }
 
 void SceneParser::fail(const std::string& message) { mLexer.fail(mTokenStart, message); }
-
-std::shared_ptr<FieldContainer> SceneParser::readContainer() {
-    const SourceLocation where = mLexer.location();
-    return readContainerAfter(mLexer.readName(), where);
-}
 
 std::shared_ptr<FieldContainer> SceneParser::readContainerAfter(const std::string& word,
                                                                 SourceLocation where) {
@@ -385,7 +386,8 @@ void SceneParser::readFieldEntry(Field& field) {
 }
 
 void SceneParser::readConnection(Field& field) {
-    const std::shared_ptr<FieldContainer> source = readContainer();
+    const SourceLocation sourceAt = mLexer.location();
+    const std::shared_ptr<FieldContainer> source = readContainerAfter(mLexer.readName(), sourceAt);
     const SourceLocation dot = mLexer.location();
     if (!mLexer.consumeIf('.')) {
         mLexer.fail(dot, "expected '.' and a field or output name after the source of the "
@@ -399,6 +401,8 @@ void SceneParser::readConnection(Field& field) {
             field.connectFrom(*output);
         } else if (Field* sourceField = source->findField(name)) {
             field.connectFrom(*sourceField);
+            // Whether anything else holds the source is known once the whole graph is read.
+            mConnections.push_back({&field, source, sourceAt});
         } else {
             mLexer.fail(nameAt, source->describe() + " has no field or output '" + name + "'");
         }
@@ -408,7 +412,7 @@ void SceneParser::readConnection(Field& field) {
 }
 
 void SceneParser::checkNoExtraValue(const Field& field) {
-    if (!startsNumber(mLexer.peek())) {
+    if (!startsNumber(mLexer.peek()) && !isAnotherWordValue(field)) {
         return;
     }
     const bool isSingleMulti = field.typeName().substr(0, 2) == "MF" && !mHasReadList;
@@ -416,6 +420,23 @@ void SceneParser::checkNoExtraValue(const Field& field) {
                                        std::string(field.typeName()) + "), got " +
                                        mLexer.describeNext() +
                                        (isSingleMulti ? " (put several values in [ ])" : ""));
+}
+
+bool SceneParser::isAnotherWordValue(const Field& field) {
+    const std::string_view type = field.typeName();
+    if (mLexer.peek() == '"') {
+        return type == "SFString" || type == "MFString";
+    }
+    const std::string word = mLexer.peekWord();
+    if (word.empty() || field.container()->findField(word) != nullptr) {
+        return false;
+    }
+    if (type == "SFBool") {
+        return word == "TRUE" || word == "FALSE";
+    }
+    const auto* enumField = dynamic_cast<const SFEnum*>(&field);
+    return enumField != nullptr && enumField->enumNames() != nullptr &&
+           enumField->enumNames()->value(word).has_value();
 }
 
 std::string SceneParser::readIdentifier(const std::string& what) {

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "scenegraph/fields/FieldValueReader.h"
+#include "scenegraph/io/detail/ConnectionSources.h"
 #include "scenegraph/io/detail/SceneLexer.h"
 
 #include <map>
@@ -16,7 +17,9 @@ namespace texsplat::sg::detail {
 /// @brief The grammar of Inventor ASCII files: nodes, engines, DEF/USE, fields, field
 /// descriptions and connections. Fields parse their own values through the FieldValueReader
 /// interface this class implements; any error throws a located ParseError, and since the
-/// graph is only returned at the end, a failed parse leaves nothing behind.
+/// graph is only returned at the end, a failed parse leaves nothing behind. Once the graph is
+/// complete, field-to-field connections whose source nothing else holds are made to hold it
+/// (keepUnheldSources()).
 class SceneParser final : public FieldValueReader {
 public:
     /// @brief Deepest nesting of nodes and engines a file may have. Each level costs a few
@@ -51,7 +54,6 @@ private:
     };
     using Description = std::vector<DescribedField>;
 
-    std::shared_ptr<FieldContainer> readContainer();
     std::shared_ptr<FieldContainer> readContainerAfter(const std::string& word,
                                                        SourceLocation where);
     std::shared_ptr<FieldContainer> readInstance(const std::string& typeName,
@@ -66,6 +68,7 @@ private:
     void readFieldEntry(Field& field);
     void readConnection(Field& field);
     void checkNoExtraValue(const Field& field);
+    bool isAnotherWordValue(const Field& field);
     std::string readIdentifier(const std::string& what);
     std::string valueWord(const std::string& what);
     void checkListNotTruncated();
@@ -74,6 +77,7 @@ private:
 
     SceneLexer mLexer;
     std::map<std::string, std::shared_ptr<FieldContainer>, std::less<>> mDefinitions;
+    std::vector<ReadConnection> mConnections;
     int mNesting = 0;
     const Field* mCurrentField = nullptr;
     SourceLocation mTokenStart;
