@@ -4,6 +4,7 @@
 #include "nodes/bench/BenchReport.h"
 #include "nodes/bench/BenchRunner.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/FileExtension.h"
 #include "scenegraph/gl/EglContext.h"
 
 #include <CLI/CLI.hpp>
@@ -93,6 +94,9 @@ void runBench(const BenchArguments& arguments) {
     options.warmup = arguments.warmup;
     options.threads = arguments.threads;
     options.reference = !arguments.noReference;
+    if (!arguments.plot.empty()) {
+        requireFileExtension(arguments.plot, {".svg"}, "plot"); // before the long run
+    }
 
     gl::EglContext context;
     bench::BenchRunner runner(options);

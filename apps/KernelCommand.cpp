@@ -7,10 +7,12 @@
 #include "nodes/kernel/KernelPlot.h"
 #include "nodes/kernel/LatticeAnalysis.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/FileExtension.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -74,13 +76,22 @@ std::vector<double> parseNumbers(const std::string& text, size_t count, const ch
     return numbers;
 }
 
+// Runs check and puts the option's name in front of its DataError, as main prints it.
+template <typename Check> void checkOption(const char* option, const Check& check) {
+    try {
+        check();
+    } catch (const DataError& error) {
+        throw DataError(std::string(option) + ": " + error.what());
+    }
+}
+
 // JSON numbers: shortest round-trip form; NaN and infinities (which JSON lacks) become null.
 std::string number(double value) {
     if (!std::isfinite(value))
         return "null";
     char buffer[32];
-    std::snprintf(buffer, sizeof(buffer), "%.17g", value);
-    return buffer;
+    const std::to_chars_result end = std::to_chars(buffer, buffer + sizeof(buffer), value);
+    return std::string(buffer, end.ptr);
 }
 
 template <size_t N> std::string array(const std::array<double, N>& values) {
@@ -231,7 +242,7 @@ void printLocation(const char* name, const char* paper, const std::string& print
     std::printf("%-24s %12s %23s %23s\n", name, paper, printed.c_str(), optimized.c_str());
 }
 
-void printTable(const OptimizerResult& optimized) {
+void printTable(const KernelOptions& options, const OptimizerResult& optimized) {
     const CubicKernel paper = CubicKernel::paper();
     const LatticeAnalysis printedAnalysis(paper);
     const LatticeAnalysis optimizedAnalysis(optimized.kernel);
@@ -265,7 +276,8 @@ void printTable(const OptimizerResult& optimized) {
     printRow("2D layer min", PaperNumbers::kLayerMin, p2.min, o2.min);
     printLocation("  at (x, y)", "(.25,.25)", position(p2.minAt.data(), 2),
                   position(o2.minAt.data(), 2));
-    const GaussianFit gaussian = KernelOptimizer().fitGaussian(paper.support());
+    const GaussianFit gaussian =
+        KernelOptimizer().fitGaussian(options.support.value_or(paper.support()));
     const LatticeAnalysis gaussianAnalysis(gaussian.kernel);
     const Lattice3dStatistics g3 = gaussianAnalysis.lattice3d();
     const Layer2dStatistics g2 = gaussianAnalysis.layer2d();
@@ -316,11 +328,11 @@ void printOptimization(const OptimizerResult& result, double seconds) {
 void writeOutputs(const KernelOptions& options, const RadialKernel& kernel) {
     if (!options.texture.empty()) {
         const FootprintTexture texture(kernel, options.resolution, options.extent);
-        texture.writePfm(options.texture);
         const TextureRipple ripple = texture.measureLayerRipple(kernel);
         const TextureRipple ripple8 = texture.quantizedTo8Bits().measureLayerRipple(kernel);
+        texture.write(options.texture);
         std::fprintf(options.json ? stderr : stdout,
-                     "texture %s: %dx%d floats over [-%g, %g]^2; 2D layer sum %.6f .. %.6f "
+                     "texture %s: %dx%d texels over [-%g, %g]^2; 2D layer sum %.6f .. %.6f "
                      "(exact %.6f .. %.6f), texture adds up to %.3g; as 8-bit texels up to %.3g\n",
                      options.texture.c_str(), options.resolution, options.resolution,
                      options.extent, options.extent, ripple.min, ripple.max, ripple.exactMin,
@@ -330,10 +342,29 @@ void writeOutputs(const KernelOptions& options, const RadialKernel& kernel) {
         writeKernelPlot(kernel, options.plot);
 }
 
-void runKernelCommand(const KernelOptions& options) {
+// What the libraries would reject, checked before any work (the optimizer, output) and named by
+// its option. --support is checked on each lattice it is used on: the table's optimizer runs on
+// the cubic lattice even with --spacing.
+void checkOptions(const KernelOptions& options) {
     if (options.support && options.json && !options.optimize && options.kernel == "paper")
         throw DataError("--support: needs --kernel optimized|gaussian or --optimize with --json "
                         "(the paper's kernel has its own support)");
+    const OptimizerOptions onLattice = optimizerOptions(options, true);
+    checkOption("--spacing", [&] { LatticeAnalysis::checkSpacing(onLattice.spacing); });
+    if (options.support) {
+        checkOption("--support", [&] { KernelOptimizer{onLattice}; });
+        if (!options.json && !options.optimize)
+            checkOption("--support", [&] { KernelOptimizer{optimizerOptions(options, false)}; });
+    }
+    checkOption("--extent", [&] { FootprintTexture::checkExtent(options.extent); });
+    if (!options.texture.empty())
+        FootprintTexture::checkPath(options.texture);
+    if (!options.plot.empty())
+        requireFileExtension(options.plot, {".svg"}, "plot");
+}
+
+void runKernelCommand(const KernelOptions& options) {
+    checkOptions(options);
     const auto started = std::chrono::steady_clock::now();
     const NamedKernel named = makeKernel(options);
     const double seconds =
@@ -348,7 +379,7 @@ void runKernelCommand(const KernelOptions& options) {
             named.optimization && cubic
                 ? *named.optimization
                 : runOptimizer(options, optimizerOptions(options, false), false);
-        printTable(optimized);
+        printTable(options, optimized);
         if (!cubic)
             printAnisotropic(options, named.optimization
                                           ? *named.optimization
@@ -372,15 +403,24 @@ void addKernelCommand(CLI::App& app, int& exitCode) {
                       "Run the optimizer; print its path (progress on stderr) and result");
     command->add_option("--start", options->start,
                         "Optimizer start s,t,b,d (a = 1; default 0.9,1.55,-2,0.12)");
-    command->add_option("--support", options->support, "Optimize for this fixed support t");
+    command->add_option("--support", options->support,
+                        "Optimize for this fixed support t: more than half the cell diagonal, at "
+                        "most " +
+                            number(LatticeAnalysis::kMaxSupportInCellSizes) +
+                            " times the cube root of the cell volume");
     command->add_option("--spacing", options->spacing,
-                        "Voxel spacing sx,sy,sz of a non-cubic lattice");
-    command->add_option("--texture", options->texture, "Write the footprint texture (PFM)");
+                        "Voxel spacing sx,sy,sz of a non-cubic lattice, the largest at most " +
+                            number(LatticeAnalysis::kMaxSpacingRatio) + " times the smallest");
+    command->add_option("--texture", options->texture,
+                        "Write the footprint texture f: .pfm (float gray), .exr (float RGBA, each "
+                        "channel f) or .png (8-bit, white with alpha f)");
     command->add_option("--resolution", options->resolution, "Texture size N (default 64)")
         ->check(CLI::Range(2, 8192));
     command->add_option("--extent", options->extent,
-                        "Texture half-width in voxels (default 1.6, the paper's extent)");
-    command->add_option("--plot", options->plot, "Write g(r) and f(r) as SVG");
+                        "Texture half-width in voxels, at most " +
+                            number(FootprintTexture::kMaxExtent) +
+                            " (default 1.6, the paper's extent)");
+    command->add_option("--plot", options->plot, "Write g(r) and f(r) to this .svg file");
     command->callback([options, &exitCode] {
         runKernelCommand(*options);
         exitCode = kExitOk;

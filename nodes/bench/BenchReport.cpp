@@ -1,6 +1,7 @@
 #include "nodes/bench/BenchReport.h"
 
 #include "scenegraph/AtomicFile.h"
+#include "scenegraph/FileExtension.h"
 
 #include <algorithm>
 #include <cmath>
@@ -299,6 +300,7 @@ void writeBenchCsv(const std::vector<BenchResult>& results, const std::string& p
 
 void writeBenchPlot(const std::vector<BenchResult>& results, const std::string& title,
                     const std::string& path) {
+    requireFileExtension(path, {".svg"}, "plot");
     writeFileAtomically(path, benchPlotSvg(results, title));
 }
 

@@ -228,6 +228,8 @@ double CubicKernel::footprint(double r) const {
     return 2.0 * (inner + outer - outerPartialChord(k, t, m));
 }
 
+double CubicKernel::quadratureStep() const { return HUGE_VAL; }
+
 std::string CubicKernel::description() const {
     std::ostringstream text;
     text.precision(7);

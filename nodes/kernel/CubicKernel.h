@@ -62,6 +62,8 @@ public:
     double footprint(double r) const override;
     double support() const override { return mSupport; }
     std::vector<double> breakpoints() const override { return {mKnot}; }
+    /// @brief +∞: g·r·W and g²r² are polynomials of degree ≤ 9 between the breakpoints.
+    double quadratureStep() const override;
     std::string description() const override;
 
 private:

@@ -1,7 +1,9 @@
 #include "nodes/kernel/FootprintTexture.h"
 
-#include "nodes/kernel/detail/AtomicFile.h"
+#include "nodes/image/ImageIo.h"
+#include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/FileExtension.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,6 +19,19 @@ constexpr int kMaxResolution = 8192;
 
 } // namespace
 
+void FootprintTexture::checkExtent(double extent) {
+    if (!(extent > 0.0 && extent <= kMaxExtent)) {
+        std::ostringstream message;
+        message << "footprint texture: extent " << extent << " must be in (0, " << kMaxExtent
+                << "] voxels";
+        throw DataError(message.str());
+    }
+}
+
+void FootprintTexture::checkPath(const std::string& path) {
+    requireFileExtension(path, {".pfm", ".exr", ".png"}, "texture");
+}
+
 FootprintTexture::FootprintTexture(int resolution, double extent, std::vector<float> texels)
     : mResolution(resolution), mExtent(extent), mTexels(std::move(texels)) {}
 
@@ -28,11 +43,7 @@ FootprintTexture::FootprintTexture(const RadialKernel& kernel, int resolution, d
                 << kMaxResolution << "]";
         throw DataError(message.str());
     }
-    if (!std::isfinite(extent) || !(extent > 0.0)) {
-        std::ostringstream message;
-        message << "footprint texture: extent " << extent << " must be a finite number > 0";
-        throw DataError(message.str());
-    }
+    checkExtent(extent);
     const double texel = 2.0 * extent / resolution;
     mTexels.resize(static_cast<size_t>(resolution) * resolution);
     for (int row = 0; row < resolution; ++row)
@@ -75,6 +86,12 @@ double FootprintTexture::sample(const std::array<double, 2>& point) const {
 
 TextureRipple FootprintTexture::measureLayerRipple(const RadialKernel& kernel,
                                                    int samplesPerSide) const {
+    if (kernel.support() > kMaxExtent) {
+        std::ostringstream message;
+        message << "footprint texture: kernel support " << kernel.support() << " must be at most "
+                << kMaxExtent << " voxels to measure the layer ripple";
+        throw DataError(message.str());
+    }
     TextureRipple ripple{-HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL, 0.0};
     const int reach = static_cast<int>(std::ceil(std::max(mExtent, kernel.support()))) + 1;
     for (int a = 0; a < samplesPerSide; ++a)
@@ -110,7 +127,21 @@ void FootprintTexture::writePfm(const std::string& path) const {
         for (int shift = 0; shift < 32; shift += 8)
             contents.push_back(static_cast<char>((bits >> shift) & 0xffu));
     }
-    detail::writeFileAtomically(path, contents);
+    writeFileAtomically(path, contents);
+}
+
+void FootprintTexture::write(const std::string& path) const {
+    checkPath(path);
+    if (fileExtension(path) == ".pfm") {
+        writePfm(path);
+        return;
+    }
+    image::Image image(mResolution, mResolution);
+    for (int row = 0; row < mResolution; ++row)
+        for (int column = 0; column < mResolution; ++column)
+            image.setPixel(column, mResolution - 1 - row,
+                           glm::vec4(mTexels[static_cast<size_t>(row) * mResolution + column]));
+    image::writeImage(image, path);
 }
 
 } // namespace texsplat::kernel

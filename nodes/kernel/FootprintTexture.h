@@ -31,9 +31,24 @@ public:
     /// @brief The paper's extent: the quad reaches 1.6 voxels from the splat centre.
     static constexpr double kPaperExtent = 1.6;
 
+    /// @brief The largest extent, and the largest kernel support measureLayerRipple takes. The
+    /// footprint is 0 beyond the support (1.556 for the paper's kernel, at most 4 for the
+    /// optimizer's on the unit lattice), so a wider quad only wastes texels, while the ripple
+    /// measurement's cost grows with the square of the reach: the whole `texsplat kernel --json
+    /// --texture` run takes 0.1 s at E = 8 and took 8.5 s at E = 100 (about a day at 10⁴;
+    /// beyond 2³¹ the reach overflowed an int).
+    static constexpr double kMaxExtent = 8.0;
+
+    /// @brief Throws DataError unless 0 < extent ≤ kMaxExtent.
+    static void checkExtent(double extent);
+
+    /// @brief Throws IoError("t.tif: unknown texture extension '.tif' (supported: .pfm, .exr,
+    /// .png)") unless write() knows the format path's extension names.
+    static void checkPath(const std::string& path);
+
     /// @brief Tabulates kernel.footprint at resolution × resolution texel centres over
-    /// [−extent, extent]². Throws DataError unless 2 ≤ resolution ≤ 8192 and extent is finite
-    /// and positive.
+    /// [−extent, extent]². Throws DataError unless 2 ≤ resolution ≤ 8192 and checkExtent(extent)
+    /// passes.
     FootprintTexture(const RadialKernel& kernel, int resolution, double extent = kPaperExtent);
 
     /// @brief Texels per side.
@@ -54,16 +69,29 @@ public:
     double sample(const std::array<double, 2>& point) const;
 
     /// @brief The layer sum Σ sample(x − i, y − j) over the unit lattice, on samplesPerSide² points
-    /// of the cell [0, ½]², against the exact footprint sum on the same points.
+    /// of the cell [0, ½]², against the exact footprint sum on the same points. Throws DataError
+    /// when the kernel's support exceeds kMaxExtent.
     TextureRipple measureLayerRipple(const RadialKernel& kernel, int samplesPerSide = 64) const;
 
-    /// @brief Writes the texture as a little-endian grayscale PFM ("Pf"; PFM stores rows bottom
-    /// to top, which is row 0 first here) through a temporary file renamed into place. Throws
-    /// IoError when the file cannot be written.
-    void writePfm(const std::string& path) const;
+    /// @brief Writes the texture in the format the extension of path names (any case), all at
+    /// once (scenegraph/AtomicFile.h):
+    /// - `.pfm`: little-endian grayscale floats ("Pf"; PFM stores rows bottom to top, which is
+    ///   row 0 first here), each texel f;
+    /// - `.exr`: float RGBA with R = G = B = A = f, so any channel reads f back; as a
+    ///   premultiplied image (nodes/image/Image.h) that is white with coverage f, what a splat
+    ///   drawn with the texture as its alpha shows;
+    /// - `.png`: the same image in 8 bits: PNG keeps straight alpha, so it is white (where f > 0)
+    ///   with alpha round(255 f), as an RGBA8 upload of f would store it (f is clamped to
+    ///   [0, 1]; the paper's kernel peaks at f(0) = 0.70).
+    /// Rows of the images run from y = +E at the top. Throws IoError, and writes nothing, for
+    /// another extension (checkPath), for `.exr` in a build without OpenEXR
+    /// (image::isExrSupported) or when the file cannot be written.
+    void write(const std::string& path) const;
 
 private:
     FootprintTexture(int resolution, double extent, std::vector<float> texels);
+
+    void writePfm(const std::string& path) const;
 
     int mResolution;
     double mExtent;

@@ -2,6 +2,7 @@
 
 #include "scenegraph/Error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -53,6 +54,10 @@ double GaussianKernel::footprint(double r) const {
     const double halfChord = std::sqrt((mSupport - r) * (mSupport + r));
     return mAmplitude * std::exp(-r * r / (2.0 * mSigma * mSigma)) * mSigma * kSqrtTwoPi *
            std::erf(halfChord / (mSigma * kSqrtTwo));
+}
+
+double GaussianKernel::quadratureStep() const {
+    return std::max(0.5 * mSigma, mSupport / 4096.0);
 }
 
 std::string GaussianKernel::description() const {

@@ -54,14 +54,35 @@ void requireAdmissible(const KernelShape& start, const std::optional<double>& fi
 } // namespace
 
 KernelOptimizer::KernelOptimizer(const OptimizerOptions& options) : mOptions(options) {
-    const CubicKernel paper = CubicKernel::paper();
-    LatticeAnalysis(paper, options.spacing); // validates the spacing
-    const std::optional<double>& support = options.fixedSupport;
-    if (support && !(std::isfinite(*support) && *support > 0.0)) {
-        std::ostringstream message;
-        message << "kernel support: " << *support << " must be a finite number > 0";
-        throw DataError(message.str());
-    }
+    LatticeAnalysis::checkSpacing(options.spacing);
+    if (options.fixedSupport)
+        requireSupportInRange(*options.fixedSupport, "kernel support");
+}
+
+double KernelOptimizer::minSupport() const {
+    const LatticeSpacing& spacing = mOptions.spacing;
+    return 0.5 * std::sqrt(spacing[0] * spacing[0] + spacing[1] * spacing[1] +
+                           spacing[2] * spacing[2]);
+}
+
+double KernelOptimizer::maxSupport() const { return LatticeAnalysis::maxSupport(mOptions.spacing); }
+
+bool KernelOptimizer::isSupportInRange(double support) const {
+    return support > minSupport() && support <= maxSupport();
+}
+
+void KernelOptimizer::requireSupportInRange(double support, const std::string& what) const {
+    if (isSupportInRange(support))
+        return;
+    std::ostringstream message;
+    message << what << " " << support << " must be in (" << minSupport() << ", " << maxSupport()
+            << "] on lattice spacing " << spacingText(mOptions.spacing)
+            << ": more than half the cell diagonal (or some points are out of every kernel's "
+               "reach) and at most "
+            << LatticeAnalysis::kMaxSupportInCellSizes
+            << " times the cube root of the cell volume (the run time grows as t³ over the "
+               "volume)";
+    throw DataError(message.str());
 }
 
 KernelShape KernelOptimizer::defaultStart() const {
@@ -76,7 +97,7 @@ KernelShape KernelOptimizer::defaultStart() const {
 
 double KernelOptimizer::objective(const KernelShape& shape) const {
     const double support = mOptions.fixedSupport.value_or(shape.support);
-    if (!(std::isfinite(shape.knot) && std::isfinite(support) && std::isfinite(shape.b) &&
+    if (!(std::isfinite(shape.knot) && isSupportInRange(support) && std::isfinite(shape.b) &&
           std::isfinite(shape.d) && shape.knot >= kKnotMargin * support &&
           shape.knot <= (1.0 - kKnotMargin) * support))
         return HUGE_VAL;
@@ -90,6 +111,8 @@ OptimizerResult KernelOptimizer::optimize(const KernelShape& start,
                                           const Progress& progress) const {
     requireAdmissible(start, mOptions.fixedSupport);
     const bool freeSupport = !mOptions.fixedSupport;
+    if (freeSupport)
+        requireSupportInRange(start.support, "optimizer start: support t =");
     // Work in x = parameter / |start parameter|, so every coordinate is O(1).
     const auto toVector = [&](const KernelShape& shape) {
         return freeSupport ? std::vector<double>{shape.knot, shape.support, shape.b, shape.d}
@@ -157,7 +180,8 @@ OptimizerResult KernelOptimizer::optimize(const KernelShape& start,
 }
 
 GaussianFit KernelOptimizer::fitGaussian(double support) const {
-    const GaussianKernel start(support / 3.0, support); // validates the support
+    requireSupportInRange(support, "kernel support");
+    const GaussianKernel start(support / 3.0, support);
     const LatticeSpacing& spacing = mOptions.spacing;
     const auto relativeRms = [&](const std::vector<double>& sigma) {
         if (!(sigma[0] > 0.0))

@@ -6,6 +6,7 @@
 
 #include <functional>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace texsplat::kernel {
@@ -65,14 +66,27 @@ struct GaussianFit {
 /// simplex collapse that the badly conditioned valley of this objective causes. The objective is
 /// LatticeAnalysis::relativeRms, exact up to rounding in long double, so neither finite
 /// differences nor the simplex see quadrature noise. Points outside 0 < s < t are +∞.
+///
+/// The support is kept in (minSupport(), maxSupport()]: below, some points of the cell are out of
+/// every kernel's reach, so the reconstruction is 0 there and no shape makes it flat (at t = 1e-6
+/// the "optimized" kernel had a relative r.m.s. of 5.6e8); above, LatticeAnalysis bounds the run
+/// time.
 class KernelOptimizer {
 public:
     /// @brief Reports one iteration group (for a progress line).
     using Progress = std::function<void(const OptimizerStep& step)>;
 
-    /// @brief An optimizer with the given options. Throws DataError for a bad spacing or a fixed
-    /// support that is not finite and positive.
+    /// @brief An optimizer with the given options. Throws DataError for a bad spacing
+    /// (LatticeAnalysis::checkSpacing) or a fixed support outside (minSupport(), maxSupport()].
     explicit KernelOptimizer(const OptimizerOptions& options = {});
+
+    /// @brief Half the cell diagonal, ½ √(sx² + sy² + sz²): a kernel's support must exceed it
+    /// to reach every point of the cell (0.866 on the unit lattice).
+    double minSupport() const;
+
+    /// @brief The largest support on the lattice: LatticeAnalysis::maxSupport (4 on the unit
+    /// lattice).
+    double maxSupport() const;
 
     /// @brief The default start: round values near the paper's minimum
     /// (s = 0.9, t = 1.55, b = −2, d = 0.12), scaled to the fixed support and the spacing's
@@ -80,23 +94,27 @@ public:
     KernelShape defaultStart() const;
 
     /// @brief The objective: relative r.m.s. deviation of the kernel with this shape on the
-    /// lattice; +∞ outside the domain: non-finite values, ∫h ≤ 0, s closer than 0.1% of t to 0
-    /// or to t (where solving the C¹ conditions degenerates), or a profile that increases
-    /// somewhere (CubicKernel::isNonIncreasing; without it the relative measure, which ignores
-    /// scale, drifts to ring-shaped kernels with b, d → ∞ on non-cubic lattices).
+    /// lattice; +∞ outside the domain: non-finite values, a support outside (minSupport(),
+    /// maxSupport()], ∫h ≤ 0, s closer than 0.1% of t to 0 or to t (where solving the C¹
+    /// conditions degenerates), or a profile that increases somewhere
+    /// (CubicKernel::isNonIncreasing; without it the relative measure, which ignores scale,
+    /// drifts to ring-shaped kernels with b, d → ∞ on non-cubic lattices).
     double objective(const KernelShape& shape) const;
 
     /// @brief Minimizes from start. Throws DataError with a clear message when the start is not
-    /// admissible (s ≤ 0, t ≤ s, non-finite values, s ≥ the fixed support) or lies outside the
-    /// objective's domain (see objective()).
+    /// admissible (s ≤ 0, t ≤ s, non-finite values, s ≥ the fixed support, a free t outside
+    /// (minSupport(), maxSupport()]) or lies outside the objective's domain (see objective()).
     OptimizerResult optimize(const KernelShape& start, const Progress& progress = {}) const;
 
     /// @brief The truncated Gaussian with the given support whose σ minimizes the relative r.m.s.
     /// on the lattice (a 1D Nelder–Mead from σ = t/3): the fairest Gaussian of the same extent.
-    /// Throws DataError unless support is finite and positive.
+    /// Throws DataError unless support lies in (minSupport(), maxSupport()].
     GaussianFit fitGaussian(double support) const;
 
 private:
+    bool isSupportInRange(double support) const;
+    void requireSupportInRange(double support, const std::string& what) const;
+
     OptimizerOptions mOptions;
 };
 

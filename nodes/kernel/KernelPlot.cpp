@@ -1,6 +1,7 @@
 #include "nodes/kernel/KernelPlot.h"
 
-#include "nodes/kernel/detail/AtomicFile.h"
+#include "scenegraph/AtomicFile.h"
+#include "scenegraph/FileExtension.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,7 +66,8 @@ std::string kernelPlotSvg(const RadialKernel& kernel) {
 }
 
 void writeKernelPlot(const RadialKernel& kernel, const std::string& path) {
-    detail::writeFileAtomically(path, kernelPlotSvg(kernel));
+    requireFileExtension(path, {".svg"}, "plot");
+    writeFileAtomically(path, kernelPlotSvg(kernel));
 }
 
 } // namespace texsplat::kernel

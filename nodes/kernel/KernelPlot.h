@@ -10,8 +10,9 @@ namespace texsplat::kernel {
 /// r ∈ [0, 1.05 t] (the paper's figure 1 plus the footprint), with axes, ticks and a legend.
 std::string kernelPlotSvg(const RadialKernel& kernel);
 
-/// @brief Writes kernelPlotSvg(kernel) to path through a temporary file renamed into place.
-/// Throws IoError when the file cannot be written.
+/// @brief Writes kernelPlotSvg(kernel) to path all at once (scenegraph/AtomicFile.h). Throws
+/// IoError, and writes nothing, unless path ends in `.svg` (any case; "p.png: unknown plot
+/// extension '.png' (supported: .svg)"), or when the file cannot be written.
 void writeKernelPlot(const RadialKernel& kernel, const std::string& path);
 
 } // namespace texsplat::kernel

@@ -15,10 +15,12 @@ namespace {
 
 constexpr long double kPi = 3.14159265358979323846264338327950288L;
 
-// Ten Gauss–Legendre points on pieces no longer than this: exact for the cubic's polynomial
-// pieces (degree ≤ 9) and accurate to rounding for smooth kernels such as the Gaussian.
+// Ten Gauss–Legendre points on pieces between breakpoints no longer than the kernel's
+// quadratureStep: exact for the cubic's polynomial pieces (degree ≤ 9) and accurate to rounding
+// for smooth kernels such as the Gaussian. The cubic's pieces end only at breakpoints; splitting
+// them every 0.25 voxels, as before, made an analysis 4.7 times slower at t = 4 and made the work
+// grow with the unit of length (spacing 1000 took 32 s).
 constexpr int kRulePoints = 10;
-constexpr long double kMaxPieceLength = 0.25L;
 
 // Grid intervals per half cell for the extreme search before Nelder–Mead refines it.
 constexpr int kSearchIntervals = 16;
@@ -28,9 +30,10 @@ const std::vector<detail::QuadratureNode>& rule() {
     return sRule;
 }
 
-// ∫ integrand over [0, t], split at the given breakpoints and into short pieces.
+// ∫ integrand over [0, t], split at the given breakpoints and into pieces no longer than step
+// (+∞: none).
 template <typename Integrand>
-long double integratePieces(std::vector<long double> breaks, long double t,
+long double integratePieces(std::vector<long double> breaks, long double t, long double step,
                             const Integrand& integrand) {
     breaks.push_back(0.0L);
     breaks.push_back(t);
@@ -41,7 +44,7 @@ long double integratePieces(std::vector<long double> breaks, long double t,
         const long double b = std::min(breaks[i + 1], t);
         if (!(b > a))
             continue;
-        const int pieces = static_cast<int>(std::ceil((b - a) / kMaxPieceLength));
+        const int pieces = std::max(1, static_cast<int>(std::ceil((b - a) / step)));
         for (int piece = 0; piece < pieces; ++piece)
             sum += detail::integrate(rule(), a + (b - a) * piece / pieces,
                                      a + (b - a) * (piece + 1) / pieces, integrand);
@@ -56,9 +59,9 @@ std::vector<long double> kernelBreaks(const RadialKernel& kernel) {
 
 // ∫h = 4π ∫ g(r) r² dr.
 long double kernelIntegral(const RadialKernel& kernel) {
-    return 4.0L * kPi * integratePieces(kernelBreaks(kernel), kernel.support(), [&](long double r) {
-               return kernel.profile(r) * r * r;
-           });
+    return 4.0L * kPi *
+           integratePieces(kernelBreaks(kernel), kernel.support(), kernel.quadratureStep(),
+                           [&](long double r) { return kernel.profile(r) * r * r; });
 }
 
 // A(d) = ∫ h(x) h(x − d) dx. For d > 0 the sphere of radius r₁ around one centre meets the other
@@ -69,8 +72,9 @@ long double autocorrelation(const RadialKernel& kernel, long double d) {
     if (d >= 2.0L * t)
         return 0.0L;
     std::vector<long double> breaks = kernelBreaks(kernel);
+    const long double step = kernel.quadratureStep();
     if (d == 0.0L) {
-        return 4.0L * kPi * integratePieces(breaks, t, [&](long double r) {
+        return 4.0L * kPi * integratePieces(breaks, t, step, [&](long double r) {
                    const long double g = kernel.profile(r);
                    return g * g * r * r;
                });
@@ -83,7 +87,7 @@ long double autocorrelation(const RadialKernel& kernel, long double d) {
         breaks.push_back(radius - d);
         breaks.push_back(d + radius);
     }
-    const long double sum = integratePieces(breaks, t, [&](long double r) {
+    const long double sum = integratePieces(breaks, t, step, [&](long double r) {
         return kernel.profile(r) * r *
                (kernel.shellIntegral(std::min(r + d, t)) -
                 kernel.shellIntegral(std::min(std::fabs(r - d), t)));
@@ -142,14 +146,42 @@ Extreme findExtreme(const std::function<double(const std::vector<double>&)>& fun
 
 } // namespace
 
+std::string spacingText(const LatticeSpacing& spacing) {
+    std::ostringstream text;
+    text << "(" << spacing[0] << ", " << spacing[1] << ", " << spacing[2] << ")";
+    return text.str();
+}
+
+void LatticeAnalysis::checkSpacing(const LatticeSpacing& spacing) {
+    for (double step : spacing) {
+        if (!std::isfinite(step) || !(step > 0.0))
+            throw DataError("lattice spacing " + spacingText(spacing) + " must be finite and > 0");
+    }
+    const auto [smallest, largest] = std::minmax({spacing[0], spacing[1], spacing[2]});
+    if (largest > kMaxSpacingRatio * smallest) {
+        std::ostringstream message;
+        message << "lattice spacing " << spacingText(spacing) << " must have its largest spacing "
+                << "at most " << kMaxSpacingRatio
+                << " times its smallest (the run time grows with the ratio)";
+        throw DataError(message.str());
+    }
+}
+
+double LatticeAnalysis::maxSupport(const LatticeSpacing& spacing) {
+    return kMaxSupportInCellSizes * std::cbrt(spacing[0] * spacing[1] * spacing[2]);
+}
+
 LatticeAnalysis::LatticeAnalysis(const RadialKernel& kernel, const LatticeSpacing& spacing)
     : mKernel(kernel), mSpacing(spacing) {
-    for (double step : spacing) {
-        if (!std::isfinite(step) || !(step > 0.0)) {
-            std::ostringstream message;
-            message << "lattice spacing: " << step << " must be a finite number > 0";
-            throw DataError(message.str());
-        }
+    checkSpacing(spacing);
+    if (kernel.support() > maxSupport(spacing)) {
+        std::ostringstream message;
+        message << "kernel support " << kernel.support() << " must be at most "
+                << maxSupport(spacing) << " on lattice spacing " << spacingText(spacing) << " ("
+                << kMaxSupportInCellSizes
+                << " times the cube root of the cell volume; the run time grows as t³ over the "
+                   "volume)";
+        throw DataError(message.str());
     }
     // Lattice vectors with |m| < 2t by their distinct lengths: one octant, each vector counted
     // with its 2^(non-zero coordinates) mirror images; equal lengths merged after sorting.

@@ -3,6 +3,7 @@
 #include "nodes/kernel/RadialKernel.h"
 
 #include <array>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -11,6 +12,9 @@ namespace texsplat::kernel {
 /// @brief Voxel spacing (sx, sy, sz) of the lattice the kernel reconstructs on, in the kernel's
 /// length unit; (1, 1, 1) is the paper's cubic lattice.
 using LatticeSpacing = std::array<double, 3>;
+
+/// @brief "(sx, sy, sz)", the form a spacing takes in messages.
+std::string spacingText(const LatticeSpacing& spacing);
 
 /// @brief How flat the 3D reconstruction c(x,y,z) = Σ h(x−i sx, y−j sy, z−k sz) of a constant
 /// field is (Crawfis & Max 1993, equation 2): deviations are relative to the mean of c.
@@ -41,10 +45,34 @@ struct Layer2dStatistics {
 /// exactly on each polynomial piece. So the optimizer's objective has no sampling noise and no
 /// false minima from a moving quadrature grid (docs/kernel.md). The extremes are found by a grid
 /// search refined with Nelder–Mead. The kernel must outlive the analysis.
+///
+/// The run time of relativeRms() grows with the number of distinct lengths of lattice vectors
+/// shorter than 2t, about (π/6)(2t)³ / (sx sy sz) on a lattice without symmetries, so the support
+/// is bounded in cube roots of the cell volume (docs/kernel.md section 7 has the measurements).
 class LatticeAnalysis {
 public:
-    /// @brief Analyses kernel on the lattice with the given spacing. Throws DataError unless
-    /// every spacing is finite and positive.
+    /// @brief The largest support is this many cube roots of the cell volume: 4 voxels on the
+    /// unit lattice, at most ~270 distinct distances, so that one optimization (a few thousand
+    /// analyses) takes at most about 2 s on any lattice (1.6 s at t = 4 on (1, 1.01, 1.02), where
+    /// t = 6.5 took 2.9 s at 5.3 ms an analysis).
+    static constexpr double kMaxSupportInCellSizes = 4.0;
+
+    /// @brief The largest spacing may be at most this many times the smallest. A kernel must
+    /// reach across the largest spacing, so the distances to sum grow with the ratio; 4 is the
+    /// most for which the support `texsplat kernel` defaults to on a non-cubic lattice, 1.556228
+    /// times the largest spacing, stays within maxSupport (on (1, 1, r) up to r = 4.12).
+    static constexpr double kMaxSpacingRatio = 4.0;
+
+    /// @brief Throws DataError unless every spacing is finite and positive and the largest is at
+    /// most kMaxSpacingRatio times the smallest.
+    static void checkSpacing(const LatticeSpacing& spacing);
+
+    /// @brief The largest support analysed on this lattice: kMaxSupportInCellSizes times
+    /// ∛(sx sy sz).
+    static double maxSupport(const LatticeSpacing& spacing);
+
+    /// @brief Analyses kernel on the lattice with the given spacing. Throws DataError for a bad
+    /// spacing (checkSpacing) or a kernel support above maxSupport(spacing).
     explicit LatticeAnalysis(const RadialKernel& kernel, const LatticeSpacing& spacing = {1, 1, 1});
 
     /// @brief Refused: the analysis keeps a reference, which a temporary kernel would leave

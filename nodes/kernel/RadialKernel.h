@@ -37,6 +37,13 @@ public:
     /// knot s of a piecewise kernel); quadrature splits its intervals there.
     virtual std::vector<double> breakpoints() const = 0;
 
+    /// @brief The longest piece, between breakpoints, on which ten-point Gauss–Legendre
+    /// integrates g times its shell integral (and polynomials of r) to rounding: +∞ where
+    /// those products are polynomials of degree ≤ 19 (integrated exactly on any interval), else
+    /// a length on the kernel's own scale, so the lattice analysis needs the same number of
+    /// pieces in any unit of length.
+    virtual double quadratureStep() const = 0;
+
     /// @brief A short human-readable description ("paper cubic, t = 1.556228, s = 0.889392").
     virtual std::string description() const = 0;
 

@@ -120,4 +120,14 @@ TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
                                     "from 1 to 16384, got '16by16'\n");
 }
 
+TEST_F(BenchCommandTest, plotMustBeSvgAndIsCheckedBeforeTheRun) {
+    const auto output =
+        runTexsplat("bench --dataset ml8 --size 32x24 --repeat 1 --plot " + path("bench.png"));
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardOutput, "");
+    EXPECT_EQ(output.standardError, "texsplat: error: " + path("bench.png") +
+                                        ": unknown plot extension '.png' (supported: .svg)\n");
+    EXPECT_FALSE(fs::exists(path("bench.png")));
+}
+
 } // namespace

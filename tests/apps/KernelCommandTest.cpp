@@ -1,9 +1,12 @@
 #include "RunCommand.h"
 
+#include "nodes/image/ImageIo.h"
+
 #include <gtest/gtest.h>
 
 #include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <memory>
@@ -226,6 +229,70 @@ TEST(KernelCommand, writesTextureAndPlot) {
     std::remove(plot.c_str());
 }
 
+TEST(KernelCommand, jsonNumbersAreInTheirShortestRoundTripForm) {
+    const auto output = runTexsplat("kernel --json");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    // %.17g printed 1.5562279999999999.
+    EXPECT_NE(output.standardOutput.find("\"t\": 1.556228,"), std::string::npos)
+        << output.standardOutput;
+    EXPECT_NE(output.standardOutput.find("\"spacing\": [1, 1, 1],"), std::string::npos);
+}
+
+TEST(KernelCommand, tableFitsTheGaussianToTheGivenSupport) {
+    const auto output = runTexsplat("kernel --support 2");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find("Gaussian of the same extent (truncated gaussian, "
+                                         "sigma = 0.6064868, t = 2, best sigma"),
+              std::string::npos)
+        << output.standardOutput;
+}
+
+class KernelCommandTest : public texsplat::test::ScratchDirectoryTest {};
+
+TEST_F(KernelCommandTest, textureFormatFollowsTheExtension) {
+    std::vector<std::string> names = {"t.png", "t.PNG"};
+    if (texsplat::image::isExrSupported())
+        names.push_back("t.exr");
+    for (const std::string& name : names) {
+        const auto output =
+            runTexsplat("kernel --json --texture " + path(name) + " --resolution 16");
+        EXPECT_EQ(output.exitCode, 0) << output.standardError;
+        const texsplat::image::Image image = texsplat::image::readImage(path(name));
+        EXPECT_EQ(image.sizeString(), "16x16");
+        // The centre texels hold f near its peak f(0) = 0.70, in every channel.
+        const glm::vec4 centre = image.pixel(8, 8);
+        EXPECT_NEAR(centre.a, 0.68, 0.02) << name;
+        EXPECT_NEAR(centre.r, centre.a, 1e-6) << name;
+        EXPECT_NE(output.standardError.find("texture " + path(name) + ": 16x16 texels"),
+                  std::string::npos)
+            << output.standardError;
+    }
+}
+
+TEST_F(KernelCommandTest, otherTextureAndPlotExtensionsFailBeforeAnyWork) {
+    const struct {
+        std::string arguments;
+        std::string message;
+        std::string file;
+    } cases[] = {
+        {"kernel --json --texture " + path("t.tif"),
+         path("t.tif") + ": unknown texture extension '.tif' (supported: .pfm, .exr, .png)",
+         path("t.tif")},
+        {"kernel --json --texture " + path("texture"),
+         path("texture") + ": no texture extension (supported: .pfm, .exr, .png)",
+         path("texture")},
+        {"kernel --plot " + path("p.png"),
+         path("p.png") + ": unknown plot extension '.png' (supported: .svg)", path("p.png")},
+    };
+    for (const auto& badCase : cases) {
+        const auto output = runTexsplat(badCase.arguments);
+        EXPECT_EQ(output.exitCode, 1) << badCase.arguments;
+        EXPECT_EQ(output.standardOutput, "") << badCase.arguments;
+        EXPECT_EQ(output.standardError, "texsplat: error: " + badCase.message + "\n");
+        EXPECT_FALSE(std::filesystem::exists(badCase.file)) << badCase.file;
+    }
+}
+
 TEST(KernelCommand, badOptionsFailWithClearMessages) {
     const struct {
         const char* arguments;
@@ -241,9 +308,41 @@ TEST(KernelCommand, badOptionsFailWithClearMessages) {
          "texsplat: error: --start: expected 4 comma-separated numbers, got '1,2'\n"},
         {"kernel --spacing 1,x,1", "texsplat: error: --spacing: 'x' is not a number\n"},
         {"kernel --spacing 1,0,1",
-         "texsplat: error: lattice spacing: 0 must be a finite number > 0\n"},
+         "texsplat: error: --spacing: lattice spacing (1, 0, 1) must be finite and > 0\n"},
+        {"kernel --json --spacing 1e-10,1,1",
+         "texsplat: error: --spacing: lattice spacing (1e-10, 1, 1) must have its largest "
+         "spacing at most 4 times its smallest (the run time grows with the ratio)\n"},
+        {"kernel --json --kernel optimized --support 1e6",
+         "texsplat: error: --support: kernel support 1e+06 must be in (0.866025, 4] on lattice "
+         "spacing (1, 1, 1): more than half the cell diagonal (or some points are out of every "
+         "kernel's reach) and at most 4 times the cube root of the cell volume (the run time "
+         "grows as t³ over the volume)\n"},
+        {"kernel --json --kernel gaussian --support 1e-6",
+         "texsplat: error: --support: kernel support 1e-06 must be in (0.866025, 4] on lattice "
+         "spacing (1, 1, 1): more than half the cell diagonal (or some points are out of every "
+         "kernel's reach) and at most 4 times the cube root of the cell volume (the run time "
+         "grows as t³ over the volume)\n"},
+        {"kernel --json --kernel optimized --spacing 1,1,4 --support 2",
+         "texsplat: error: --support: kernel support 2 must be in (2.12132, 6.3496] on lattice "
+         "spacing (1, 1, 4): more than half the cell diagonal (or some points are out of every "
+         "kernel's reach) and at most 4 times the cube root of the cell volume (the run time "
+         "grows as t³ over the volume)\n"},
+        // The table optimizes on the cubic lattice too, where 6 is too large.
+        {"kernel --spacing 2,2,2 --support 6",
+         "texsplat: error: --support: kernel support 6 must be in (0.866025, 4] on lattice "
+         "spacing (1, 1, 1): more than half the cell diagonal (or some points are out of every "
+         "kernel's reach) and at most 4 times the cube root of the cell volume (the run time "
+         "grows as t³ over the volume)\n"},
+        {"kernel --json --texture t.pfm --extent 1e4",
+         "texsplat: error: --extent: footprint texture: extent 10000 must be in (0, 8] voxels\n"},
+        {"kernel --json --texture t.pfm --extent 0",
+         "texsplat: error: --extent: footprint texture: extent 0 must be in (0, 8] voxels\n"},
+        {"kernel --json --kernel optimized --spacing 10,10,10 --texture t.pfm",
+         "texsplat: error: footprint texture: kernel support 15.5623 must be at most 8 voxels "
+         "to measure the layer ripple\n"},
         {"kernel --texture /nonexistent-directory/t.pfm",
-         "texsplat: error: /nonexistent-directory/t.pfm: cannot open for writing\n"},
+         "texsplat: error: /nonexistent-directory/t.pfm: cannot create a file in directory "
+         "/nonexistent-directory: No such file or directory\n"},
         {"kernel --json --support 2",
          "texsplat: error: --support: needs --kernel optimized|gaussian or --optimize with "
          "--json (the paper's kernel has its own support)\n"},
@@ -252,6 +351,7 @@ TEST(KernelCommand, badOptionsFailWithClearMessages) {
         const auto output = runTexsplat(badCase.arguments);
         EXPECT_EQ(output.exitCode, 1) << badCase.arguments;
         EXPECT_EQ(output.standardError, badCase.message) << badCase.arguments;
+        EXPECT_FALSE(std::ifstream("t.pfm").good()) << badCase.arguments;
     }
     const auto unknownKernel = runTexsplat("kernel --kernel foo");
     EXPECT_NE(unknownKernel.exitCode, 0);

@@ -1,5 +1,6 @@
 #include "nodes/kernel/FootprintTexture.h"
 
+#include "nodes/image/ImageIo.h"
 #include "nodes/kernel/CubicKernel.h"
 #include "scenegraph/Error.h"
 
@@ -10,9 +11,25 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <string>
+#include <utility>
 
 using texsplat::kernel::CubicKernel;
 using texsplat::kernel::FootprintTexture;
+
+namespace {
+
+template <typename Error, typename Call>
+void expectMessage(const Call& call, const std::string& message) {
+    try {
+        call();
+        FAIL() << "expected: " << message;
+    } catch (const Error& error) {
+        EXPECT_EQ(error.what(), message);
+    }
+}
+
+} // namespace
 
 TEST(FootprintTexture, texelsHoldTheFootprintAtTexelCentres) {
     const CubicKernel kernel = CubicKernel::paper();
@@ -53,7 +70,7 @@ TEST(FootprintTexture, writesLittleEndianPfm) {
     const CubicKernel kernel = CubicKernel::paper();
     const FootprintTexture texture(kernel, 4);
     const std::string path = ::testing::TempDir() + "footprint_test.pfm";
-    texture.writePfm(path);
+    texture.write(path);
     std::ifstream file(path, std::ios::binary);
     const std::string contents((std::istreambuf_iterator<char>(file)),
                                std::istreambuf_iterator<char>());
@@ -66,24 +83,61 @@ TEST(FootprintTexture, writesLittleEndianPfm) {
     std::remove(path.c_str());
 }
 
+TEST(FootprintTexture, writesExrAndPngWithFInEveryChannel) {
+    const CubicKernel kernel = CubicKernel::paper();
+    const FootprintTexture texture(kernel, 8);
+    // Texel (row 4, column 5) is pixel (5, 8 − 1 − 4): images run from y = +E at the top.
+    const float texel = texture.texels()[4 * 8 + 5];
+    if (texsplat::image::isExrSupported()) {
+        const std::string exr = ::testing::TempDir() + "footprint_test.EXR";
+        texture.write(exr);
+        const texsplat::image::Image image = texsplat::image::readImage(exr);
+        ASSERT_EQ(image.sizeString(), "8x8");
+        EXPECT_EQ(image.pixel(5, 3), glm::vec4(texel));
+        std::remove(exr.c_str());
+    }
+    const std::string png = ::testing::TempDir() + "footprint_test.png";
+    texture.write(png);
+    const texsplat::image::Image image = texsplat::image::readImage(png);
+    ASSERT_EQ(image.sizeString(), "8x8");
+    // White with alpha f in 8 bits: read back premultiplied, every channel is f to 1/510.
+    for (int channel = 0; channel < 4; ++channel)
+        EXPECT_NEAR(image.pixel(5, 3)[channel], texel, 0.5 / 255.0 + 1e-6) << channel;
+    std::remove(png.c_str());
+}
+
 TEST(FootprintTexture, badArgumentsThrowWithClearMessages) {
     const CubicKernel kernel = CubicKernel::paper();
-    try {
-        FootprintTexture(kernel, 1);
-        FAIL();
-    } catch (const texsplat::DataError& error) {
-        EXPECT_STREQ(error.what(), "footprint texture: resolution 1 must be in [2, 8192]");
+    using texsplat::DataError;
+    expectMessage<DataError>([&] { FootprintTexture(kernel, 1); },
+                             "footprint texture: resolution 1 must be in [2, 8192]");
+    for (const auto& [bad, text] :
+         {std::pair{std::nan(""), "nan"}, std::pair{0.0, "0"}, std::pair{8.001, "8.001"},
+          std::pair{1e300, "1e+300"}}) {
+        const double extent = bad;
+        expectMessage<DataError>([&] { FootprintTexture(kernel, 16, extent); },
+                                 std::string("footprint texture: extent ") + text +
+                                     " must be in (0, 8] voxels");
     }
-    try {
-        FootprintTexture(kernel, 16, std::nan(""));
-        FAIL();
-    } catch (const texsplat::DataError& error) {
-        EXPECT_STREQ(error.what(), "footprint texture: extent nan must be a finite number > 0");
-    }
-    try {
-        FootprintTexture(kernel, 4).writePfm("/nonexistent-directory/texture.pfm");
-        FAIL();
-    } catch (const texsplat::IoError& error) {
-        EXPECT_STREQ(error.what(), "/nonexistent-directory/texture.pfm: cannot open for writing");
-    }
+    EXPECT_NO_THROW(FootprintTexture(kernel, 2, 8.0));
+    const CubicKernel wide = CubicKernel::fromShape(5.0, 8.5, -0.08, 0.002);
+    expectMessage<DataError>([&] { FootprintTexture(kernel, 4).measureLayerRipple(wide, 2); },
+                             "footprint texture: kernel support 8.5 must be at most 8 voxels to "
+                             "measure the layer ripple");
+}
+
+TEST(FootprintTexture, writeRejectsOtherExtensionsAndWritesNothing) {
+    const FootprintTexture texture(CubicKernel::paper(), 4);
+    const std::string path = ::testing::TempDir() + "footprint_test.tif";
+    expectMessage<texsplat::IoError>([&] { texture.write(path); },
+                                     path + ": unknown texture extension '.tif' (supported: .pfm, "
+                                            ".exr, .png)");
+    EXPECT_FALSE(std::ifstream(path).good());
+    expectMessage<texsplat::IoError>([&] { texture.write("footprint"); },
+                                     "footprint: no texture extension (supported: .pfm, .exr, "
+                                     ".png)");
+    expectMessage<texsplat::IoError>(
+        [&] { texture.write("/nonexistent-directory/texture.pfm"); },
+        "/nonexistent-directory/texture.pfm: cannot create a file in directory "
+        "/nonexistent-directory: No such file or directory");
 }

@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
 using namespace texsplat::kernel;
 
@@ -91,6 +93,8 @@ TEST(KernelOptimizer, objectiveIsInfiniteOutsideItsDomain) {
     EXPECT_EQ(optimizer.objective({1.5, 1.5, -2.0, 0.1}), HUGE_VAL);
     EXPECT_EQ(optimizer.objective({0.9, 1.5, std::nan(""), 0.1}), HUGE_VAL);
     EXPECT_EQ(optimizer.objective({0.9, 1.5, 2.0, 0.1}), HUGE_VAL); // increasing at 0
+    EXPECT_EQ(optimizer.objective({0.5, 0.86, -2.0, 0.1}), HUGE_VAL); // misses the cell corner
+    EXPECT_EQ(optimizer.objective({2.5, 4.1, -0.3, 0.02}), HUGE_VAL); // beyond 4 voxels
     EXPECT_TRUE(std::isfinite(optimizer.objective(optimizer.defaultStart())));
 }
 
@@ -109,20 +113,63 @@ TEST(KernelOptimizer, badStartsThrowWithClearMessages) {
     expectStartRejected({0.9, 1.5, 2.0, 0.1},
                         "optimizer start: outside the search domain (the profile must not "
                         "increase, and s must lie within [0.001 t, 0.999 t])");
+    expectStartRejected({0.9, 100.0, -2.0, 0.1},
+                        "optimizer start: support t = 100 must be in (0.866025, 4] on lattice "
+                        "spacing (1, 1, 1): more than half the cell diagonal (or some points are "
+                        "out of every kernel's reach) and at most 4 times the cube root of the "
+                        "cell volume (the run time grows as t³ over the volume)");
     OptimizerOptions fixed;
-    fixed.fixedSupport = 0.5;
+    fixed.fixedSupport = 0.88;
     expectStartRejected({0.9, 1.5, -2.0, 0.1},
-                        "optimizer start: support t = 0.5 must be > knot s = 0.9", fixed);
+                        "optimizer start: support t = 0.88 must be > knot s = 0.9", fixed);
+}
+
+TEST(KernelOptimizer, supportRangeFollowsTheLattice) {
+    const KernelOptimizer cubic;
+    EXPECT_DOUBLE_EQ(cubic.minSupport(), 0.5 * std::sqrt(3.0));
+    EXPECT_EQ(cubic.maxSupport(), 4.0);
+    OptimizerOptions options;
+    options.spacing = {1.0, 2.0, 2.0};
+    const KernelOptimizer anisotropic(options);
+    EXPECT_EQ(anisotropic.minSupport(), 1.5);
+    EXPECT_DOUBLE_EQ(anisotropic.maxSupport(), 4.0 * std::cbrt(4.0));
 }
 
 TEST(KernelOptimizer, badOptionsThrowWithClearMessages) {
+    const auto expectRejected = [](const OptimizerOptions& options, const std::string& message) {
+        try {
+            KernelOptimizer{options};
+            FAIL() << "expected DataError: " << message;
+        } catch (const texsplat::DataError& error) {
+            EXPECT_EQ(error.what(), message);
+        }
+    };
+    const std::string reason = ": more than half the cell diagonal (or some points are out of "
+                               "every kernel's reach) and at most 4 times the cube root of the "
+                               "cell volume (the run time grows as t³ over the volume)";
     OptimizerOptions options;
-    options.fixedSupport = -1.0;
+    for (double support : {-1.0, 1e-6, 0.5 * std::sqrt(3.0), 4.001, std::nan("")}) {
+        options.fixedSupport = support;
+        std::ostringstream value;
+        value << support;
+        expectRejected(options, "kernel support " + value.str() +
+                                    " must be in (0.866025, 4] on lattice spacing (1, 1, 1)" +
+                                    reason);
+    }
+    options.spacing = {1.0, 1.0, 4.0};
+    options.fixedSupport = 2.0;
+    expectRejected(options, "kernel support 2 must be in (2.12132, 6.3496] on lattice spacing (1, "
+                            "1, 4)" + reason);
+    options.spacing = {1.0, 1.0, 5.0};
+    options.fixedSupport.reset();
+    expectRejected(options, "lattice spacing (1, 1, 5) must have its largest spacing at most 4 "
+                            "times its smallest (the run time grows with the ratio)");
     try {
-        KernelOptimizer{options};
-        FAIL();
+        KernelOptimizer().fitGaussian(5.0);
+        FAIL() << "expected DataError";
     } catch (const texsplat::DataError& error) {
-        EXPECT_STREQ(error.what(), "kernel support: -1 must be a finite number > 0");
+        EXPECT_EQ(error.what(), "kernel support 5 must be in (0.866025, 4] on lattice spacing "
+                                "(1, 1, 1)" + reason);
     }
 }
 

@@ -36,3 +36,19 @@ TEST(KernelPlot, writesTheFileOrThrowsIoError) {
     EXPECT_THROW(texsplat::kernel::writeKernelPlot(kernel, "/nonexistent-directory/plot.svg"),
                  texsplat::IoError);
 }
+
+TEST(KernelPlot, onlySvgFileNamesAreWritten) {
+    const CubicKernel kernel = CubicKernel::paper();
+    const std::string path = ::testing::TempDir() + "kernel_plot_test.png";
+    try {
+        texsplat::kernel::writeKernelPlot(kernel, path);
+        FAIL() << "expected IoError";
+    } catch (const texsplat::IoError& error) {
+        EXPECT_EQ(error.what(), path + ": unknown plot extension '.png' (supported: .svg)");
+    }
+    EXPECT_FALSE(std::ifstream(path).good());
+    const std::string upper = ::testing::TempDir() + "kernel_plot_test.SVG";
+    texsplat::kernel::writeKernelPlot(kernel, upper);
+    EXPECT_TRUE(std::ifstream(upper).good());
+    std::remove(upper.c_str());
+}

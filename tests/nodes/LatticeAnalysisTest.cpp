@@ -5,7 +5,11 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <sstream>
+#include <string>
+#include <utility>
 
 using texsplat::kernel::CubicCoefficients;
 using texsplat::kernel::CubicKernel;
@@ -84,15 +88,22 @@ TEST(LatticeAnalysis, anisotropicRmsAgreesWithSampledCell) {
 }
 
 TEST(LatticeAnalysis, relativeMeasuresDoNotDependOnTheLengthUnit) {
-    // The paper's kernel on a lattice of spacing 2, scaled by 2: g₂(r) = g(r/2).
+    // The paper's kernel on a lattice of spacing L, scaled by L: g_L(r) = g(r/L). At L = 1000
+    // the quadrature once took 4000 times as many pieces as at L = 1; now they scale with L.
     const CubicKernel kernel = CubicKernel::paper();
     const CubicCoefficients& k = kernel.coefficients();
-    const CubicKernel doubled(2 * kernel.knot(), 2 * kernel.support(),
-                              {k.a, k.b / 4, k.c / 8, k.d / 4, k.e / 8});
     const LatticeAnalysis unit(kernel);
-    const LatticeAnalysis scaled(doubled, {2, 2, 2});
-    EXPECT_NEAR(scaled.relativeRms(), unit.relativeRms(), 1e-12);
-    EXPECT_NEAR(scaled.volumeIntegral(), 8 * unit.volumeIntegral(), 1e-12);
+    for (double length : {2.0, 1000.0, 0.001}) {
+        const CubicKernel scaledKernel(length * kernel.knot(), length * kernel.support(),
+                                       {k.a, k.b / (length * length),
+                                        k.c / (length * length * length), k.d / (length * length),
+                                        k.e / (length * length * length)});
+        const LatticeAnalysis scaled(scaledKernel, {length, length, length});
+        EXPECT_NEAR(scaled.relativeRms(), unit.relativeRms(), 1e-12) << length;
+        EXPECT_NEAR(scaled.volumeIntegral() / (length * length * length), unit.volumeIntegral(),
+                    1e-12)
+            << length;
+    }
 }
 
 TEST(LatticeAnalysis, nonIntegrableKernelHasInfiniteRms) {
@@ -108,8 +119,39 @@ TEST(LatticeAnalysis, badSpacingThrowsWithClearMessage) {
             FAIL() << "expected DataError for spacing " << bad;
         } catch (const texsplat::DataError& error) {
             std::ostringstream expected;
-            expected << "lattice spacing: " << bad << " must be a finite number > 0";
+            expected << "lattice spacing (1, " << bad << ", 1) must be finite and > 0";
             EXPECT_EQ(error.what(), expected.str());
         }
+    }
+}
+
+TEST(LatticeAnalysis, spacingRatioAboveFourIsRejected) {
+    const CubicKernel kernel = CubicKernel::paper();
+    EXPECT_NO_THROW(LatticeAnalysis(kernel, {1.0, 1.0, 4.0}));
+    for (const auto& [spacing, text] :
+         {std::pair{std::array<double, 3>{1.0, 1.0, 4.001}, "(1, 1, 4.001)"},
+          std::pair{std::array<double, 3>{1e-10, 1.0, 1.0}, "(1e-10, 1, 1)"}}) {
+        try {
+            LatticeAnalysis(kernel, spacing);
+            FAIL() << "expected DataError for spacing " << text;
+        } catch (const texsplat::DataError& error) {
+            EXPECT_EQ(error.what(), std::string("lattice spacing ") + text +
+                                        " must have its largest spacing at most 4 times its "
+                                        "smallest (the run time grows with the ratio)");
+        }
+    }
+}
+
+TEST(LatticeAnalysis, supportAboveFourCubeRootsOfTheCellVolumeIsRejected) {
+    const CubicKernel kernel = CubicKernel::paper();
+    EXPECT_EQ(LatticeAnalysis::maxSupport({1.0, 0.5, 2.0}), 4.0);
+    EXPECT_NO_THROW(LatticeAnalysis(kernel, {0.39, 0.39, 0.39}));
+    try {
+        LatticeAnalysis(kernel, {0.2, 0.25, 0.3});
+        FAIL() << "expected DataError";
+    } catch (const texsplat::DataError& error) {
+        EXPECT_STREQ(error.what(), "kernel support 1.55623 must be at most 0.986485 on lattice "
+                                   "spacing (0.2, 0.25, 0.3) (4 times the cube root of the cell "
+                                   "volume; the run time grows as t³ over the volume)");
     }
 }
