@@ -3,29 +3,14 @@
 #include "nodes/image/detail/PngCodec.h"
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/FileExtension.h"
 
 #ifdef TEXSPLAT_WITH_EXR
 #include "nodes/image/detail/ExrCodec.h"
 #endif
 
-#include <algorithm>
-#include <cctype>
-
 namespace texsplat::image {
 namespace {
-
-constexpr const char* kSupportedExtensions = ".png, .exr";
-
-std::string extensionOf(const std::string& path) {
-    const auto dot = path.find_last_of('.');
-    const auto slash = path.find_last_of('/');
-    if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
-        return {};
-    std::string extension = path.substr(dot);
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return extension;
-}
 
 /// The error for an .exr path in a build without OpenEXR; names the option that turns it on.
 [[maybe_unused]] IoError exrNotBuilt(const std::string& path) {
@@ -36,14 +21,8 @@ std::string extensionOf(const std::string& path) {
 } // namespace
 
 ImageFormat imageFormatOf(const std::string& path) {
-    const std::string extension = extensionOf(path);
-    if (extension == ".png")
-        return ImageFormat::Png;
-    if (extension == ".exr")
-        return ImageFormat::Exr;
-    const std::string found =
-        extension.empty() ? "no image extension" : "unknown image extension '" + extension + "'";
-    throw IoError(path + ": " + found + " (supported: " + kSupportedExtensions + ")");
+    requireFileExtension(path, {".png", ".exr"}, "image");
+    return fileExtension(path) == ".png" ? ImageFormat::Png : ImageFormat::Exr;
 }
 
 bool isExrSupported() {
