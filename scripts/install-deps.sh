@@ -9,7 +9,9 @@ packages=(
     libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libopenexr-dev libstb-dev
     libcli11-dev libglfw3-dev libimgui-dev
     libgtest-dev libbenchmark-dev libcoin-dev
-    clang libclang-rt-14-dev xvfb xauth
+    clang libclang-rt-14-dev xvfb xauth locales
 )
 apt-get update
 apt-get install -y --no-install-recommends "${packages[@]}"
+# A comma-decimal locale, so the reader's locale-independence test runs instead of skipping.
+localedef -i de_DE -f UTF-8 de_DE.UTF-8
