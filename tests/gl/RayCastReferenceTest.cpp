@@ -11,7 +11,6 @@
 #include "nodes/render/CameraView.h"
 #include "nodes/render/RayCastImage.h"
 #include "scenegraph/Separator.h"
-#include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/RayCastAction.h"
 
 #include <gtest/gtest.h>
@@ -33,15 +32,7 @@ sg::Separator::Ptr emissionScene(const Camera::Ptr& camera, const TextureSplat::
     VolumeData::Ptr volume = VolumeData::create();
     volume->source.setValue(VolumeSource::Blob);
     volume->resolution.setValue(glm::vec3(10.0f));
-    sg::Separator::Ptr root = sg::Separator::create();
-    root->addChild(camera);
-    root->addChild(transfer);
-    root->addChild(volume);
-    root->addChild(splat);
-    sg::BoundingBoxAction box;
-    box.apply(*root);
-    camera->viewAll(box.boundingBox(), 1.0f);
-    return root;
+    return test::framedScene(camera, {transfer, volume, splat});
 }
 
 // RMSE over all channels, relative to the reference's largest value.

@@ -16,7 +16,6 @@
 #include "nodes/volume/RawHeader.h"
 #include "scenegraph/Log.h"
 #include "scenegraph/Separator.h"
-#include "scenegraph/actions/BoundingBoxAction.h"
 
 #include <gtest/gtest.h>
 
@@ -109,14 +108,7 @@ test::RenderedFrame renderSlab(const TransferFunction::Ptr& transfer, const std:
     VolumeData::Ptr volume = VolumeData::create();
     volume->source.setValue(VolumeSource::FileRaw);
     volume->fileName.setValue(path);
-    sg::Separator::Ptr root = sg::Separator::create();
-    root->addChild(camera);
-    root->addChild(transfer);
-    root->addChild(volume);
-    root->addChild(splat);
-    sg::BoundingBoxAction box;
-    box.apply(*root);
-    camera->viewAll(box.boundingBox(), 1.0f);
+    const sg::Separator::Ptr root = test::framedScene(camera, {transfer, volume, splat});
     return test::renderFrame(*root, kImageSize, kImageSize);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "GlTestSupport.h"
+#include "nodes/Camera.h"
 #include "nodes/NodeTypes.h"
 #include "nodes/image/Image.h"
 #include "nodes/volume/Grid.h"
@@ -13,6 +14,8 @@
 #include "scenegraph/Declare.h"
 #include "scenegraph/Group.h"
 #include "scenegraph/Node.h"
+#include "scenegraph/Separator.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/RenderAction.h"
 
 #include <gtest/gtest.h>
@@ -102,6 +105,25 @@ struct RenderedFrame {
     sg::RenderStatistics statistics;
 };
 
+
+/// @brief Points `camera` so that the whole of `root` (its bounding box) fills the view.
+inline void frameCamera(nodes::Camera& camera, sg::Node& root) {
+    sg::BoundingBoxAction box;
+    box.apply(root);
+    camera.viewAll(box.boundingBox(), 1.0f);
+}
+
+/// @brief A Separator of `camera` followed by `nodes`, with the camera framed on the scene.
+inline sg::Separator::Ptr framedScene(const nodes::Camera::Ptr& camera,
+                                      const std::vector<sg::Node::Ptr>& nodes) {
+    sg::Separator::Ptr root = sg::Separator::create();
+    root->addChild(camera);
+    for (const sg::Node::Ptr& node : nodes) {
+        root->addChild(node);
+    }
+    frameCamera(*camera, *root);
+    return root;
+}
 /// @brief Renders `root` with a new action; answers the image and the frame's statistics.
 inline RenderedFrame renderFrame(sg::Node& root, int width, int height) {
     nodes::registerNodeTypes();

@@ -13,7 +13,6 @@
 #include "nodes/volume/DenseGrid.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Separator.h"
-#include "scenegraph/actions/BoundingBoxAction.h"
 
 #include <gtest/gtest.h>
 
@@ -73,12 +72,6 @@ sg::Separator::Ptr volumeScene(const Camera::Ptr& camera, const std::string& pat
     return root;
 }
 
-void frame(Camera& camera, sg::Node& root) {
-    sg::BoundingBoxAction box;
-    box.apply(root);
-    camera.viewAll(box.boundingBox(), 1.0f);
-}
-
 // Largest green and red over the image.
 glm::vec2 maxGreenRed(const image::Image& image) {
     const image::Image::Statistics statistics = image.statistics();
@@ -94,7 +87,7 @@ TEST(TextureSplat, opaqueShellHidesTheGlowingInteriorFromAxisAndObliqueViews) {
         OrthographicCamera::Ptr camera = OrthographicCamera::create();
         camera->orientation.setValue(render::rotationLookingAlong(axis));
         sg::Separator::Ptr root = volumeScene(camera, path, {TextureSplat::create()});
-        frame(*camera, *root);
+        test::frameCamera(*camera, *root);
         const glm::vec2 greenRed = maxGreenRed(test::renderScene(*root, 48, 48));
         EXPECT_LT(greenRed.x, 1e-3f) << "axis view " << axis.x << " " << axis.y << " " << axis.z;
         EXPECT_GT(greenRed.y, 0.9f);
@@ -103,7 +96,7 @@ TEST(TextureSplat, opaqueShellHidesTheGlowingInteriorFromAxisAndObliqueViews) {
         PerspectiveCamera::Ptr camera = PerspectiveCamera::create();
         camera->orientation.setValue(render::rotationLookingAlong(direction));
         sg::Separator::Ptr root = volumeScene(camera, path, {TextureSplat::create()});
-        frame(*camera, *root);
+        test::frameCamera(*camera, *root);
         const glm::vec2 greenRed = maxGreenRed(test::renderScene(*root, 48, 48));
         EXPECT_LT(greenRed.x, 1e-3f) << "oblique view " << direction.x << " " << direction.y;
         EXPECT_GT(greenRed.y, 0.9f);
@@ -115,7 +108,7 @@ TEST(TextureSplat, withoutTheShellTheInteriorGlows) {
     const std::string path = shellVolume(10, 0);
     OrthographicCamera::Ptr camera = OrthographicCamera::create();
     sg::Separator::Ptr root = volumeScene(camera, path, {TextureSplat::create()});
-    frame(*camera, *root);
+    test::frameCamera(*camera, *root);
     const glm::vec2 greenRed = maxGreenRed(test::renderScene(*root, 48, 48));
     // Ten voxels of emission 1 per unit length along z.
     EXPECT_NEAR(greenRed.x, 10.0f, 0.1f);
@@ -137,7 +130,7 @@ TEST(TextureSplat, splatsBehindAnOpaqueMeshAreHiddenAndInFrontBlendOverIt) {
     red->emissiveColor.setValue({glm::vec3(1.0f, 0.0f, 0.0f)});
     sg::Separator::Ptr root =
         volumeScene(camera, path, {red, corners, square, TextureSplat::create()});
-    frame(*camera, *root);
+    test::frameCamera(*camera, *root);
     const image::Image image = test::renderScene(*root, 64, 64);
     // The view frames the square and the volume (x from -4 to 7.5): the volume covers about
     // columns 22 to 50, the square's edge x = 3.5 is column 38.

@@ -13,7 +13,6 @@
 #include "nodes/volume/RawVolume.h"
 #include "scenegraph/Log.h"
 #include "scenegraph/Separator.h"
-#include "scenegraph/actions/BoundingBoxAction.h"
 
 #include <gtest/gtest.h>
 
@@ -78,14 +77,8 @@ void expectRenders(const VolumeData::Ptr& volume, const std::string& what) {
     ASSERT_LT(statistics.minimum, statistics.maximum) << "a constant grid cannot be classified";
     PerspectiveCamera::Ptr camera = PerspectiveCamera::create();
     camera->orientation.setValue(render::rotationLookingAlong(glm::vec3(-0.6f, -0.3f, -1.0f)));
-    sg::Separator::Ptr root = sg::Separator::create();
-    root->addChild(camera);
-    root->addChild(rampOver(*volume));
-    root->addChild(volume);
-    root->addChild(TextureSplat::create());
-    sg::BoundingBoxAction box;
-    box.apply(*root);
-    camera->viewAll(box.boundingBox(), 1.0f);
+    const sg::Separator::Ptr root =
+        test::framedScene(camera, {rampOver(*volume), volume, TextureSplat::create()});
 
     const test::RenderedFrame frame = test::renderFrame(*root, kImageSize, kImageSize);
     EXPECT_GT(frame.statistics.splats, 0u);

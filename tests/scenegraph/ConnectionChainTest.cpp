@@ -32,15 +32,6 @@ std::vector<TestCube::Ptr> cubeChain(std::size_t count, const std::string& prefi
     return cubes;
 }
 
-std::string connectError(Field& target, Field& source) {
-    try {
-        target.connectFrom(source);
-    } catch (const DataError& error) {
-        return error.what();
-    }
-    return "no error";
-}
-
 // A file of `count` cubes, each but the first connected from the one before, one per line
 // after the header.
 std::string chainFile(std::size_t count) {

@@ -13,15 +13,7 @@ namespace {
 
 using test::RecordingObserver;
 using test::TestCube;
-
-std::string connectError(Field& target, Field& source) {
-    try {
-        target.connectFrom(source);
-    } catch (const DataError& error) {
-        return error.what();
-    }
-    return "no error";
-}
+using test::connectError;
 
 TEST(Field, knowsItsContainerNameAndFullName) {
     TestCube::Ptr cube = TestCube::create();

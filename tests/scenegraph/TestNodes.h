@@ -4,6 +4,7 @@
 
 #include "scenegraph/Declare.h"
 #include "scenegraph/Engine.h"
+#include "scenegraph/Error.h"
 #include "scenegraph/EngineOutput.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/Observer.h"
@@ -14,6 +15,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <string>
 #include <vector>
 
 namespace texsplat::sg::test {
@@ -80,5 +82,15 @@ public:
     std::vector<const Field*> sources;
     std::vector<Notifier*> destroyed;
 };
+
+/// The message of the DataError that `target.connectFrom(source)` throws, or "no error".
+inline std::string connectError(Field& target, Field& source) {
+    try {
+        target.connectFrom(source);
+    } catch (const DataError& error) {
+        return error.what();
+    }
+    return "no error";
+}
 
 } // namespace texsplat::sg::test
