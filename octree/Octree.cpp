@@ -44,7 +44,7 @@ struct Octree::Statistics {
 namespace {
 
 // Levels above 62 would overflow the 64-bit voxel coordinates of a node's block.
-constexpr int kMaxLevel = 62;
+[[maybe_unused]] constexpr int kMaxLevel = 62; // only asserted
 
 } // namespace
 

@@ -47,6 +47,10 @@ void FieldContainer::setName(std::string name) {
     for (char c : name) {
         isValid = isValid && isNameChar(c);
     }
+    if (name == "_") {
+        throw DataError(describe() + ": invalid name '_' (it is reserved: Inventor writers name "
+                                     "a node that has no name '_+N')");
+    }
     if (!isValid) {
         throw DataError(describe() + ": invalid name '" + name +
                         "' (a name must not start with a digit or '#' and must not contain "

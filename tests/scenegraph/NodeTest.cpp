@@ -50,6 +50,13 @@ TEST(Node, namesFollowInventorRules) {
                                    "digit or '#' and must not contain whitespace, control "
                                    "characters or any of \"'+,.[\\]{})");
     }
+    try {
+        cube->setName("_");
+        FAIL() << "no error";
+    } catch (const DataError& error) {
+        EXPECT_STREQ(error.what(), "TestCube: invalid name '_' (it is reserved: Inventor writers "
+                                   "name a node that has no name '_+N')");
+    }
     // Exactly the names the scene reader cannot read back (WriteActionTest reads the others).
     for (const char* name : {"a b", "a\tb", "a\nb", "a\x01", "a\x7f", "#a", "a\"b", "a'b", "a+1",
                              "a,b", "a.b", "part[1]", "a]", "a\\b", "a{", "a}"}) {

@@ -164,7 +164,7 @@ TEST_F(SceneReaderTest, stripsAutomaticDefNameSuffixes) {
                                          "DEF _+2 Group { } DEF _ Group { } }"));
     ASSERT_EQ(root->childCount(), 6u);
     EXPECT_EQ(root->child(4)->name(), "");
-    EXPECT_EQ(root->child(5)->name(), "_");
+    EXPECT_EQ(root->child(5)->name(), ""); // "_" is reserved for nodes without a name
     EXPECT_EQ(root->child(0)->name(), "");
     EXPECT_EQ(root->child(1), root->child(0));
     EXPECT_EQ(root->child(2)->name(), "box");

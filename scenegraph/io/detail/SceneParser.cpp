@@ -197,9 +197,11 @@ std::shared_ptr<FieldContainer> SceneParser::readInstance(const std::string& typ
     const std::shared_ptr<FieldContainer> container = createInstance(typeName, where);
     if (!defName.empty()) {
         // `name+N` is how Inventor writers make repeated or missing names unique: the node's
-        // own name is the part before '+'. "+N" (ours) and "_+N" (Coin's) mean it has none.
+        // own name is the part before '+'. "+N" (ours) and "_+N" (Coin's) mean it has none, and
+        // so does a bare "_" (setName() reserves it: a second node named "_" would be written
+        // as "_+N" and read back nameless).
         std::string name = defName.substr(0, defName.find('+'));
-        if (name == "_" && name.size() < defName.size()) {
+        if (name == "_") {
             name.clear();
         }
         try {
