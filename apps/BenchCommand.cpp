@@ -1,4 +1,6 @@
 #include "apps/Commands.h"
+
+#include "apps/OptionError.h"
 #include "apps/SceneSetup.h"
 
 #include "nodes/bench/BenchReport.h"
@@ -46,15 +48,6 @@ std::vector<glm::ivec2> parseSizes(const std::string& text) {
         throw DataError("--size: expected WxH with whole numbers from 1 to 16384, got ''");
     }
     return sizes;
-}
-
-// Runs `parse` and prefixes a DataError with the option's name.
-template <class Parse> auto withOption(const char* option, Parse&& parse) {
-    try {
-        return parse();
-    } catch (const DataError& e) {
-        throw DataError(std::string(option) + ": " + e.what());
-    }
 }
 
 // Progress on stderr: one updating line on a terminal, a line per finished stage otherwise.

@@ -1,5 +1,6 @@
 #include "apps/Commands.h"
 
+#include "apps/OptionError.h"
 #include "nodes/kernel/CubicKernel.h"
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/GaussianKernel.h"
@@ -74,15 +75,6 @@ std::vector<double> parseNumbers(const std::string& text, size_t count, const ch
         throw DataError(message.str());
     }
     return numbers;
-}
-
-// Runs check and puts the option's name in front of its DataError, as main prints it.
-template <typename Check> void checkOption(const char* option, const Check& check) {
-    try {
-        check();
-    } catch (const DataError& error) {
-        throw DataError(std::string(option) + ": " + error.what());
-    }
 }
 
 // JSON numbers: shortest round-trip form; NaN and infinities (which JSON lacks) become null.
@@ -350,13 +342,13 @@ void checkOptions(const KernelOptions& options) {
         throw DataError("--support: needs --kernel optimized|gaussian or --optimize with --json "
                         "(the paper's kernel has its own support)");
     const OptimizerOptions onLattice = optimizerOptions(options, true);
-    checkOption("--spacing", [&] { LatticeAnalysis::checkSpacing(onLattice.spacing); });
+    withOption("--spacing", [&] { LatticeAnalysis::checkSpacing(onLattice.spacing); });
     if (options.support) {
-        checkOption("--support", [&] { KernelOptimizer{onLattice}; });
+        withOption("--support", [&] { KernelOptimizer{onLattice}; });
         if (!options.json && !options.optimize)
-            checkOption("--support", [&] { KernelOptimizer{optimizerOptions(options, false)}; });
+            withOption("--support", [&] { KernelOptimizer{optimizerOptions(options, false)}; });
     }
-    checkOption("--extent", [&] { FootprintTexture::checkExtent(options.extent); });
+    withOption("--extent", [&] { FootprintTexture::checkExtent(options.extent); });
     if (!options.texture.empty())
         FootprintTexture::checkPath(options.texture);
     if (!options.plot.empty())
