@@ -228,6 +228,20 @@ Separator {
     }
 }
 
+TEST_F(SceneReaderTest, aConnectedNodeDroppedLaterInTheFileIsLeftOut) {
+    // The first value of `node` has a connection and is replaced before the read ends (a
+    // fuzzer finding: the connection outlived its field).
+    const auto root = as<AllFields>(read(R"(
+AllFields {
+    node TestCube { size = TestCube { size 3 } . size }
+    node NULL
+    nodes [ Holder { fields [ SFFloat a ] a = TestCube { } . size } ]
+    nodes [ ]
+})"));
+    EXPECT_EQ(root->node.value(), nullptr);
+    EXPECT_EQ(root->nodes.size(), 0u);
+}
+
 TEST_F(SceneReaderTest, aSourceThatContainsItsTargetNeedsAnotherHolder) {
     const auto root = as<Separator>(read(
         "Separator { DEF t TestCube { size = DEF s AllFields { size 2 USE t } . size } USE s }"));

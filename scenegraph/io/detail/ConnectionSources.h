@@ -12,6 +12,9 @@ namespace texsplat::sg::detail {
 /// `size = TestCube { size 2 } . size`): its source container may be held by nothing else.
 struct ReadConnection {
     Field* field = nullptr;
+    /// Holds the connected field's container until the read ends: a later value in the file may
+    /// drop it from the scene (`node Holder { a = Src { } . b } node NULL`).
+    std::shared_ptr<FieldContainer> fieldContainer;
     /// Holds the source's container until keepUnheldSources() has decided who holds it.
     std::shared_ptr<FieldContainer> source;
     /// Where the source starts in the file (`USE`, `DEF` or its type name).

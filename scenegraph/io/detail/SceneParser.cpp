@@ -404,7 +404,8 @@ void SceneParser::readConnection(Field& field) {
         } else if (Field* sourceField = source->findField(name)) {
             field.connectFrom(*sourceField);
             // Whether anything else holds the source is known once the whole graph is read.
-            mConnections.push_back({&field, source, sourceAt});
+            mConnections.push_back(
+                {&field, field.container()->shared_from_this(), source, sourceAt});
         } else {
             mLexer.fail(nameAt, source->describe() + " has no field or output '" + name + "'");
         }
