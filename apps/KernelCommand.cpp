@@ -317,21 +317,28 @@ void printOptimization(const OptimizerResult& result, double seconds) {
                 k.b, k.c, k.d, k.e);
 }
 
-void writeOutputs(const KernelOptions& options, const RadialKernel& kernel) {
+// Writes the texture and plot the options ask for; returns the texture's summary line (empty
+// without --texture) for the caller to print after the results. Runs before any result is
+// printed, so that a kernel the texture cannot hold or an unwritable path fails with no output.
+std::string writeOutputs(const KernelOptions& options, const RadialKernel& kernel) {
+    std::string summary;
     if (!options.texture.empty()) {
         const FootprintTexture texture(kernel, options.resolution, options.extent);
         const TextureRipple ripple = texture.measureLayerRipple(kernel);
         const TextureRipple ripple8 = texture.quantizedTo8Bits().measureLayerRipple(kernel);
         texture.write(options.texture);
-        std::fprintf(options.json ? stderr : stdout,
-                     "texture %s: %dx%d texels over [-%g, %g]^2; 2D layer sum %.6f .. %.6f "
-                     "(exact %.6f .. %.6f), texture adds up to %.3g; as 8-bit texels up to %.3g\n",
-                     options.texture.c_str(), options.resolution, options.resolution,
-                     options.extent, options.extent, ripple.min, ripple.max, ripple.exactMin,
-                     ripple.exactMax, ripple.maxError, ripple8.maxError);
+        char numbers[400]; // the path is appended separately: it may be of any length
+        std::snprintf(numbers, sizeof numbers,
+                      ": %dx%d texels over [-%g, %g]^2; 2D layer sum %.6f .. %.6f (exact %.6f .. "
+                      "%.6f), texture adds up to %.3g; as 8-bit texels up to %.3g\n",
+                      options.resolution, options.resolution, options.extent, options.extent,
+                      ripple.min, ripple.max, ripple.exactMin, ripple.exactMax, ripple.maxError,
+                      ripple8.maxError);
+        summary = "texture " + options.texture + numbers;
     }
     if (!options.plot.empty())
         writeKernelPlot(kernel, options.plot);
+    return summary;
 }
 
 // What the libraries would reject, checked before any work (the optimizer, output) and named by
@@ -361,6 +368,7 @@ void runKernelCommand(const KernelOptions& options) {
     const NamedKernel named = makeKernel(options);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    const std::string textureSummary = writeOutputs(options, *named.kernel);
     if (options.json) {
         std::fputs(kernelJson(options, named).c_str(), stdout);
     } else if (options.optimize) {
@@ -378,7 +386,7 @@ void runKernelCommand(const KernelOptions& options) {
                                           : runOptimizer(options, optimizerOptions(options, true),
                                                          false));
     }
-    writeOutputs(options, *named.kernel);
+    std::fputs(textureSummary.c_str(), options.json ? stderr : stdout);
 }
 
 } // namespace

@@ -12,12 +12,6 @@
 namespace texsplat::image {
 namespace {
 
-/// The error for an .exr path in a build without OpenEXR; names the option that turns it on.
-[[maybe_unused]] IoError exrNotBuilt(const std::string& path) {
-    return IoError(path + ": OpenEXR support is not built in (configure with "
-                          "-DTEXSPLAT_WITH_EXR=ON)");
-}
-
 } // namespace
 
 ImageFormat imageFormatOf(const std::string& path) {
@@ -33,12 +27,16 @@ bool isExrSupported() {
 #endif
 }
 
-void writeImage(const Image& image, const std::string& path) {
+ImageFormat supportedImageFormatOf(const std::string& path) {
     const ImageFormat format = imageFormatOf(path);
-#ifndef TEXSPLAT_WITH_EXR
-    if (format == ImageFormat::Exr)
-        throw exrNotBuilt(path);
-#endif
+    if (format == ImageFormat::Exr && !isExrSupported())
+        throw IoError(path + ": OpenEXR support is not built in (configure with "
+                             "-DTEXSPLAT_WITH_EXR=ON)");
+    return format;
+}
+
+void writeImage(const Image& image, const std::string& path) {
+    const ImageFormat format = supportedImageFormatOf(path);
     writeFileAtomically(path, [&](std::ofstream& stream) {
         if (format == ImageFormat::Png)
             detail::writePng(image, stream, path);
@@ -50,13 +48,12 @@ void writeImage(const Image& image, const std::string& path) {
 }
 
 Image readImage(const std::string& path) {
-    if (imageFormatOf(path) == ImageFormat::Png)
-        return detail::readPng(path);
+    [[maybe_unused]] const ImageFormat format = supportedImageFormatOf(path);
 #ifdef TEXSPLAT_WITH_EXR
-    return detail::readExr(path);
-#else
-    throw exrNotBuilt(path);
+    if (format == ImageFormat::Exr)
+        return detail::readExr(path);
 #endif
+    return detail::readPng(path);
 }
 
 } // namespace texsplat::image

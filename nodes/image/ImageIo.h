@@ -20,6 +20,11 @@ ImageFormat imageFormatOf(const std::string& path);
 /// @brief Whether this build can read and write OpenEXR (the TEXSPLAT_WITH_EXR option).
 bool isExrSupported();
 
+/// @brief imageFormatOf(), and a format this build can read and write: lets a command refuse a
+/// path before any work. Throws IoError("out.exr: OpenEXR support is not built in (configure
+/// with -DTEXSPLAT_WITH_EXR=ON)") for `.exr` without OpenEXR.
+ImageFormat supportedImageFormatOf(const std::string& path);
+
 /// @brief Writes `image` to `path` in the format its extension names.
 ///
 /// The file appears all at once: the image is written to a temporary file in the same

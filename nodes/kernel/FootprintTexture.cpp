@@ -30,6 +30,8 @@ void FootprintTexture::checkExtent(double extent) {
 
 void FootprintTexture::checkPath(const std::string& path) {
     requireFileExtension(path, {".pfm", ".exr", ".png"}, "texture");
+    if (fileExtension(path) != ".pfm")
+        image::supportedImageFormatOf(path);
 }
 
 FootprintTexture::FootprintTexture(int resolution, double extent, std::vector<float> texels)

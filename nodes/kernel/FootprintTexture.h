@@ -43,7 +43,8 @@ public:
     static void checkExtent(double extent);
 
     /// @brief Throws IoError("t.tif: unknown texture extension '.tif' (supported: .pfm, .exr,
-    /// .png)") unless write() knows the format path's extension names.
+    /// .png)") unless write() knows the format path's extension names, and for `.exr` in a
+    /// build without OpenEXR.
     static void checkPath(const std::string& path);
 
     /// @brief Tabulates kernel.footprint at resolution × resolution texel centres over

@@ -270,11 +270,12 @@ TEST_F(KernelCommandTest, textureFormatFollowsTheExtension) {
 }
 
 TEST_F(KernelCommandTest, otherTextureAndPlotExtensionsFailBeforeAnyWork) {
-    const struct {
+    struct BadCase {
         std::string arguments;
         std::string message;
         std::string file;
-    } cases[] = {
+    };
+    std::vector<BadCase> cases = {
         {"kernel --json --texture " + path("t.tif"),
          path("t.tif") + ": unknown texture extension '.tif' (supported: .pfm, .exr, .png)",
          path("t.tif")},
@@ -284,7 +285,12 @@ TEST_F(KernelCommandTest, otherTextureAndPlotExtensionsFailBeforeAnyWork) {
         {"kernel --plot " + path("p.png"),
          path("p.png") + ": unknown plot extension '.png' (supported: .svg)", path("p.png")},
     };
-    for (const auto& badCase : cases) {
+    if (!texsplat::image::isExrSupported())
+        cases.push_back({"kernel --json --texture " + path("t.exr"),
+                         path("t.exr") + ": OpenEXR support is not built in (configure with "
+                                         "-DTEXSPLAT_WITH_EXR=ON)",
+                         path("t.exr")});
+    for (const BadCase& badCase : cases) {
         const auto output = runTexsplat(badCase.arguments);
         EXPECT_EQ(output.exitCode, 1) << badCase.arguments;
         EXPECT_EQ(output.standardOutput, "") << badCase.arguments;
@@ -351,6 +357,8 @@ TEST(KernelCommand, badOptionsFailWithClearMessages) {
         const auto output = runTexsplat(badCase.arguments);
         EXPECT_EQ(output.exitCode, 1) << badCase.arguments;
         EXPECT_EQ(output.standardError, badCase.message) << badCase.arguments;
+        // Every error comes before any result is printed.
+        EXPECT_EQ(output.standardOutput, "") << badCase.arguments;
         EXPECT_FALSE(std::ifstream("t.pfm").good()) << badCase.arguments;
     }
     const auto unknownKernel = runTexsplat("kernel --kernel foo");
