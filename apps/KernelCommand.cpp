@@ -9,11 +9,11 @@
 #include "nodes/kernel/LatticeAnalysis.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
+#include "scenegraph/fields/ValueFormat.h"
 
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -79,11 +79,7 @@ std::vector<double> parseNumbers(const std::string& text, size_t count, const ch
 
 // JSON numbers: shortest round-trip form; NaN and infinities (which JSON lacks) become null.
 std::string number(double value) {
-    if (!std::isfinite(value))
-        return "null";
-    char buffer[32];
-    const std::to_chars_result end = std::to_chars(buffer, buffer + sizeof(buffer), value);
-    return std::string(buffer, end.ptr);
+    return std::isfinite(value) ? sg::formatDouble(value) : "null";
 }
 
 template <size_t N> std::string array(const std::array<double, N>& values) {

@@ -120,10 +120,10 @@ void runRayCast(const RenderArguments& arguments, sg::Node& root, glm::ivec2 siz
 
 void runRender(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
-    // Refuse a bad output name before any work, so nothing is left half-done.
-    const image::ImageFormat format = image::imageFormatOf(arguments.output);
-    if (format == image::ImageFormat::Exr && !image::isExrSupported()) {
-        throw IoError(arguments.output + ": this build has no OpenEXR support");
+    // Refuse a bad output name or option before any work, so nothing is left half-done.
+    const image::ImageFormat format = image::supportedImageFormatOf(arguments.output);
+    if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
+        throw DataError("--raycast-step: only with --raycast");
     }
     SetupTimes setup;
     Clock::time_point start = Clock::now();
@@ -136,9 +136,6 @@ void runRender(const RenderArguments& arguments) {
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 
-    if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
-        throw DataError("--raycast-step: only with --raycast");
-    }
     if (arguments.rayCast) {
         runRayCast(arguments, *root, size, format, setup);
         return;

@@ -1,5 +1,6 @@
 #include "nodes/Material.h"
 
+#include "nodes/detail/ColorText.h"
 #include "nodes/detail/NodeContext.h"
 #include "nodes/elements/MaterialElement.h"
 #include "scenegraph/Error.h"
@@ -29,10 +30,9 @@ void Material::doAction(sg::Action& action) {
             continue;
         }
         const glm::vec3& rgb = (*color)[0];
-        if (!std::isfinite(rgb.r) || !std::isfinite(rgb.g) || !std::isfinite(rgb.b)) {
+        if (!detail::isFiniteColor(rgb)) {
             throw DataError(detail::nodeContext(*this) + ": " + color->name() +
-                            " must be finite, got " + sg::formatFloat(rgb.r) + " " +
-                            sg::formatFloat(rgb.g) + " " + sg::formatFloat(rgb.b));
+                            " must be finite, got " + detail::formatColor(rgb));
         }
     }
     if (!transparency.isEmpty() && !(transparency[0] >= 0.0f && transparency[0] <= 1.0f)) {

@@ -1,5 +1,6 @@
 #include "nodes/TransferFunction.h"
 
+#include "nodes/detail/ColorText.h"
 #include "nodes/detail/NodeContext.h"
 #include "nodes/detail/TransferTable.h"
 #include "nodes/elements/TransferFunctionElement.h"
@@ -27,15 +28,6 @@ namespace {
 
 std::string element(const sg::Field& field, std::size_t index) {
     return field.name() + "[" + std::to_string(index) + "]";
-}
-
-std::string formatColor(const glm::vec3& color) {
-    return sg::formatFloat(color.r) + " " + sg::formatFloat(color.g) + " " +
-           sg::formatFloat(color.b);
-}
-
-bool isFiniteColor(const glm::vec3& color) {
-    return std::isfinite(color.r) && std::isfinite(color.g) && std::isfinite(color.b);
 }
 
 // Checks a pair of control-point fields and returns them as one piecewise-linear map.
@@ -86,9 +78,10 @@ std::shared_ptr<const detail::TransferTable> TransferFunction::buildTable() cons
     } else {
         table->colors = controlPoints<glm::vec3>(context, colorValues, colors, [&](std::size_t i) {
             const glm::vec3& color = colors[i];
-            if (!isFiniteColor(color) || glm::any(glm::lessThan(color, glm::vec3(0.0f)))) {
+            if (!detail::isFiniteColor(color) || glm::any(glm::lessThan(color, glm::vec3(0.0f)))) {
                 throw DataError(context + ": " + element(colors, i) +
-                                " must be finite and not negative, got " + formatColor(color));
+                                " must be finite and not negative, got " +
+                                detail::formatColor(color));
             }
         });
     }

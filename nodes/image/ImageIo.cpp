@@ -10,9 +10,6 @@
 #endif
 
 namespace texsplat::image {
-namespace {
-
-} // namespace
 
 ImageFormat imageFormatOf(const std::string& path) {
     requireFileExtension(path, {".png", ".exr"}, "image");

@@ -5,13 +5,21 @@
 
 namespace texsplat::sg {
 
-std::string formatFloat(float value) {
-    // std::to_chars without a precision gives the shortest text that parses back exactly.
+namespace {
+
+// std::to_chars without a precision gives the shortest text that parses back exactly.
+template <class Number> std::string shortestText(Number value) {
     std::array<char, 32> buffer{};
     const std::to_chars_result result =
         std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
     return std::string(buffer.data(), result.ptr);
 }
+
+} // namespace
+
+std::string formatFloat(float value) { return shortestText(value); }
+
+std::string formatDouble(double value) { return shortestText(value); }
 
 std::string formatString(std::string_view text) {
     std::string quoted;

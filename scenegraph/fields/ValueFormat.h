@@ -12,6 +12,9 @@ namespace texsplat::sg {
 /// non-finite values print as `inf`, `-inf`, `nan`.
 std::string formatFloat(float value);
 
+/// @brief formatFloat() for a double: the shortest text that reads back to the same double.
+std::string formatDouble(double value);
+
 /// @brief A double-quoted string; `"` and `\` are escaped with a backslash.
 std::string formatString(std::string_view text);
 
