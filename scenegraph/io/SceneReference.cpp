@@ -16,8 +16,12 @@ namespace texsplat::sg {
 
 namespace {
 
-// Table cells must not contain a bare '|'.
+// A value as a table cell: code, with '|' escaped; a field without a value (SFTrigger) says so,
+// since an empty code span shows as two backticks.
 std::string cell(const std::string& text) {
+    if (text.empty()) {
+        return "(no value)";
+    }
     std::string escaped;
     for (char c : text) {
         escaped += c == '|' ? std::string("\\|") : std::string(1, c);

@@ -1,5 +1,7 @@
 #include "BenchmarkBaseline.h"
 
+#include <cstdio>
+#include <cstdlib>
 #include <map>
 
 namespace texsplat::microbench {
@@ -16,7 +18,12 @@ std::map<std::string, std::string>& baselines() {
 
 bool declareBaseline(const char* benchmarkName, BenchmarkFunction /*benchmark*/,
                      const char* baselineName, BenchmarkFunction /*baseline*/) {
-    baselines()[benchmarkName] = baselineName;
+    const auto [entry, isNew] = baselines().try_emplace(benchmarkName, baselineName);
+    if (!isNew) {
+        std::fprintf(stderr, "texsplat_microbench: %s has two baselines, %s and %s\n",
+                     benchmarkName, entry->second.c_str(), baselineName);
+        std::abort();
+    }
     return true;
 }
 

@@ -10,8 +10,9 @@
 // compile, and records the pair by function name during static initialization. After the run,
 // the microbench's main (RatioReporter) divides each run of a benchmark by the run of its
 // baseline with the same arguments: "ClassifyGrid/128" by "ClassifyGridBaselinePerValue/128".
-// A benchmark has at most one baseline (a second declaration for it does not compile: the
-// variable the macro defines is named after the benchmark); a baseline may serve several.
+// A benchmark has at most one baseline (a second declaration for it in the same file does not
+// compile, the variable the macro defines being named after the benchmark; one in another file
+// stops the microbench at start-up); a baseline may serve several.
 
 #include <benchmark/benchmark.h>
 

@@ -1,5 +1,6 @@
 #include "nodes/kernel/FootprintTexture.h"
 
+#include "SceneNodesTestSupport.h"
 #include "nodes/image/ImageIo.h"
 #include "nodes/kernel/CubicKernel.h"
 #include "scenegraph/Error.h"
@@ -16,20 +17,7 @@
 
 using texsplat::kernel::CubicKernel;
 using texsplat::kernel::FootprintTexture;
-
-namespace {
-
-template <typename Error, typename Call>
-void expectMessage(const Call& call, const std::string& message) {
-    try {
-        call();
-        FAIL() << "expected: " << message;
-    } catch (const Error& error) {
-        EXPECT_EQ(error.what(), message);
-    }
-}
-
-} // namespace
+using texsplat::nodes::test::errorOf;
 
 TEST(FootprintTexture, texelsHoldTheFootprintAtTexelCentres) {
     const CubicKernel kernel = CubicKernel::paper();
@@ -109,35 +97,32 @@ TEST(FootprintTexture, writesExrAndPngWithFInEveryChannel) {
 TEST(FootprintTexture, badArgumentsThrowWithClearMessages) {
     const CubicKernel kernel = CubicKernel::paper();
     using texsplat::DataError;
-    expectMessage<DataError>([&] { FootprintTexture(kernel, 1); },
-                             "footprint texture: resolution 1 must be in [2, 8192]");
+    EXPECT_EQ(errorOf<DataError>([&] { FootprintTexture(kernel, 1); }),
+              "footprint texture: resolution 1 must be in [2, 8192]");
     for (const auto& [bad, text] :
          {std::pair{std::nan(""), "nan"}, std::pair{0.0, "0"}, std::pair{8.001, "8.001"},
           std::pair{1e300, "1e+300"}}) {
         const double extent = bad;
-        expectMessage<DataError>([&] { FootprintTexture(kernel, 16, extent); },
-                                 std::string("footprint texture: extent ") + text +
-                                     " must be in (0, 8] voxels");
+        EXPECT_EQ(errorOf<DataError>([&] { FootprintTexture(kernel, 16, extent); }),
+                  std::string("footprint texture: extent ") + text + " must be in (0, 8] voxels");
     }
     EXPECT_NO_THROW(FootprintTexture(kernel, 2, 8.0));
     const CubicKernel wide = CubicKernel::fromShape(5.0, 8.5, -0.08, 0.002);
-    expectMessage<DataError>([&] { FootprintTexture(kernel, 4).measureLayerRipple(wide, 2); },
-                             "footprint texture: kernel support 8.5 must be at most 8 voxels to "
-                             "measure the layer ripple");
+    EXPECT_EQ(errorOf<DataError>([&] { FootprintTexture(kernel, 4).measureLayerRipple(wide, 2); }),
+              "footprint texture: kernel support 8.5 must be at most 8 voxels to measure the "
+              "layer ripple");
 }
 
 TEST(FootprintTexture, writeRejectsOtherExtensionsAndWritesNothing) {
     const FootprintTexture texture(CubicKernel::paper(), 4);
     const std::string path = ::testing::TempDir() + "footprint_test.tif";
-    expectMessage<texsplat::IoError>([&] { texture.write(path); },
-                                     path + ": unknown texture extension '.tif' (supported: .pfm, "
-                                            ".exr, .png)");
+    EXPECT_EQ(errorOf<texsplat::IoError>([&] { texture.write(path); }),
+              path + ": unknown texture extension '.tif' (supported: .pfm, .exr, .png)");
     EXPECT_FALSE(std::ifstream(path).good());
-    expectMessage<texsplat::IoError>([&] { texture.write("footprint"); },
-                                     "footprint: no texture extension (supported: .pfm, .exr, "
-                                     ".png)");
-    expectMessage<texsplat::IoError>(
-        [&] { texture.write("/nonexistent-directory/texture.pfm"); },
-        "/nonexistent-directory/texture.pfm: cannot create a file in directory "
-        "/nonexistent-directory: No such file or directory");
+    EXPECT_EQ(errorOf<texsplat::IoError>([&] { texture.write("footprint"); }),
+              "footprint: no texture extension (supported: .pfm, .exr, .png)");
+    const std::string unwritable = "/nonexistent-directory/texture.pfm";
+    EXPECT_EQ(errorOf<texsplat::IoError>([&] { texture.write(unwritable); }),
+              unwritable + ": cannot create a file in directory "
+              "/nonexistent-directory: No such file or directory");
 }

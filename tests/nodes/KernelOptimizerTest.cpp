@@ -1,5 +1,6 @@
 #include "nodes/kernel/KernelOptimizer.h"
 
+#include "SceneNodesTestSupport.h"
 #include "scenegraph/Error.h"
 
 #include <gtest/gtest.h>
@@ -9,6 +10,7 @@
 #include <string>
 
 using namespace texsplat::kernel;
+using texsplat::nodes::test::errorOf;
 
 namespace {
 
@@ -137,12 +139,7 @@ TEST(KernelOptimizer, supportRangeFollowsTheLattice) {
 
 TEST(KernelOptimizer, badOptionsThrowWithClearMessages) {
     const auto expectRejected = [](const OptimizerOptions& options, const std::string& message) {
-        try {
-            KernelOptimizer{options};
-            FAIL() << "expected DataError: " << message;
-        } catch (const texsplat::DataError& error) {
-            EXPECT_EQ(error.what(), message);
-        }
+        EXPECT_EQ(errorOf<texsplat::DataError>([&] { KernelOptimizer{options}; }), message);
     };
     const std::string reason = ": more than half the cell diagonal (or some points are out of "
                                "every kernel's reach) and at most 4 times the cube root of the "
@@ -164,13 +161,8 @@ TEST(KernelOptimizer, badOptionsThrowWithClearMessages) {
     options.fixedSupport.reset();
     expectRejected(options, "lattice spacing (1, 1, 5) must have its largest spacing at most 4 "
                             "times its smallest (the run time grows with the ratio)");
-    try {
-        KernelOptimizer().fitGaussian(5.0);
-        FAIL() << "expected DataError";
-    } catch (const texsplat::DataError& error) {
-        EXPECT_EQ(error.what(), "kernel support 5 must be in (0.866025, 4] on lattice spacing "
-                                "(1, 1, 1)" + reason);
-    }
+    EXPECT_EQ(errorOf<texsplat::DataError>([] { KernelOptimizer().fitGaussian(5.0); }),
+              "kernel support 5 must be in (0.866025, 4] on lattice spacing (1, 1, 1)" + reason);
 }
 
 TEST(KernelOptimizer, gaussianOfTheSameExtentIsFarLessFlat) {

@@ -1,5 +1,6 @@
 #include "nodes/kernel/KernelPlot.h"
 
+#include "SceneNodesTestSupport.h"
 #include "nodes/kernel/CubicKernel.h"
 #include "scenegraph/Error.h"
 
@@ -10,6 +11,7 @@
 #include <sstream>
 
 using texsplat::kernel::CubicKernel;
+using texsplat::nodes::test::errorOf;
 
 TEST(KernelPlot, svgHasBothCurvesAndTheKernelsDescription) {
     const CubicKernel kernel = CubicKernel::paper();
@@ -40,12 +42,8 @@ TEST(KernelPlot, writesTheFileOrThrowsIoError) {
 TEST(KernelPlot, onlySvgFileNamesAreWritten) {
     const CubicKernel kernel = CubicKernel::paper();
     const std::string path = ::testing::TempDir() + "kernel_plot_test.png";
-    try {
-        texsplat::kernel::writeKernelPlot(kernel, path);
-        FAIL() << "expected IoError";
-    } catch (const texsplat::IoError& error) {
-        EXPECT_EQ(error.what(), path + ": unknown plot extension '.png' (supported: .svg)");
-    }
+    EXPECT_EQ(errorOf<texsplat::IoError>([&] { texsplat::kernel::writeKernelPlot(kernel, path); }),
+              path + ": unknown plot extension '.png' (supported: .svg)");
     EXPECT_FALSE(std::ifstream(path).good());
     const std::string upper = ::testing::TempDir() + "kernel_plot_test.SVG";
     texsplat::kernel::writeKernelPlot(kernel, upper);

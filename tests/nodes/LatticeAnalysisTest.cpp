@@ -1,5 +1,6 @@
 #include "nodes/kernel/LatticeAnalysis.h"
 
+#include "SceneNodesTestSupport.h"
 #include "nodes/kernel/CubicKernel.h"
 #include "scenegraph/Error.h"
 
@@ -14,6 +15,7 @@
 using texsplat::kernel::CubicCoefficients;
 using texsplat::kernel::CubicKernel;
 using texsplat::kernel::LatticeAnalysis;
+using texsplat::nodes::test::errorOf;
 
 namespace {
 
@@ -114,14 +116,10 @@ TEST(LatticeAnalysis, nonIntegrableKernelHasInfiniteRms) {
 TEST(LatticeAnalysis, badSpacingThrowsWithClearMessage) {
     const CubicKernel kernel = CubicKernel::paper();
     for (double bad : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
-        try {
-            LatticeAnalysis(kernel, {1.0, bad, 1.0});
-            FAIL() << "expected DataError for spacing " << bad;
-        } catch (const texsplat::DataError& error) {
-            std::ostringstream expected;
-            expected << "lattice spacing (1, " << bad << ", 1) must be finite and > 0";
-            EXPECT_EQ(error.what(), expected.str());
-        }
+        std::ostringstream expected;
+        expected << "lattice spacing (1, " << bad << ", 1) must be finite and > 0";
+        EXPECT_EQ(errorOf<texsplat::DataError>([&] { LatticeAnalysis(kernel, {1.0, bad, 1.0}); }),
+                  expected.str());
     }
 }
 
@@ -131,14 +129,10 @@ TEST(LatticeAnalysis, spacingRatioAboveFourIsRejected) {
     for (const auto& [spacing, text] :
          {std::pair{std::array<double, 3>{1.0, 1.0, 4.001}, "(1, 1, 4.001)"},
           std::pair{std::array<double, 3>{1e-10, 1.0, 1.0}, "(1e-10, 1, 1)"}}) {
-        try {
-            LatticeAnalysis(kernel, spacing);
-            FAIL() << "expected DataError for spacing " << text;
-        } catch (const texsplat::DataError& error) {
-            EXPECT_EQ(error.what(), std::string("lattice spacing ") + text +
-                                        " must have its largest spacing at most 4 times its "
-                                        "smallest (the run time grows with the ratio)");
-        }
+        EXPECT_EQ(errorOf<texsplat::DataError>([&] { LatticeAnalysis(kernel, spacing); }),
+                  std::string("lattice spacing ") + text +
+                      " must have its largest spacing at most 4 times its smallest (the run time "
+                      "grows with the ratio)");
     }
 }
 
@@ -146,12 +140,8 @@ TEST(LatticeAnalysis, supportAboveFourCubeRootsOfTheCellVolumeIsRejected) {
     const CubicKernel kernel = CubicKernel::paper();
     EXPECT_EQ(LatticeAnalysis::maxSupport({1.0, 0.5, 2.0}), 4.0);
     EXPECT_NO_THROW(LatticeAnalysis(kernel, {0.39, 0.39, 0.39}));
-    try {
-        LatticeAnalysis(kernel, {0.2, 0.25, 0.3});
-        FAIL() << "expected DataError";
-    } catch (const texsplat::DataError& error) {
-        EXPECT_STREQ(error.what(), "kernel support 1.55623 must be at most 0.986485 on lattice "
-                                   "spacing (0.2, 0.25, 0.3) (4 times the cube root of the cell "
-                                   "volume; the run time grows as t³ over the volume)");
-    }
+    EXPECT_EQ(errorOf<texsplat::DataError>([&] { LatticeAnalysis(kernel, {0.2, 0.25, 0.3}); }),
+              "kernel support 1.55623 must be at most 0.986485 on lattice spacing (0.2, 0.25, "
+              "0.3) (4 times the cube root of the cell volume; the run time grows as t³ over the "
+              "volume)");
 }

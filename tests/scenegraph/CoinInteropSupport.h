@@ -50,7 +50,7 @@ protected:
     std::string path(const std::string& name) const { return (mDirectory / name).string(); }
 
     // Runs coin_interop_tool with `arguments`; returns its stdout, fails the test on exit != 0.
-    std::string runCoin(const std::string& arguments) const {
+    std::string runCoin([[maybe_unused]] const std::string& arguments) const {
 #ifdef TEXSPLAT_COIN_INTEROP_TOOL
         const std::string output = path("coin_stdout.txt");
         const std::string command = std::string(TEXSPLAT_COIN_INTEROP_TOOL) + " " + arguments +
@@ -60,7 +60,7 @@ protected:
                              << readText(path("coin_stderr.txt"));
         return readText(output);
 #else
-        return arguments;
+        return {}; // not reached: SetUp() skips every test in a build without Coin
 #endif
     }
 
