@@ -299,9 +299,11 @@ TEST_F(KernelCommandTest, otherTextureAndPlotExtensionsFailBeforeAnyWork) {
     }
 }
 
-TEST(KernelCommand, badOptionsFailWithClearMessages) {
+TEST_F(KernelCommandTest, badOptionsFailWithClearMessages) {
+    // A texture path in the scratch directory: none of these may write it.
+    const std::string texture = path("t.pfm");
     const struct {
-        const char* arguments;
+        std::string arguments;
         const char* message;
     } cases[] = {
         {"kernel --optimize --start 0.9,0.8,-2,0.1",
@@ -339,11 +341,11 @@ TEST(KernelCommand, badOptionsFailWithClearMessages) {
          "spacing (1, 1, 1): more than half the cell diagonal (or some points are out of every "
          "kernel's reach) and at most 4 times the cube root of the cell volume (the run time "
          "grows as t³ over the volume)\n"},
-        {"kernel --json --texture t.pfm --extent 1e4",
+        {"kernel --json --texture " + texture + " --extent 1e4",
          "texsplat: error: --extent: footprint texture: extent 10000 must be in (0, 8] voxels\n"},
-        {"kernel --json --texture t.pfm --extent 0",
+        {"kernel --json --texture " + texture + " --extent 0",
          "texsplat: error: --extent: footprint texture: extent 0 must be in (0, 8] voxels\n"},
-        {"kernel --json --kernel optimized --spacing 10,10,10 --texture t.pfm",
+        {"kernel --json --kernel optimized --spacing 10,10,10 --texture " + texture,
          "texsplat: error: footprint texture: kernel support 15.5623 must be at most 8 voxels "
          "to measure the layer ripple\n"},
         {"kernel --texture /nonexistent-directory/t.pfm",
@@ -359,7 +361,7 @@ TEST(KernelCommand, badOptionsFailWithClearMessages) {
         EXPECT_EQ(output.standardError, badCase.message) << badCase.arguments;
         // Every error comes before any result is printed.
         EXPECT_EQ(output.standardOutput, "") << badCase.arguments;
-        EXPECT_FALSE(std::ifstream("t.pfm").good()) << badCase.arguments;
+        EXPECT_FALSE(std::filesystem::exists(texture)) << badCase.arguments;
     }
     const auto unknownKernel = runTexsplat("kernel --kernel foo");
     EXPECT_NE(unknownKernel.exitCode, 0);

@@ -105,10 +105,8 @@ TransferFunction::Ptr medium(const glm::vec2& range, const glm::vec2& opacities,
 test::RenderedFrame renderSlab(const TransferFunction::Ptr& transfer, const std::string& path,
                                const ScalarSplat::Ptr& splat) {
     OrthographicCamera::Ptr camera = OrthographicCamera::create();
-    VolumeData::Ptr volume = VolumeData::create();
-    volume->source.setValue(VolumeSource::FileRaw);
-    volume->fileName.setValue(path);
-    const sg::Separator::Ptr root = test::framedScene(camera, {transfer, volume, splat});
+    const sg::Separator::Ptr root = test::framedScene(
+        camera, {transfer, test::fileVolume(VolumeSource::FileRaw, path), splat});
     return test::renderFrame(*root, kImageSize, kImageSize);
 }
 

@@ -3,6 +3,7 @@
 #include "GlTestSupport.h"
 #include "nodes/Camera.h"
 #include "nodes/NodeTypes.h"
+#include "nodes/VolumeData.h"
 #include "nodes/image/Image.h"
 #include "nodes/volume/Grid.h"
 #include "nodes/volume/RawVolume.h"
@@ -92,11 +93,23 @@ inline render::SplatView topView(float x0, float size, const glm::vec3& spacing 
     return render::SplatView::fromMatrices(glm::mat4(1.0f), view, projection, spacing);
 }
 
-/// @brief Writes `grid` as a raw file in the test's temporary folder and answers its path.
-inline std::string writeTestVolume(const std::string& name, const volume::ScalarGrid& grid) {
+/// @brief Writes `grid` (a ScalarGrid or VectorGrid) as a raw file in the test's temporary folder
+/// and answers its path.
+template <class Grid> std::string writeTestVolume(const std::string& name, const Grid& grid) {
     const std::string path = ::testing::TempDir() + "texsplat_render_" + name + ".raw";
     volume::writeRawVolume(path, grid);
     return path;
+}
+
+/// @brief A VolumeData node that reads `path` (raw or OpenVDB, as `source` says; `gridName` picks
+/// an OpenVDB grid).
+inline nodes::VolumeData::Ptr fileVolume(nodes::VolumeSource source, const std::string& path,
+                                         const std::string& gridName = std::string()) {
+    nodes::VolumeData::Ptr volume = nodes::VolumeData::create();
+    volume->source.setValue(source);
+    volume->fileName.setValue(path);
+    volume->gridName.setValue(gridName);
+    return volume;
 }
 
 /// @brief One rendered frame: the image (color and depth) and what the action counted.

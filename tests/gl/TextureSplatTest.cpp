@@ -52,20 +52,13 @@ std::string shellVolume(int size, int shell) {
         "shell" + std::to_string(size) + "_" + std::to_string(shell), grid);
 }
 
-VolumeData::Ptr rawVolume(const std::string& path) {
-    VolumeData::Ptr volume = VolumeData::create();
-    volume->source.setValue(VolumeSource::FileRaw);
-    volume->fileName.setValue(path);
-    return volume;
-}
-
 // camera, transfer function, volume, then `extra` nodes.
 sg::Separator::Ptr volumeScene(const Camera::Ptr& camera, const std::string& path,
                                const std::vector<sg::Node::Ptr>& extra) {
     sg::Separator::Ptr root = sg::Separator::create();
     root->addChild(camera);
     root->addChild(threeClasses());
-    root->addChild(rawVolume(path));
+    root->addChild(test::fileVolume(VolumeSource::FileRaw, path));
     for (const sg::Node::Ptr& node : extra) {
         root->addChild(node);
     }
@@ -245,7 +238,8 @@ TEST(TextureSplat, figure2LayerThroughTheNodesIsAsFlatAsThePaperReports) {
     sg::Separator::Ptr root = sg::Separator::create();
     root->addChild(camera);
     root->addChild(glow);
-    root->addChild(rawVolume(test::writeTestVolume("figure2_layer", layer)));
+    root->addChild(
+        test::fileVolume(VolumeSource::FileRaw, test::writeTestVolume("figure2_layer", layer)));
     root->addChild(TextureSplat::create());
     const test::RenderedFrame frame =
         test::renderFrame(*root, test::kLayerImageSize, test::kLayerImageSize);
@@ -279,7 +273,7 @@ TEST(TextureSplat, reportsMissingStateAndBadFields) {
     splat->setName("s");
     sg::Separator::Ptr noCamera = sg::Separator::create();
     noCamera->addChild(threeClasses());
-    noCamera->addChild(rawVolume(shellVolume(4, 0)));
+    noCamera->addChild(test::fileVolume(VolumeSource::FileRaw, shellVolume(4, 0)));
     noCamera->addChild(splat);
     EXPECT_EQ(message(*noCamera), "TextureSplat 's': no camera before this node");
     sg::Separator::Ptr noVolume = sg::Separator::create();
@@ -288,7 +282,7 @@ TEST(TextureSplat, reportsMissingStateAndBadFields) {
     EXPECT_EQ(message(*noVolume), "TextureSplat 's': no VolumeData before this node");
     sg::Separator::Ptr noTransfer = sg::Separator::create();
     noTransfer->addChild(OrthographicCamera::create());
-    noTransfer->addChild(rawVolume(shellVolume(4, 0)));
+    noTransfer->addChild(test::fileVolume(VolumeSource::FileRaw, shellVolume(4, 0)));
     noTransfer->addChild(splat);
     EXPECT_EQ(message(*noTransfer), "TextureSplat 's': no TransferFunction before this node");
     splat->size.setValue(-1.0f);

@@ -44,15 +44,6 @@ VolumeData::Ptr generated(VolumeSource source, const glm::vec3& resolution) {
     return volume;
 }
 
-VolumeData::Ptr fromFile(VolumeSource source, const std::string& path,
-                         const std::string& gridName = std::string()) {
-    VolumeData::Ptr volume = VolumeData::create();
-    volume->source.setValue(source);
-    volume->fileName.setValue(path);
-    volume->gridName.setValue(gridName);
-    return volume;
-}
-
 // Transparent at the grid's smallest value, rising linearly to kOpticalDepth over the box's
 // thinnest side at its largest; viridis colours. Works for any source whatever its units.
 TransferFunction::Ptr rampOver(const VolumeData& volume) {
@@ -116,11 +107,12 @@ TEST(VolumeSourcesRender, rawScalarAndVectorFilesRender) {
             }
         }
     }
-    expectRenders(fromFile(VolumeSource::FileRaw, test::writeTestVolume("sources_ball", scalars)),
-                  "raw_scalar");
-    const std::string vectorPath = ::testing::TempDir() + "texsplat_render_sources_swirl.raw";
-    volume::writeRawVolume(vectorPath, vectors);
-    expectRenders(fromFile(VolumeSource::FileRaw, vectorPath), "raw_vector_magnitude");
+    expectRenders(
+        test::fileVolume(VolumeSource::FileRaw, test::writeTestVolume("sources_ball", scalars)),
+        "raw_scalar");
+    expectRenders(
+        test::fileVolume(VolumeSource::FileRaw, test::writeTestVolume("sources_swirl", vectors)),
+        "raw_vector_magnitude");
 }
 
 #ifdef TEXSPLAT_WITH_OPENVDB
@@ -165,11 +157,12 @@ TEST(VolumeSourcesRender, openVdbFloatAndVec3fGridsRender) {
             warnings.emplace_back(message);
         }
     });
-    expectRenders(fromFile(VolumeSource::FileVdb, path, "density"), "vdb_float");
+    expectRenders(test::fileVolume(VolumeSource::FileVdb, path, "density"), "vdb_float");
     setLogSink(previous);
     ASSERT_EQ(warnings.size(), 1u);
     EXPECT_EQ(warnings[0], path + ": grid 'density': 1 voxel is NaN or infinite; treated as empty");
-    expectRenders(fromFile(VolumeSource::FileVdb, path, "velocity"), "vdb_vec3f_magnitude");
+    expectRenders(test::fileVolume(VolumeSource::FileVdb, path, "velocity"),
+                  "vdb_vec3f_magnitude");
 }
 #endif
 

@@ -43,15 +43,6 @@ std::string chainFile(std::size_t count) {
     return text;
 }
 
-std::string readError(const std::string& text) {
-    try {
-        SceneReader::readString(text, "chain.iv");
-    } catch (const ParseError& error) {
-        return error.what();
-    }
-    return "no error";
-}
-
 class ConnectionChainTest : public ::testing::Test {
 protected:
     void SetUp() override { registerSceneTestTypes(); }
@@ -118,10 +109,10 @@ TEST_F(ConnectionChainTest, aFileWithALongerChainFailsAtTheFirstLinkPastTheLimit
     const std::string message =
         "chain.iv:1003:41: cannot connect SFFloat TestCube(c1001).size from SFFloat "
         "TestCube(c1000).size: connection chain longer than the limit of 1000 links";
-    EXPECT_EQ(readError(chainFile(kLimit + 2)), message);
+    EXPECT_EQ(readError(chainFile(kLimit + 2), "chain.iv"), message);
     // A chain sixteen times longer stops at the same place: the reader never walks a chain of
     // more than 1000 links, so the work is bounded by 1000 per connection read.
-    EXPECT_EQ(readError(chainFile(16 * kLimit)), message);
+    EXPECT_EQ(readError(chainFile(16 * kLimit), "chain.iv"), message);
 }
 
 } // namespace

@@ -32,14 +32,7 @@ protected:
     }
 
     // The message of the ParseError that reading `text` (header included) throws.
-    static std::string errorOf(const std::string& text) {
-        try {
-            SceneReader::readString(text, "scene.iv");
-        } catch (const ParseError& error) {
-            return error.what();
-        }
-        return "no error";
-    }
+    static std::string errorOf(const std::string& text) { return readError(text, "scene.iv"); }
 };
 
 template <class T> std::shared_ptr<T> as(const Node::Ptr& node) {

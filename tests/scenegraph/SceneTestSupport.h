@@ -5,6 +5,7 @@
 
 #include "scenegraph/Declare.h"
 #include "scenegraph/EnumNames.h"
+#include "scenegraph/Error.h"
 #include "scenegraph/Group.h"
 #include "scenegraph/NodeRegistry.h"
 #include "scenegraph/engines/EngineTypes.h"
@@ -12,6 +13,7 @@
 #include "scenegraph/fields/MFNode.h"
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/fields/SFNode.h"
+#include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestNodes.h"
 
 #include <map>
@@ -172,6 +174,17 @@ private:
 /// "" when the graphs under `a` and `b` are the same (see GraphComparison).
 inline std::string graphDifference(const FieldContainer& a, const FieldContainer& b) {
     return GraphComparison().compare(a, b);
+}
+
+/// The message of the ParseError that reading `text` (header included) as `fileName` throws, or
+/// "no error".
+inline std::string readError(const std::string& text, const std::string& fileName) {
+    try {
+        SceneReader::readString(text, fileName);
+    } catch (const ParseError& error) {
+        return error.what();
+    }
+    return "no error";
 }
 
 } // namespace texsplat::sg::test
