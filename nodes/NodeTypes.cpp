@@ -1,6 +1,7 @@
 #include "nodes/NodeTypes.h"
 
 #include "nodes/Camera.h"
+#include "nodes/CombinedSplat.h"
 #include "nodes/Coordinate3.h"
 #include "nodes/DirectionalLight.h"
 #include "nodes/Fibers.h"
@@ -14,6 +15,8 @@
 #include "nodes/TextureSplat.h"
 #include "nodes/TransferFunction.h"
 #include "nodes/Transform.h"
+#include "nodes/VectorMarkSplat.h"
+#include "nodes/VectorSplat.h"
 #include "nodes/VolumeData.h"
 #include "nodes/render/RayCastMethods.h"
 #include "nodes/render/RenderMethods.h"
@@ -40,6 +43,9 @@ void registerNodeTypes() {
     registry.add<ScalarSplat>();
     registry.add<TextureSplat>();
     registry.add<GaussianSplat>();
+    registry.add<VectorMarkSplat>();
+    registry.add<VectorSplat>();
+    registry.add<CombinedSplat>();
     // What RenderAction does with these types; a scene that can be read can also be drawn.
     render::registerRenderMethods();
     render::registerRayCastMethods();

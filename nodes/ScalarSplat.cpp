@@ -16,6 +16,7 @@
 #include "octree/SplatEmission.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/Log.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/ModelMatrixElement.h"
 #include "scenegraph/actions/RayCastAction.h"
@@ -87,12 +88,21 @@ void ScalarSplat::render(sg::RenderAction& action) {
     const VolumeData& volume = inputs.first;
     const TransferFunction& transfer = inputs.second;
     const render::CameraView camera = render::CameraView::current(action, *this);
-    const volume::ScalarGridPtr grid =
-        timed(action, sg::RenderPhase::Load, [&volume] { return volume.scalarGrid(); });
-    const std::shared_ptr<const octree::ClassifiedGrid> classified = timed(
-        action, sg::RenderPhase::Classify, [&] { return mCache->classified(grid, transfer); });
-
+    // Loading counts as such, not as classification.
+    timed(action, sg::RenderPhase::Load, [&volume] { volume.bounds(); });
     const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
+    const std::shared_ptr<const octree::ClassifiedGrid> classified =
+        timed(action, sg::RenderPhase::Classify, [&] {
+            return detail::withNodeContext(*this, [&] {
+                return classify(*mCache, action.state(), volume, transfer, model);
+            });
+        });
+    std::optional<octree::VectorEmission> vectors = vectorEmission();
+    if (vectors) {
+        vectors->localToCamera = camera.view * model;
+        vectors->isPerspective = camera.projection[3][3] == 0.0f;
+    }
+    const octree::VectorEmission* emission = vectors ? &*vectors : nullptr;
     const render::SplatView view = render::SplatView::fromMatrices(
         model, camera.view, camera.projection, glm::vec3(classified->spacing()));
     auto splats = std::make_shared<octree::SplatList>();
@@ -104,7 +114,7 @@ void ScalarSplat::render(sg::RenderAction& action) {
     timed(action, sg::RenderPhase::Order, [&] {
         const octree::View order = view.octreeView();
         if (fullResolution) {
-            octree::emitVoxelSplats(*classified, order, *splats);
+            octree::emitVoxelSplats(*classified, order, *splats, emission);
             return;
         }
         octree::Cut cut = errorThreshold.value() > 0.0f
@@ -117,7 +127,7 @@ void ScalarSplat::render(sg::RenderAction& action) {
             refiner.refine(budget);
             cut = refiner.cut();
         }
-        octree::emitSplats(cut, order, *splats);
+        octree::emitSplats(cut, order, *splats, emission);
     });
 
     TEXSPLAT_ASSERT(gl::Context::current(), "ScalarSplat::render(): no current GL context");
@@ -130,14 +140,20 @@ void ScalarSplat::render(sg::RenderAction& action) {
     action.statistics().splats += splats->size();
     // Upload at draw time: a node used twice in the graph (DEF/USE) draws two lists with one
     // batch, one after the other.
-    action.addSplats([&action, batch = mBatch, splats, view] {
+    action.addSplats([&action, batch = mBatch, splats, view, marks = markDrawing()] {
         timed(action, sg::RenderPhase::Upload, [&] { batch->upload(*splats); });
-        batch->draw(view);
+        batch->draw(view, marks);
     });
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {
     const auto inputs = renderInputs(action.state());
+    if (!isMedium()) {
+        log(LogLevel::Warning, detail::nodeContext(*this) +
+                                   ": draws marks, not a medium; the ray-cast reference leaves "
+                                   "it out");
+        return;
+    }
     const VolumeData& volume = inputs.first;
     const TransferFunction& transfer = inputs.second;
     const render::CameraView camera =
@@ -152,6 +168,17 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
     action.addMedium(std::move(medium));
 }
 
+std::shared_ptr<const octree::ClassifiedGrid>
+ScalarSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*state*/,
+                      const VolumeData& volume, const TransferFunction& transfer,
+                      const glm::mat4& /*model*/) const {
+    return cache.classified(volume.scalarGrid(), transfer);
+}
+
+bool ScalarSplat::isDrawingField(const sg::Field* field) const {
+    return field == &errorThreshold || field == &maxSplats;
+}
+
 void ScalarSplat::getBoundingBox(sg::BoundingBoxAction& action) {
     if (const VolumeData* volume = action.state().get<VolumeElement>().volume) {
         action.extendBy(volume->bounds());
@@ -159,9 +186,11 @@ void ScalarSplat::getBoundingBox(sg::BoundingBoxAction& action) {
 }
 
 void ScalarSplat::notify(const sg::Field* source) {
-    // The cut fields only change which splats are drawn, not how.
-    if (source != &errorThreshold && source != &maxSplats) {
+    if (!isDrawingField(source)) {
         mBatch.reset();
+    }
+    if (isClassificationField(source)) {
+        mCache->invalidate();
     }
     sg::Node::notify(source);
 }

@@ -1,12 +1,17 @@
 #pragma once
 
 #include "nodes/Fwd.h"
+#include "nodes/render/MarkDrawing.h"
+#include "octree/SplatEmission.h"
 #include "scenegraph/Declare.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/fields/Fields.h"
 
+#include <glm/mat4x4.hpp>
+
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <utility>
 
 namespace texsplat::sg {
@@ -23,7 +28,8 @@ class ClassificationCache;
 
 namespace texsplat::nodes {
 
-/// @brief Base of the scalar splat nodes (TextureSplat, GaussianSplat): renders the current
+/// @brief Base of the splat nodes (TextureSplat, GaussianSplat, and through VectorMarkSplat the
+/// vector and combined splats): renders the current
 /// VolumeData, classified by the current TransferFunction, as one splat per non-empty voxel or
 /// per node of an octree cut, back to front for the camera, in RenderAction's splat pass.
 ///
@@ -73,7 +79,8 @@ public:
     /// (a splat node under its own Transform draws the volume there); nothing without a volume.
     void getBoundingBox(sg::BoundingBoxAction& action) override;
 
-    /// @brief Drops the GL batch when a field changes, then notifies as every node does.
+    /// @brief Drops the GL batch when a field that shapes it changes and the classification
+    /// when one that classification reads changes, then notifies as every node does.
     void notify(const sg::Field* source) override;
 
 protected:
@@ -83,9 +90,38 @@ protected:
     /// context current, again after a field changed).
     virtual std::shared_ptr<render::SplatBatch> makeBatch() const = 0;
 
-private:
-    void checkFields() const;
+    /// @brief The grid this node splats, classified through `cache` (which keeps it while its
+    /// inputs stay the same): by default the VolumeData's scalar grid through the transfer
+    /// function. `model` is the volume's model matrix.
+    virtual std::shared_ptr<const octree::ClassifiedGrid>
+    classify(render::detail::ClassificationCache& cache, sg::State& state,
+             const VolumeData& volume, const TransferFunction& transfer,
+             const glm::mat4& model) const;
 
+    /// @brief For splats that carry vectors: the table size and seed their emission needs
+    /// (the matrices are filled in by render()); nothing (the default) for scalar splats.
+    virtual std::optional<octree::VectorEmission> vectorEmission() const { return std::nullopt; }
+
+    /// @brief Whether the splats stand for an emission-absorption medium that RayCastAction can
+    /// integrate (scalar and combined splats); vector splats are marks, not a medium.
+    virtual bool isMedium() const { return true; }
+
+    /// @brief What the batch draws with this frame; only vector and combined batches read it.
+    virtual render::MarkDrawing markDrawing() const { return {}; }
+
+    /// @brief Whether a change of `field` leaves the GL batch as it is (it changes which splats
+    /// are drawn, or a per-frame drawing parameter). Here: the cut fields.
+    virtual bool isDrawingField(const sg::Field* field) const;
+
+    /// @brief Whether a change of `field` changes the classification (none here: the volume and
+    /// transfer function are watched by the cache).
+    virtual bool isClassificationField(const sg::Field* /*field*/) const { return false; }
+
+    /// @brief Checks this node's own fields; throws DataError (without the node's name, which
+    /// the caller adds) for the first one out of range. Overrides call the base first.
+    virtual void checkFields() const;
+
+private:
     /// @brief Checks the fields, then finds the VolumeData and TransferFunction of `state`;
     /// throws DataError naming this node when a field is out of range or one of them is missing.
     std::pair<const VolumeData&, const TransferFunction&> renderInputs(sg::State& state) const;

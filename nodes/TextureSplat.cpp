@@ -12,17 +12,20 @@ TextureSplat::TextureSplat() {
     addField(textureResolution, "textureResolution", 64);
 }
 
-std::shared_ptr<render::SplatBatch> TextureSplat::makeBatch() const {
+texsplat::kernel::FootprintTexture TextureSplat::footprint(SplatKernel splatKernel, int resolution,
+                                                           double extent) {
     const texsplat::kernel::CubicKernel paper = texsplat::kernel::CubicKernel::paper();
-    const double extent = size.value();
-    if (kernel.as<SplatKernel>() == SplatKernel::Gaussian) {
+    if (splatKernel == SplatKernel::Gaussian) {
         const texsplat::kernel::GaussianKernel gaussian =
             texsplat::kernel::KernelOptimizer().fitGaussian(paper.support()).kernel;
-        return std::make_shared<render::SplatBatch>(render::SplatBatch::textured(
-            texsplat::kernel::FootprintTexture(gaussian, textureResolution.value(), extent)));
+        return texsplat::kernel::FootprintTexture(gaussian, resolution, extent);
     }
+    return texsplat::kernel::FootprintTexture(paper, resolution, extent);
+}
+
+std::shared_ptr<render::SplatBatch> TextureSplat::makeBatch() const {
     return std::make_shared<render::SplatBatch>(render::SplatBatch::textured(
-        texsplat::kernel::FootprintTexture(paper, textureResolution.value(), extent)));
+        footprint(kernel.as<SplatKernel>(), textureResolution.value(), size.value())));
 }
 
 } // namespace texsplat::nodes

@@ -4,6 +4,10 @@
 #include "scenegraph/EnumNames.h"
 #include "scenegraph/fields/SFEnum.h"
 
+namespace texsplat::kernel {
+class FootprintTexture;
+} // namespace texsplat::kernel
+
 namespace texsplat::nodes {
 
 /// @brief The reconstruction kernel whose footprint a TextureSplat carries.
@@ -43,6 +47,12 @@ public:
 
     sg::SFEnum kernel;              ///< SplatKernel
     sg::SFInt32 textureResolution;  ///< footprint texels per side
+
+    /// @brief The footprint texture of `splatKernel` at `resolution`² texels over [−extent, extent]²
+    /// (what TextureSplat and CombinedSplat carry).
+    /// @throws DataError as kernel::FootprintTexture.
+    static texsplat::kernel::FootprintTexture footprint(SplatKernel splatKernel, int resolution,
+                                                       double extent);
 
 protected:
     TextureSplat();

@@ -115,13 +115,18 @@ void TransferFunction::validate() const { table(); }
 
 namespace {
 
+// `value` normalized over the range and clamped to [0, 1]; NaN stays NaN.
+float normalized(const detail::TransferTable& table, float value) {
+    // In double: the difference of two large floats may overflow float.
+    const double t = (double(value) - table.rangeMin) / (double(table.rangeMax) - table.rangeMin);
+    return std::isnan(t) ? t : static_cast<float>(std::clamp(t, 0.0, 1.0));
+}
+
 Classification classifyWith(const detail::TransferTable& table, float value) {
     if (std::isnan(value)) {
         return {};
     }
-    // In double: the difference of two large floats may overflow float.
-    const double t = (double(value) - table.rangeMin) / (double(table.rangeMax) - table.rangeMin);
-    const float clamped = static_cast<float>(std::clamp(t, 0.0, 1.0));
+    const float clamped = normalized(table, value);
     const float tau = table.opacities(clamped);
     return {table.colors(clamped) * (tau + table.emission), tau};
 }
@@ -130,6 +135,14 @@ Classification classifyWith(const detail::TransferTable& table, float value) {
 
 Classification TransferFunction::classify(float value) const {
     return classifyWith(*table(), value);
+}
+
+glm::vec3 TransferFunction::color(float value) const {
+    if (std::isnan(value)) {
+        return glm::vec3(0.0f);
+    }
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    return checked->colors(normalized(*checked, value));
 }
 
 std::shared_ptr<octree::ClassifiedGrid>

@@ -100,6 +100,12 @@ public:
     /// @throws DataError when the fields are invalid (see validate()).
     Classification classify(float value) const;
 
+    /// @brief The colour map S(t) alone at `value` (normalized over `range` as classify() does;
+    /// NaN gives black): the polygon colour of vector splats, which take their opacity from the
+    /// extinction and the mark table rather than from an emission-absorption slab.
+    /// @throws DataError when the fields are invalid.
+    glm::vec3 color(float value) const;
+
     /// @brief Classifies every non-empty voxel of `grid` (same dimensions, spacing and origin);
     /// empty voxels, and voxels that classify to zero, stay empty, so they produce no splats.
     /// @throws DataError when the fields are invalid.

@@ -68,4 +68,23 @@ void ClassifiedGrid::setVoxel(glm::u64vec3 ijk, glm::vec3 color, float extinctio
     mVoxels[static_cast<std::size_t>(index(ijk))] = value;
 }
 
+void ClassifiedGrid::enableVectors() {
+    if (mVectors.empty()) {
+        mVectors.assign(mVoxels.size(), glm::vec3(0.0f));
+    }
+}
+
+void ClassifiedGrid::setVector(glm::u64vec3 ijk, glm::vec3 vector) {
+    TEXSPLAT_ASSERT(hasVectors(), "ClassifiedGrid::setVector(): enableVectors() first");
+    TEXSPLAT_ASSERT(ijk.x < mDims.x && ijk.y < mDims.y && ijk.z < mDims.z,
+                    "ClassifiedGrid::setVector(): voxel outside the grid");
+    if (!isFinite(glm::dvec3(vector))) {
+        std::ostringstream text;
+        text << "ClassifiedGrid: voxel (" << ijk.x << ", " << ijk.y << ", " << ijk.z
+             << "): vector must be finite, got " << vectorText(glm::dvec3(vector));
+        throw DataError(text.str());
+    }
+    mVectors[static_cast<std::size_t>(index(ijk))] = vector;
+}
+
 } // namespace texsplat::octree

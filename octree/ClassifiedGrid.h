@@ -31,6 +31,24 @@ public:
     /// @throws DataError when a colour channel or the extinction is negative or not finite.
     void setVoxel(glm::u64vec3 ijk, glm::vec3 color, float extinction);
 
+    /// @brief Gives every voxel a vector, all zero until setVector(): the flow that vector splats
+    /// draw as marks (Crawfis & Max 1993, "Combined Vector and Scalar Textures"). Scalar grids have
+    /// none and pay nothing for it (12 more bytes per voxel when enabled).
+    void enableVectors();
+
+    /// @brief Whether enableVectors() was called.
+    [[nodiscard]] bool hasVectors() const { return !mVectors.empty(); }
+
+    /// @brief Sets the vector of voxel @p ijk, in the grid's (local) space; needs hasVectors().
+    /// @throws DataError when a component is not finite.
+    void setVector(glm::u64vec3 ijk, glm::vec3 vector);
+
+    /// @brief The vector of the voxel with linear index @p index (hasVectors() must hold).
+    [[nodiscard]] glm::vec3 vector(std::uint64_t index) const {
+        TEXSPLAT_ASSERT(index < mVectors.size(), "ClassifiedGrid::vector(): no vector there");
+        return mVectors[static_cast<std::size_t>(index)];
+    }
+
     /// @brief Colour (xyz) and extinction (w) of the voxel with linear index @p index.
     [[nodiscard]] glm::vec4 voxel(std::uint64_t index) const {
         TEXSPLAT_ASSERT(index < mVoxels.size(), "ClassifiedGrid::voxel(): index outside the grid");
@@ -70,6 +88,7 @@ private:
     glm::dvec3 mSpacing;
     glm::dvec3 mOrigin;
     std::vector<glm::vec4> mVoxels;
+    std::vector<glm::vec3> mVectors;
 };
 
 } // namespace texsplat::octree

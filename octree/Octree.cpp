@@ -4,6 +4,7 @@
 #include "scenegraph/Error.h"
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <utility>
@@ -19,6 +20,12 @@ struct Octree::Statistics {
     glm::vec4 maximum{0.0f};
     std::uint64_t count = 0;
     OctreeNode record;
+    // Vector grids only: the sum of the non-empty voxels' vectors and of their unit directions,
+    // and how many of them have a direction (a zero vector has none).
+    glm::dvec3 vectorSum{0.0};
+    glm::dvec3 directionSum{0.0};
+    std::uint64_t directionCount = 0;
+    glm::vec3 meanVector{0.0f};
 
     void merge(const Statistics& other) {
         minimum = count == 0 ? other.minimum : glm::min(minimum, other.minimum);
@@ -26,6 +33,9 @@ struct Octree::Statistics {
         sum += other.sum;
         count += other.count;
         record.nonEmptyCount += other.record.nonEmptyCount;
+        vectorSum += other.vectorSum;
+        directionSum += other.directionSum;
+        directionCount += other.directionCount;
     }
 
     void finish() {
@@ -36,6 +46,15 @@ struct Octree::Statistics {
         for (int channel = 0; channel < 4; ++channel) {
             error = std::max({error, static_cast<double>(maximum[channel]) - mean[channel],
                               mean[channel] - static_cast<double>(minimum[channel])});
+        }
+        if (directionCount > 0) {
+            meanVector = glm::vec3(vectorSum / static_cast<double>(record.nonEmptyCount));
+            // 1 - |mean of the unit directions| is 0 when all voxels point the same way and 1
+            // when they cancel; scaled by the largest extinction it is in the units of the other
+            // channels, so one threshold weighs a turning flow like a changing opacity.
+            const double spread =
+                1.0 - glm::length(directionSum) / static_cast<double>(directionCount);
+            error = std::max(error, static_cast<double>(maximum.w) * std::max(spread, 0.0));
         }
         record.error = static_cast<float>(error);
     }
@@ -62,8 +81,12 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
     mIsEmpty = root.record.nonEmptyCount == 0;
     if (mRootLevel > 0 && !mIsEmpty) {
         mNodes.push_back(root.record);
+        if (mGrid->hasVectors()) {
+            mMeanVectors.push_back(root.meanVector);
+        }
     }
     mNodes.shrink_to_fit();
+    mMeanVectors.shrink_to_fit();
 }
 
 Octree::Statistics Octree::voxelStatistics(std::uint64_t index) const {
@@ -76,6 +99,16 @@ Octree::Statistics Octree::voxelStatistics(std::uint64_t index) const {
     statistics.record.meanColor = glm::vec3(value);
     statistics.record.meanExtinction = value.w;
     statistics.record.nonEmptyCount = mGrid->isEmptyVoxel(index) ? 0 : 1;
+    if (mGrid->hasVectors() && statistics.record.nonEmptyCount > 0) {
+        const glm::vec3 vector = mGrid->vector(index);
+        statistics.meanVector = vector;
+        statistics.vectorSum = glm::dvec3(vector);
+        const double length = glm::length(glm::dvec3(vector));
+        if (length > 0.0) {
+            statistics.directionSum = glm::dvec3(vector) / length;
+            statistics.directionCount = 1;
+        }
+    }
     return statistics;
 }
 
@@ -88,6 +121,7 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
     const glm::u64vec3 dims = mGrid->dims();
     Statistics statistics;
     std::array<OctreeNode, 8> childRecords;
+    std::array<glm::vec3, 8> childVectors;
     int childCount = 0;
     for (int octant = 0; octant < 8; ++octant) {
         const glm::u64vec3 child = childCoord(coord, octant);
@@ -99,12 +133,17 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
         statistics.merge(childStatistics);
         if (childStatistics.record.nonEmptyCount > 0) {
             statistics.record.childMask |= static_cast<std::uint8_t>(1u << octant);
+            childVectors[static_cast<std::size_t>(childCount)] = childStatistics.meanVector;
             childRecords[static_cast<std::size_t>(childCount++)] = childStatistics.record;
         }
     }
     if (level >= 2) {
         statistics.record.firstChild = mNodes.size();
         mNodes.insert(mNodes.end(), childRecords.begin(), childRecords.begin() + childCount);
+        if (mGrid->hasVectors()) {
+            mMeanVectors.insert(mMeanVectors.end(), childVectors.begin(),
+                                childVectors.begin() + childCount);
+        }
     }
     statistics.finish();
     return statistics;
@@ -128,6 +167,12 @@ OctreeNode Octree::node(const NodeRef& node) const {
     voxel.meanExtinction = value.w;
     voxel.nonEmptyCount = mGrid->isEmptyVoxel(node.index) ? 0 : 1;
     return voxel;
+}
+
+glm::vec3 Octree::meanVector(const NodeRef& node) const {
+    TEXSPLAT_ASSERT(mGrid->hasVectors(), "Octree::meanVector(): the grid has no vectors");
+    return node.level == 0 ? mGrid->vector(node.index)
+                           : mMeanVectors[static_cast<std::size_t>(node.index)];
 }
 
 int Octree::children(const NodeRef& node, std::array<NodeRef, 8>& children) const {

@@ -4,19 +4,75 @@
 #include "octree/Cut.h"
 #include "octree/Octree.h"
 #include "octree/SliceOrder.h"
-#include "octree/Splat.h"
 #include "octree/View.h"
 #include "octree/detail/BackToFront.h"
+#include "scenegraph/Assert.h"
+
+#include <glm/geometric.hpp>
 
 #include <algorithm>
+#include <cmath>
 
 namespace texsplat::octree {
+namespace {
 
-void emitSplats(const Cut& cut, const View& view, SplatList& splats) {
+// splitmix64's finalizer: a well-mixed 64-bit hash, identical on every platform.
+std::uint64_t mix(std::uint64_t value) {
+    value += 0x9e3779b97f4a7c15ull;
+    value = (value ^ (value >> 30)) * 0xbf58476d1ce4e5b9ull;
+    value = (value ^ (value >> 27)) * 0x94d049bb133111ebull;
+    return value ^ (value >> 31);
+}
+
+// A coarse node's key: its level above the voxel bits, so it never equals a voxel's index.
+std::uint64_t nodeKey(const NodeRef& node) {
+    return node.index ^ (static_cast<std::uint64_t>(node.level) << 58);
+}
+
+} // namespace
+
+int tableColumn(float towardEye, int columns) {
+    TEXSPLAT_ASSERT(columns >= 1, "tableColumn(): no columns");
+    if (!(std::abs(towardEye) >= 0.0f)) {
+        return 0;
+    }
+    const float z = std::min(std::abs(towardEye), 1.0f);
+    return static_cast<int>(std::lround(z * static_cast<float>(columns - 1)));
+}
+
+SplatVector vectorSplat(const VectorEmission& emission, glm::vec3 position, glm::vec3 vector,
+                        std::uint64_t key) {
+    SplatVector result;
+    result.vector = vector;
+    result.row = static_cast<std::uint16_t>(
+        mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32)) %
+        static_cast<std::uint64_t>(emission.rows));
+    // In double: a huge vector's squared length overflows float.
+    const glm::dvec3 camera = glm::dvec3(glm::mat3(emission.localToCamera) * vector);
+    const double length = glm::length(camera);
+    if (!(length > 0.0) || !std::isfinite(length)) {
+        return result;
+    }
+    glm::dvec3 toEye(0.0, 0.0, 1.0);
+    if (emission.isPerspective) {
+        const glm::dvec3 centre(emission.localToCamera * glm::vec4(position, 1.0f));
+        const double distance = glm::length(centre);
+        if (distance > 0.0) {
+            toEye = -centre / distance;
+        }
+    }
+    result.column = static_cast<std::uint16_t>(tableColumn(
+        static_cast<float>(glm::dot(camera, toEye) / length), emission.columns));
+    return result;
+}
+
+void emitSplats(const Cut& cut, const View& view, SplatList& splats,
+                const VectorEmission* vectors) {
     const Octree& octree = cut.octree();
     splats.clear();
-    splats.reserve(static_cast<std::size_t>(cut.splatCount()), false);
+    splats.reserve(static_cast<std::size_t>(cut.splatCount()), vectors != nullptr);
     const ClassifiedGrid& grid = octree.grid();
+    TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitSplats(): vector splats need vectors");
     detail::forEachBackToFront(cut, view, [&](const NodeRef& node) {
         Splat splat;
         if (node.level == 0) {
@@ -33,12 +89,19 @@ void emitSplats(const Cut& cut, const View& view, SplatList& splats) {
             splat.color = summary.meanColor;
             splat.extinction = summary.meanExtinction;
         }
-        splats.add(splat);
+        if (vectors) {
+            splats.add(splat, vectorSplat(*vectors, splat.position, octree.meanVector(node),
+                                          nodeKey(node)));
+        } else {
+            splats.add(splat);
+        }
     });
 }
 
-void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats) {
+void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats,
+                     const VectorEmission* vectors) {
     splats.clear();
+    TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
     SliceOrder(grid, view).forEach([&](std::uint64_t index, glm::u64vec3 voxel) {
         if (grid.isEmptyVoxel(index)) {
             return;
@@ -52,7 +115,11 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
         splat.position = glm::vec3(position);
         splat.color = glm::vec3(value);
         splat.extinction = value.w;
-        splats.add(splat);
+        if (vectors) {
+            splats.add(splat, vectorSplat(*vectors, splat.position, grid.vector(index), index));
+        } else {
+            splats.add(splat);
+        }
     });
 }
 

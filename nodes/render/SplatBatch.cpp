@@ -2,7 +2,9 @@
 
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/RadialKernel.h"
+#include "nodes/kernel/VectorSplatTable.h"
 #include "nodes/render/detail/SplatShaders.h"
+#include "nodes/render/detail/VectorSplatShaders.h"
 #include "octree/Splat.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
@@ -19,9 +21,21 @@ namespace {
 // The shading function first (both stages call it), then the stage.
 std::string stageSource(const char* stage) { return std::string(detail::kSplatShading) + stage; }
 
-gl::Program makeProgram() {
+gl::Program makeProgram(SplatShape shape) {
+    if (shape == SplatShape::VectorSquare || shape == SplatShape::CombinedSquare) {
+        return gl::Program("vector splat", stageSource(detail::kVectorSplatVertexShader),
+                           stageSource(detail::kVectorSplatFragmentShader));
+    }
     return gl::Program("splat", stageSource(detail::kSplatVertexShader),
                        stageSource(detail::kSplatFragmentShader));
+}
+
+// Two triangles of the square [-1, 1]², indexed like the polygon so one draw call serves both.
+const std::vector<float> kSquareVertices{-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
+const std::vector<unsigned> kSquareIndices{0, 1, 2, 0, 2, 3};
+
+gl::TextureSampling bilinearClamped() {
+    return {gl::TextureFilter::Linear, gl::TextureWrap::ClampToEdge, false};
 }
 
 } // namespace
@@ -29,7 +43,7 @@ gl::Program makeProgram() {
 SplatBatch::SplatBatch(SplatShape shape, double extent,
                        const std::vector<float>& templateVertices,
                        const std::vector<unsigned>& templateIndices)
-    : mShape(shape), mExtent(static_cast<float>(extent)), mProgram(makeProgram()),
+    : mShape(shape), mExtent(static_cast<float>(extent)), mProgram(makeProgram(shape)),
       mTemplateIndexCount(static_cast<int>(templateIndices.size())) {
     mTemplateVertices.setData(templateVertices);
     mTemplateIndices.setData(templateIndices);
@@ -42,14 +56,41 @@ SplatBatch::SplatBatch(SplatShape shape, double extent,
 }
 
 SplatBatch SplatBatch::textured(const kernel::FootprintTexture& footprint) {
-    // Two triangles of the square [-1, 1]², indexed like the polygon so one draw call serves both.
-    SplatBatch batch(SplatShape::TexturedSquare, footprint.extent(),
-                     {-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, {0, 1, 2, 0, 2, 3});
+    SplatBatch batch(SplatShape::TexturedSquare, footprint.extent(), kSquareVertices,
+                     kSquareIndices);
     batch.mFootprint.emplace(footprint.resolution(), footprint.resolution(),
-                             gl::TextureFormat::R32F,
-                             gl::TextureSampling{gl::TextureFilter::Linear,
-                                                 gl::TextureWrap::ClampToEdge, false});
+                             gl::TextureFormat::R32F, bilinearClamped());
     batch.mFootprint->setData(footprint.texels());
+    batch.mFootprintExtent = static_cast<float>(footprint.extent());
+    return batch;
+}
+
+SplatBatch SplatBatch::markSquares(SplatShape shape, const kernel::VectorSplatTable& table) {
+    SplatBatch batch(shape, table.extent(), kSquareVertices, kSquareIndices);
+    batch.mRows = table.rows();
+    batch.mColumns = table.columns();
+    batch.mTable.emplace(table.resolution(), table.resolution(), table.rows() * table.columns(),
+                         gl::TextureFormat::RG32F, bilinearClamped());
+    batch.mTable->setData(table.texels());
+    batch.mVectors.emplace();
+    batch.mVectors->setData(std::vector<octree::SplatVector>(1), gl::BufferUsage::DynamicDraw);
+    batch.mVertexArray.setAttribute(3, *batch.mVectors, 3, sizeof(octree::SplatVector), 0, 1);
+    batch.mVertexArray.setIntegerAttribute(4, *batch.mVectors, 2, GL_UNSIGNED_SHORT,
+                                           sizeof(octree::SplatVector), 3 * sizeof(float), 1);
+    return batch;
+}
+
+SplatBatch SplatBatch::vectorMarks(const kernel::VectorSplatTable& table) {
+    return markSquares(SplatShape::VectorSquare, table);
+}
+
+SplatBatch SplatBatch::combinedMarks(const kernel::VectorSplatTable& table,
+                                     const kernel::FootprintTexture& footprint) {
+    SplatBatch batch = markSquares(SplatShape::CombinedSquare, table);
+    batch.mFootprint.emplace(footprint.resolution(), footprint.resolution(),
+                             gl::TextureFormat::R32F, bilinearClamped());
+    batch.mFootprint->setData(footprint.texels());
+    batch.mFootprintExtent = static_cast<float>(footprint.extent());
     return batch;
 }
 
@@ -95,18 +136,49 @@ SplatBatch SplatBatch::polygonal(const kernel::RadialKernel& kernel, double exte
 void SplatBatch::upload(const octree::SplatList& splats) {
     TEXSPLAT_ASSERT(splats.size() <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
                     "SplatBatch::upload(): more splats than one instanced draw can take");
+    TEXSPLAT_ASSERT(!hasMarks() || splats.hasVectors() || splats.isEmpty(),
+                    "SplatBatch::upload(): vector splats need the list's vectors");
     mCount = splats.size();
     if (mCount > 0) {
         mInstances.setData(splats.splats(), gl::BufferUsage::DynamicDraw);
+        if (hasMarks()) {
+            mVectors->setData(splats.vectors(), gl::BufferUsage::DynamicDraw);
+        }
     }
 }
 
-void SplatBatch::draw(const SplatView& view) {
+void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks) {
     if (mCount == 0) {
         return;
     }
-    const bool gouraud = mShape == SplatShape::GouraudPolygon;
     mProgram.use();
+    if (hasMarks()) {
+        mProgram.setUniform("localToClip", view.localToClip);
+        mProgram.setUniform("spacing", view.spacing);
+        mProgram.setUniform("perspective", view.isPerspective ? 1 : 0);
+        mProgram.setUniform("eye", view.eye);
+        mProgram.setUniform("direction", view.direction);
+        mProgram.setUniform("extent", mExtent);
+        mProgram.setUniform("footprintExtent", mFootprintExtent);
+        mProgram.setUniform("stretch", marks.stretch);
+        mProgram.setUniform("rowShift", ((marks.rowShift % mRows) + mRows) % mRows);
+        mProgram.setUniform("rows", mRows);
+        mProgram.setUniform("columns", mColumns);
+        mProgram.setUniform("combined", mShape == SplatShape::CombinedSquare ? 1 : 0);
+        mProgram.setUniform("blend", marks.textureOperator == MarkOperator::Blend ? 1 : 0);
+        mProgram.setUniform("blendColor", marks.blendColor);
+        mProgram.setUniform("contrast", marks.contrast);
+        mTable->bind(0);
+        mProgram.setUniform("marks", 0);
+        // Two sampler types must not share a unit, bound or not (the draw would fail).
+        mProgram.setUniform("footprint", 1);
+        if (mFootprint) {
+            mFootprint->bind(1);
+        }
+        mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(mCount));
+        return;
+    }
+    const bool gouraud = mShape == SplatShape::GouraudPolygon;
     mProgram.setUniform("localToClip", view.localToClip);
     mProgram.setUniform("spacing", view.spacing);
     mProgram.setUniform("perspective", view.isPerspective ? 1 : 0);

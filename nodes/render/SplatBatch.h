@@ -1,10 +1,12 @@
 #pragma once
 
+#include "nodes/render/MarkDrawing.h"
 #include "nodes/render/SplatView.h"
 #include "octree/Fwd.h"
 #include "scenegraph/gl/Buffer.h"
 #include "scenegraph/gl/Program.h"
 #include "scenegraph/gl/Texture2D.h"
+#include "scenegraph/gl/Texture2DArray.h"
 #include "scenegraph/gl/VertexArray.h"
 
 #include <cstddef>
@@ -13,6 +15,7 @@
 namespace texsplat::kernel {
 class FootprintTexture;
 class RadialKernel;
+class VectorSplatTable;
 } // namespace texsplat::kernel
 
 namespace texsplat::render {
@@ -25,6 +28,12 @@ enum class SplatShape {
     /// A polygonal fan with the footprint sampled at its vertices and Gouraud shaded: the
     /// baseline of the paper's figure 4a (Explorer's Gaussian splats, after Laur & Hanrahan).
     GouraudPolygon,
+    /// One square turned to the splat's projected vector, carrying a texture of the vector
+    /// splat table (Crawfis & Max 1993, "Combined Vector and Scalar Textures"): marks only.
+    VectorSquare,
+    /// The same square carrying the scalar footprint too: the scalar splat's reconstruction with
+    /// the marks in its colour, one pass.
+    CombinedSquare,
 };
 
 /// @brief A splat list on the GPU, drawn as instanced copies of one small template that turns
@@ -54,12 +63,27 @@ public:
     static SplatBatch polygonal(const kernel::RadialKernel& kernel, double extent,
                                 int radialSamples = 3, int azimuthSamples = 7);
 
-    /// @brief Replaces the instance data by `splats` (back to front, as drawn).
+    /// @brief Vector splats: squares of `table.extent()` voxels at size 1, turned to their
+    /// projected vector, carrying the table (an RG32F texture array, bilinear, one layer per row
+    /// and column) under the operator of the MarkDrawing passed to draw(). The splat list must
+    /// carry vectors.
+    /// @throws GlError as textured().
+    static SplatBatch vectorMarks(const kernel::VectorSplatTable& table);
+
+    /// @brief Combined splats: as vectorMarks(), and the scalar `footprint` as textured() has it
+    /// (sampled at the same voxel offsets, so the square being wider than the footprint changes
+    /// nothing of the scalar part).
+    /// @throws GlError as textured().
+    static SplatBatch combinedMarks(const kernel::VectorSplatTable& table,
+                                    const kernel::FootprintTexture& footprint);
+
+    /// @brief Replaces the instance data by `splats` (back to front, as drawn); vector and
+    /// combined batches need the list's vectors.
     void upload(const octree::SplatList& splats);
 
-    /// @brief Draws the uploaded splats in their order. Leaves blending and depth state to the
-    /// caller (RenderAction's splat pass).
-    void draw(const SplatView& view);
+    /// @brief Draws the uploaded splats in their order; `marks` matters to vector and combined
+    /// batches only. Leaves blending and depth state to the caller (RenderAction's splat pass).
+    void draw(const SplatView& view, const MarkDrawing& marks = {});
 
     /// @brief Number of uploaded splats.
     std::size_t size() const { return mCount; }
@@ -73,6 +97,10 @@ public:
 private:
     SplatBatch(SplatShape shape, double extent, const std::vector<float>& templateVertices,
                const std::vector<unsigned>& templateIndices);
+    static SplatBatch markSquares(SplatShape shape, const kernel::VectorSplatTable& table);
+    bool hasMarks() const {
+        return mShape == SplatShape::VectorSquare || mShape == SplatShape::CombinedSquare;
+    }
 
     SplatShape mShape;
     float mExtent;
@@ -82,6 +110,12 @@ private:
     gl::Buffer mInstances;
     gl::VertexArray mVertexArray;
     std::optional<gl::Texture2D> mFootprint;
+    float mFootprintExtent = 1.0f;
+    // Vector and combined squares only.
+    std::optional<gl::Texture2DArray> mTable;
+    std::optional<gl::Buffer> mVectors;
+    int mRows = 1;
+    int mColumns = 1;
     int mTemplateIndexCount;
     std::size_t mCount = 0;
 };

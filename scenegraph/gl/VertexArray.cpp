@@ -33,6 +33,19 @@ void VertexArray::setAttribute(GLuint location, const Buffer& buffer, int compon
     glVertexAttribDivisor(location, divisor);
 }
 
+void VertexArray::setIntegerAttribute(GLuint location, const Buffer& buffer, int components,
+                                      GLenum type, std::size_t stride, std::size_t offset,
+                                      GLuint divisor) {
+    TEXSPLAT_ASSERT(components >= 1 && components <= 4,
+                    "VertexArray::setIntegerAttribute(): components must be 1 to 4");
+    bind();
+    buffer.bind(GL_ARRAY_BUFFER);
+    glEnableVertexAttribArray(location);
+    glVertexAttribIPointer(location, components, type, static_cast<GLsizei>(stride),
+                           reinterpret_cast<const void*>(static_cast<std::uintptr_t>(offset)));
+    glVertexAttribDivisor(location, divisor);
+}
+
 void VertexArray::setIndexBuffer(const Buffer& buffer) {
     bind();
     buffer.bind(GL_ELEMENT_ARRAY_BUFFER);

@@ -29,6 +29,12 @@ public:
     void setAttribute(GLuint location, const Buffer& buffer, int components, std::size_t stride,
                       std::size_t offset, GLuint divisor = 0);
 
+    /// @brief Feeds integer attribute `location` (`uvec`/`ivec` in the shader, not converted to
+    /// float) from `buffer`: `components` values of `type` (GL_UNSIGNED_SHORT, GL_INT, ...) per
+    /// vertex; the other parameters as setAttribute().
+    void setIntegerAttribute(GLuint location, const Buffer& buffer, int components, GLenum type,
+                             std::size_t stride, std::size_t offset, GLuint divisor = 0);
+
     /// @brief Uses `buffer` (32-bit unsigned indices) for `drawElements()`.
     void setIndexBuffer(const Buffer& buffer);
 

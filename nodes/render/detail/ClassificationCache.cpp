@@ -6,23 +6,31 @@ namespace texsplat::render::detail {
 
 ClassificationCache::~ClassificationCache() { observe(nullptr); }
 
-bool ClassificationCache::isStale(const volume::ScalarGridPtr& grid,
-                                  const nodes::TransferFunction& transfer) const {
-    return !mClassified || grid != mGrid || &transfer != mTransfer || mTransferChanged;
-}
-
 std::shared_ptr<const octree::ClassifiedGrid>
 ClassificationCache::classified(const volume::ScalarGridPtr& grid,
                                 const nodes::TransferFunction& transfer) {
-    if (isStale(grid, transfer)) {
+    ClassificationInputs inputs;
+    inputs.grids.push_back(grid);
+    return classified(inputs, transfer, [&] { return transfer.classify(*grid); });
+}
+
+std::shared_ptr<const octree::ClassifiedGrid>
+ClassificationCache::classified(const ClassificationInputs& inputs,
+                                const nodes::TransferFunction& transfer, const Classify& classify) {
+    if (!mClassified || inputs != mInputs || &transfer != mTransfer || mTransferChanged) {
         mOctree.reset();
         mClassified.reset();
         observe(&transfer);
-        mClassified = transfer.classify(*grid);
-        mGrid = grid;
+        mClassified = classify();
+        mInputs = inputs;
         mTransferChanged = false;
     }
     return mClassified;
+}
+
+void ClassificationCache::invalidate() {
+    mOctree.reset();
+    mClassified.reset();
 }
 
 const octree::Octree& ClassificationCache::octree() {

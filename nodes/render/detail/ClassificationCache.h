@@ -5,7 +5,11 @@
 #include "octree/Octree.h"
 #include "scenegraph/Observer.h"
 
+#include <glm/mat4x4.hpp>
+
+#include <functional>
 #include <memory>
+#include <vector>
 
 namespace texsplat::nodes {
 class TransferFunction;
@@ -13,26 +17,46 @@ class TransferFunction;
 
 namespace texsplat::render::detail {
 
+/// What a classification reads besides the transfer function: the grids (compared by identity;
+/// VolumeData hands out a new grid when it reloads) and, for classifications that depend on
+/// where the volume is (colour by position), the model matrix.
+struct ClassificationInputs {
+    std::vector<std::shared_ptr<const void>> grids;
+    glm::mat4 model{1.0f};
+
+    bool operator==(const ClassificationInputs& other) const {
+        return grids == other.grids && model == other.model;
+    }
+    bool operator!=(const ClassificationInputs& other) const { return !(*this == other); }
+};
+
 /// A splat node's classified grid and octree, kept across frames ("cache classification and
-/// the octree on the node"): rebuilt when the volume hands out a different grid (VolumeData
-/// replaces its grid when one of its fields changes) or when the transfer function is replaced
-/// or changes (observed).
+/// the octree on the node"): rebuilt when the inputs differ from last time, when the transfer
+/// function is replaced or changes (observed), or after invalidate().
 class ClassificationCache final : public sg::Observer {
 public:
+    /// Makes the classified grid from the inputs.
+    using Classify = std::function<std::shared_ptr<const octree::ClassifiedGrid>()>;
+
     ClassificationCache() = default;
     ClassificationCache(const ClassificationCache&) = delete;
     ClassificationCache& operator=(const ClassificationCache&) = delete;
     ~ClassificationCache() override;
 
-    /// Whether classified() would classify again for these inputs.
-    bool isStale(const volume::ScalarGridPtr& grid, const nodes::TransferFunction& transfer) const;
-
-    /// The grid classified by `transfer`, from the cache when still valid.
+    /// The scalar `grid` classified by `transfer`, from the cache when still valid.
     std::shared_ptr<const octree::ClassifiedGrid> classified(const volume::ScalarGridPtr& grid,
                                                              const nodes::TransferFunction& transfer);
 
+    /// What `classify` makes of `inputs` and `transfer`, from the cache when still valid.
+    std::shared_ptr<const octree::ClassifiedGrid> classified(const ClassificationInputs& inputs,
+                                                             const nodes::TransferFunction& transfer,
+                                                             const Classify& classify);
+
     /// The octree over the last classified() grid, built on first use.
     const octree::Octree& octree();
+
+    /// Forgets the classification (the node's own fields that classification reads changed).
+    void invalidate();
 
     void changed(sg::Notifier& subject, const sg::Field* source) override;
     void subjectDestroyed(sg::Notifier& subject) override;
@@ -40,7 +64,7 @@ public:
 private:
     void observe(const nodes::TransferFunction* transfer);
 
-    volume::ScalarGridPtr mGrid;
+    ClassificationInputs mInputs;
     const nodes::TransferFunction* mTransfer = nullptr;
     bool mTransferChanged = false;
     std::shared_ptr<const octree::ClassifiedGrid> mClassified;

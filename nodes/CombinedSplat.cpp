@@ -1,0 +1,71 @@
+#include "nodes/CombinedSplat.h"
+
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "nodes/kernel/FootprintTexture.h"
+#include "nodes/kernel/VectorSplatTable.h"
+#include "nodes/render/SplatBatch.h"
+#include "nodes/render/detail/ClassificationCache.h"
+#include "scenegraph/Error.h"
+
+#include <cmath>
+
+namespace texsplat::nodes {
+
+CombinedSplat::CombinedSplat() {
+    addField(kernel, "kernel", SplatKernel::Paper, kSplatKernelNames);
+    addField(textureResolution, "textureResolution", 64);
+    addField(markContrast, "markContrast", 1.0f);
+    // Figure 7: vectors in a constant colour over the volume rendering.
+    textureOperator.setValue(render::MarkOperator::Blend);
+    textureOperator.setDefault(true);
+}
+
+void CombinedSplat::checkFields() const {
+    VectorMarkSplat::checkFields();
+    const float contrast = markContrast.value();
+    if (!std::isfinite(contrast) || contrast < 0.0f || contrast > 1.0f) {
+        throw DataError("markContrast must be in [0, 1], got " + markContrast.valueText());
+    }
+}
+
+std::shared_ptr<render::SplatBatch> CombinedSplat::makeBatch() const {
+    return std::make_shared<render::SplatBatch>(render::SplatBatch::combinedMarks(
+        *texsplat::kernel::VectorSplatTable::shared(tableParameters()),
+        TextureSplat::footprint(kernel.as<SplatKernel>(), textureResolution.value(),
+                                size.value())));
+}
+
+std::shared_ptr<const octree::ClassifiedGrid>
+CombinedSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*state*/,
+                        const VolumeData& volume, const TransferFunction& transfer,
+                        const glm::mat4& /*model*/) const {
+    const volume::VectorGridPtr vectors = vectorGrid(volume);
+    const volume::ScalarGridPtr scalars = volume.scalarGrid();
+    const volume::ScalarGridPtr mask = companionGrid(maskData, vectors->geometry());
+    render::detail::ClassificationInputs inputs;
+    inputs.grids = {scalars, vectors, mask};
+    return cache.classified(inputs, transfer, [&] {
+        std::shared_ptr<octree::ClassifiedGrid> classified = transfer.classify(*scalars);
+        classified->enableVectors();
+        // Voxels without a vector keep a zero one: they draw their scalar part only.
+        vectors->forEachActive([&](const glm::i64vec3& index, const glm::vec3& vector) {
+            if (!mask || (mask->isActive(index) && isInMask(mask->value(index)))) {
+                classified->setVector(glm::u64vec3(index), vector);
+            }
+        });
+        return std::shared_ptr<const octree::ClassifiedGrid>(std::move(classified));
+    });
+}
+
+render::MarkDrawing CombinedSplat::markDrawing() const {
+    render::MarkDrawing marks = VectorMarkSplat::markDrawing();
+    marks.contrast = markContrast.value();
+    return marks;
+}
+
+bool CombinedSplat::isDrawingField(const sg::Field* field) const {
+    return VectorMarkSplat::isDrawingField(field) || field == &markContrast;
+}
+
+} // namespace texsplat::nodes

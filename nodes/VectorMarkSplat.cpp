@@ -1,0 +1,133 @@
+#include "nodes/VectorMarkSplat.h"
+
+#include "nodes/VolumeData.h"
+#include "nodes/detail/NodeContext.h"
+#include "nodes/kernel/VectorSplatTable.h"
+#include "scenegraph/Error.h"
+
+#include <cmath>
+#include <string>
+
+namespace texsplat::nodes {
+namespace {
+
+const sg::EnumNames kMarkTypeNames{{"PARTICLES", kernel::MarkType::Particles},
+                                   {"SCRATCHES", kernel::MarkType::Scratches}};
+
+std::string dimsText(const glm::i64vec3& dims) {
+    return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+}
+
+} // namespace
+
+VectorMarkSplat::VectorMarkSplat() {
+    const kernel::VectorTableParameters table;
+    addField(textureOperator, "operator", render::MarkOperator::Modulate, kMarkOperatorNames);
+    addField(blendColor, "blendColor", glm::vec3(1.0f));
+    addField(phase, "phase", 0.0f);
+    addField(tableRows, "tableRows", table.rows);
+    addField(tableColumns, "tableColumns", table.columns);
+    addField(markType, "markType", table.markType, kMarkTypeNames);
+    addField(markDensity, "markDensity", table.markDensity);
+    addField(windowScale, "windowScale", table.windowScale);
+    addField(seed, "seed", static_cast<std::int32_t>(table.seed));
+    addField(maskData, "maskData", std::shared_ptr<sg::Node>());
+    addField(maskRange, "maskRange", glm::vec2(0.0f, 1.0f));
+}
+
+kernel::VectorTableParameters VectorMarkSplat::tableParameters() const {
+    kernel::VectorTableParameters table;
+    table.rows = tableRows.value();
+    table.columns = tableColumns.value();
+    table.markType = markType.as<kernel::MarkType>();
+    table.markDensity = markDensity.value();
+    table.splatExtent = size.value();
+    table.windowScale = windowScale.value();
+    table.seed = static_cast<std::uint32_t>(seed.value());
+    return table;
+}
+
+void VectorMarkSplat::checkFields() const {
+    ScalarSplat::checkFields();
+    kernel::VectorSplatTable::checkParameters(tableParameters());
+    if (!std::isfinite(phase.value())) {
+        throw DataError("phase must be finite, got " + phase.valueText());
+    }
+    const glm::vec3 blend = blendColor.value();
+    if (!std::isfinite(blend.r) || !std::isfinite(blend.g) || !std::isfinite(blend.b) ||
+        glm::any(glm::lessThan(blend, glm::vec3(0.0f)))) {
+        throw DataError("blendColor must be finite and not negative, got " +
+                        blendColor.valueText());
+    }
+    const glm::vec2 range = maskRange.value();
+    if (!std::isfinite(range.x) || !std::isfinite(range.y) || range.x > range.y) {
+        throw DataError("maskRange must be finite with maskRange[0] <= maskRange[1], got " +
+                        maskRange.valueText());
+    }
+    checkVolumeField(maskData);
+}
+
+volume::VectorGridPtr VectorMarkSplat::vectorGrid(const VolumeData& volume) const {
+    volume::VectorGridPtr vectors = volume.vectorGrid();
+    if (!vectors) {
+        throw DataError(detail::nodeContext(volume) +
+                        " holds scalars; vector splats need a vector field (a raw file with 3 "
+                        "components, an OpenVDB vec3s grid, or TORNADO, JET_STREAM, AEROGEL)");
+    }
+    return vectors;
+}
+
+volume::ScalarGridPtr VectorMarkSplat::companionGrid(const sg::SFNode& field,
+                                                     const volume::GridGeometry& geometry) const {
+    const auto* volume = dynamic_cast<const VolumeData*>(field.value().get());
+    if (!volume) {
+        return nullptr;
+    }
+    volume::ScalarGridPtr grid = volume->scalarGrid();
+    if (grid->geometry().dims() != geometry.dims()) {
+        throw DataError(field.name() + " " + detail::nodeContext(*volume) + " has " +
+                        dimsText(grid->geometry().dims()) + " voxels but the vectors have " +
+                        dimsText(geometry.dims()));
+    }
+    return grid;
+}
+
+void VectorMarkSplat::checkVolumeField(const sg::SFNode& field) {
+    if (field.value() && !dynamic_cast<const VolumeData*>(field.value().get())) {
+        throw DataError(field.name() + " must be a VolumeData, got " + field.value()->typeName());
+    }
+}
+
+bool VectorMarkSplat::isInMask(float value) const {
+    const glm::vec2 range = maskRange.value();
+    return value >= range.x && value <= range.y;
+}
+
+std::optional<octree::VectorEmission> VectorMarkSplat::vectorEmission() const {
+    octree::VectorEmission emission;
+    emission.rows = tableRows.value();
+    emission.columns = tableColumns.value();
+    emission.seed = static_cast<std::uint32_t>(seed.value());
+    return emission;
+}
+
+render::MarkDrawing VectorMarkSplat::markDrawing() const {
+    render::MarkDrawing marks;
+    marks.textureOperator = textureOperator.as<render::MarkOperator>();
+    marks.blendColor = blendColor.value();
+    // The fraction of a cycle first: a huge phase must not overflow the row count.
+    const double cycle = std::fmod(static_cast<double>(phase.value()), 1.0);
+    marks.rowShift = static_cast<int>(std::lround(cycle * tableRows.value()));
+    return marks;
+}
+
+bool VectorMarkSplat::isDrawingField(const sg::Field* field) const {
+    return ScalarSplat::isDrawingField(field) || field == &textureOperator ||
+           field == &blendColor || field == &phase || isClassificationField(field);
+}
+
+bool VectorMarkSplat::isClassificationField(const sg::Field* field) const {
+    return field == &maskData || field == &maskRange;
+}
+
+} // namespace texsplat::nodes

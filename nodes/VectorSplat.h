@@ -1,0 +1,83 @@
+#pragma once
+
+#include "nodes/VectorMarkSplat.h"
+
+namespace texsplat::nodes {
+
+/// @brief Where a VectorSplat's polygons take their colour from.
+enum class VectorColorMode {
+    Magnitude, ///< |v| through the TransferFunction's colour map (figures 5, 6)
+    Scalar,    ///< a second scalar field, `colorData`, through the colour map
+    Position,  ///< a world coordinate (`positionAxis` over `positionRange`) through the colour
+               ///< map: e.g. altitude (figure 8)
+    Constant,  ///< `color`
+};
+
+/// @brief Scene-file names of VectorColorMode.
+inline const sg::EnumNames kVectorColorModeNames{{"MAGNITUDE", VectorColorMode::Magnitude},
+                                                 {"SCALAR", VectorColorMode::Scalar},
+                                                 {"POSITION", VectorColorMode::Position},
+                                                 {"CONSTANT", VectorColorMode::Constant}};
+
+/// @brief A world axis.
+enum class Axis { X, Y, Z };
+
+/// @brief Scene-file names of Axis.
+inline const sg::EnumNames kAxisNames{{"X", Axis::X}, {"Y", Axis::Y}, {"Z", Axis::Z}};
+
+/// @brief Vector splats (Crawfis & Max 1993, "Combined Vector and Scalar Textures", figures 5,
+/// 6, 8): the vector field of the current VolumeData drawn as marks of the vector splat table,
+/// one textured square per non-empty voxel (or octree node), oriented along the projected
+/// vector and foreshortened by its component towards the eye.
+///
+/// Each splat's polygon has a colour RGB (`colorMode`) and an opacity A: the vector magnitude
+/// |v| goes through the current TransferFunction to an extinction τ, and A = 1 − exp(−τ·ℓ) is
+/// the opacity of one voxel's depth ℓ of that medium (figure 5: magnitude to opacity). The
+/// texture operator then gives the paper's formulas, composited "over" back to front:
+/// MODULATE (RGB·I_tex, A·A_tex), BLEND (RGB·(1 − I_tex) + C_const·I_tex, A·A_tex).
+/// Voxels whose vector is zero, or outside the mask, or whose magnitude classifies to τ = 0 draw
+/// nothing. `stretch` > 1 elongates each square along its projected vector (figure 6's wisps).
+/// For colour by position the coordinate is the voxel centre in world space (the model matrix
+/// applied), mapped linearly from `positionRange` onto the TransferFunction's `range`.
+///
+/// RayCastAction leaves vector splats out (marks are not a medium; it logs a warning).
+///
+/// File format (ScalarSplat's and VectorMarkSplat's fields, and):
+/// @code
+/// VectorSplat {
+///     colorMode      MAGNITUDE   # MAGNITUDE, SCALAR, POSITION, CONSTANT
+///     colorData      NULL        # the scalar VolumeData of colorMode SCALAR
+///     positionAxis   Z           # X, Y, Z: the coordinate of colorMode POSITION
+///     positionRange  0 1         # coordinates mapped onto the TransferFunction's range
+///     color          1 1 1       # the colour of colorMode CONSTANT
+///     stretch        1           # >= 1: elongation along the projected vector
+/// }
+/// @endcode
+class VectorSplat : public sg::Declare<VectorSplat, VectorMarkSplat> {
+public:
+    /// @brief The scene-file name.
+    static constexpr const char* kTypeName = "VectorSplat";
+
+    sg::SFEnum colorMode;       ///< VectorColorMode
+    sg::SFNode colorData;       ///< scalar VolumeData for colorMode SCALAR
+    sg::SFEnum positionAxis;    ///< Axis for colorMode POSITION
+    sg::SFVec2f positionRange;  ///< coordinates onto the transfer function's range
+    sg::SFColor color;          ///< colour for colorMode CONSTANT
+    sg::SFFloat stretch;        ///< elongation along the projected vector, >= 1
+
+protected:
+    VectorSplat();
+
+    std::shared_ptr<render::SplatBatch> makeBatch() const override;
+    std::shared_ptr<const octree::ClassifiedGrid>
+    classify(render::detail::ClassificationCache& cache, sg::State& state,
+             const VolumeData& volume, const TransferFunction& transfer,
+             const glm::mat4& model) const override;
+    render::MarkDrawing markDrawing() const override;
+    bool isMedium() const override { return false; }
+    bool isDrawingField(const sg::Field* field) const override;
+    bool isClassificationField(const sg::Field* field) const override;
+    void checkFields() const override;
+};
+
+} // namespace texsplat::nodes
