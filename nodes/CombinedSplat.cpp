@@ -31,7 +31,7 @@ void CombinedSplat::checkFields() const {
 
 std::shared_ptr<render::SplatBatch> CombinedSplat::makeBatch() const {
     return std::make_shared<render::SplatBatch>(render::SplatBatch::combinedMarks(
-        *texsplat::kernel::VectorSplatTable::shared(tableParameters()),
+        *table(),
         TextureSplat::footprint(kernel.as<SplatKernel>(), textureResolution.value(),
                                 size.value())));
 }

@@ -35,6 +35,17 @@ VectorMarkSplat::VectorMarkSplat() {
     addField(maskRange, "maskRange", glm::vec2(0.0f, 1.0f));
 }
 
+VectorMarkSplat::~VectorMarkSplat() = default;
+
+std::shared_ptr<const kernel::VectorSplatTable> VectorMarkSplat::table() const {
+    const kernel::VectorTableParameters parameters = tableParameters();
+    if (!mTable || mTable->parameters() != parameters) {
+        mTable = detail::withNodeContext(
+            *this, [&] { return kernel::VectorSplatTable::shared(parameters); });
+    }
+    return mTable;
+}
+
 kernel::VectorTableParameters VectorMarkSplat::tableParameters() const {
     kernel::VectorTableParameters table;
     table.rows = tableRows.value();

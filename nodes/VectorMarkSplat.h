@@ -8,6 +8,7 @@
 #include "scenegraph/fields/SFNode.h"
 
 namespace texsplat::kernel {
+class VectorSplatTable;
 struct VectorTableParameters;
 } // namespace texsplat::kernel
 
@@ -66,11 +67,19 @@ public:
     sg::SFNode maskData;        ///< scalar VolumeData masking the marks, or none
     sg::SFVec2f maskRange;      ///< mask values that draw
 
-protected:
-    VectorMarkSplat();
+    ~VectorMarkSplat() override;
 
     /// @brief The table parameters of the current field values.
     kernel::VectorTableParameters tableParameters() const;
+
+    /// @brief The vector splat table of the current field values, made on first use and shared
+    /// with every node of the same table parameters (kernel::VectorSplatTable::shared()); the
+    /// node keeps it while its parameters stay the same. A scene without vector splats makes none.
+    /// @throws DataError naming the node when a table field is out of range.
+    std::shared_ptr<const kernel::VectorSplatTable> table() const;
+
+protected:
+    VectorMarkSplat();
 
     /// @brief The current vector grid; throws DataError when the VolumeData holds scalars.
     volume::VectorGridPtr vectorGrid(const VolumeData& volume) const;
@@ -92,6 +101,9 @@ protected:
     bool isDrawingField(const sg::Field* field) const override;
     bool isClassificationField(const sg::Field* field) const override;
     void checkFields() const override;
+
+private:
+    mutable std::shared_ptr<const kernel::VectorSplatTable> mTable;
 };
 
 } // namespace texsplat::nodes

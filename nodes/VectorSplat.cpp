@@ -44,7 +44,7 @@ void VectorSplat::checkFields() const {
 
 std::shared_ptr<render::SplatBatch> VectorSplat::makeBatch() const {
     return std::make_shared<render::SplatBatch>(
-        render::SplatBatch::vectorMarks(*kernel::VectorSplatTable::shared(tableParameters())));
+        render::SplatBatch::vectorMarks(*table()));
 }
 
 std::shared_ptr<const octree::ClassifiedGrid>

@@ -48,7 +48,7 @@ SplatVector vectorSplat(const VectorEmission& emission, glm::vec3 position, glm:
         mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32)) %
         static_cast<std::uint64_t>(emission.rows));
     // In double: a huge vector's squared length overflows float.
-    const glm::dvec3 camera = glm::dvec3(glm::mat3(emission.localToCamera) * vector);
+    const glm::dvec3 camera = glm::dmat3(glm::mat3(emission.localToCamera)) * glm::dvec3(vector);
     const double length = glm::length(camera);
     if (!(length > 0.0) || !std::isfinite(length)) {
         return result;

@@ -53,6 +53,7 @@ void main() {
     vec3 axis = e / eLength;
     vec3 helper = abs(axis.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
     vec3 u = normalize(cross(helper, axis));
+    vec3 scalarU = u; // the scalar splats' basis: combined splats sample their footprint in it
     hasMarks = 0;
     // Scaled by the largest component first: a huge vector's length overflows, a tiny one's
     // underflows.
@@ -73,7 +74,10 @@ void main() {
     vec3 offset = (corner.x * (hasMarks == 1 ? stretch : 1.0) * u + corner.y * v) * halfWidth;
     gl_Position = localToClip * vec4(centre + spacing * offset, 1.0);
     tableCoord = corner.xy * 0.5 + 0.5;
-    footprintCoord = corner.xy * (extent / footprintExtent) * 0.5 + 0.5;
+    // The same voxel offset in the TextureSplat's own square, so the scalar part samples the
+    // footprint exactly where a TextureSplat would.
+    vec2 scalarOffset = vec2(dot(offset, scalarU), dot(offset, cross(axis, scalarU))) / size;
+    footprintCoord = scalarOffset / footprintExtent * 0.5 + 0.5;
     lengthScale = size / eLength;
     medium = colorExtinction;
     int row = (int(rowColumn.x) + rowShift) % rows;
