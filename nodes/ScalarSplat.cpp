@@ -26,6 +26,7 @@
 #include <chrono>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace texsplat::nodes {
 namespace {
@@ -44,6 +45,20 @@ template <class Step> auto timed(sg::RenderAction& action, sg::RenderPhase phase
         }
     } addTime{action, phase, start};
     return step();
+}
+
+// How far each splat is from the eye, what RenderAction merges the batches of several nodes
+// by: the depth along the view (camera space looks down -z) for an orthographic camera, the
+// distance from the eye for a perspective one.
+std::vector<float> cameraDepths(const octree::SplatList& splats, const glm::mat4& localToCamera,
+                                bool isPerspective) {
+    std::vector<float> depths;
+    depths.reserve(splats.size());
+    for (const octree::Splat& splat : splats.splats()) {
+        const glm::vec3 camera(localToCamera * glm::vec4(splat.position, 1.0f));
+        depths.push_back(isPerspective ? glm::length(camera) : -camera.z);
+    }
+    return depths;
 }
 
 } // namespace
@@ -138,12 +153,22 @@ void ScalarSplat::render(sg::RenderAction& action) {
         mBatchContext = context;
     }
     action.statistics().splats += splats->size();
-    // Upload at draw time: a node used twice in the graph (DEF/USE) draws two lists with one
-    // batch, one after the other.
-    action.addSplats([&action, batch = mBatch, splats, view, marks = markDrawing()] {
-        timed(action, sg::RenderPhase::Upload, [&] { batch->upload(*splats); });
-        batch->draw(view, marks);
-    });
+    sg::RenderAction::SplatWork work;
+    work.count = splats->size();
+    work.depths = [splats, localToCamera = camera.view * model,
+                   isPerspective = camera.projection[3][3] == 0.0f] {
+        return cameraDepths(*splats, localToCamera, isPerspective);
+    };
+    // Upload at draw time, when a run of this list is first drawn: a node used twice in the
+    // graph (DEF/USE) draws two lists with one batch.
+    work.drawRange = [&action, batch = mBatch, list = std::shared_ptr<const octree::SplatList>(splats),
+                      view, marks = markDrawing()](std::size_t begin, std::size_t end) {
+        if (!batch->isUploaded(list)) {
+            timed(action, sg::RenderPhase::Upload, [&] { batch->upload(list); });
+        }
+        batch->draw(view, marks, begin, end - begin);
+    };
+    action.addSplats(std::move(work));
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {

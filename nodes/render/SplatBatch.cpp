@@ -51,8 +51,23 @@ SplatBatch::SplatBatch(SplatShape shape, double extent,
     mVertexArray.setIndexBuffer(mTemplateIndices);
     // Attributes need storage behind them before the first upload; one empty splat will do.
     mInstances.setData(std::vector<octree::Splat>(1), gl::BufferUsage::DynamicDraw);
-    mVertexArray.setAttribute(1, mInstances, 4, sizeof(octree::Splat), 0, 1);
-    mVertexArray.setAttribute(2, mInstances, 4, sizeof(octree::Splat), 4 * sizeof(float), 1);
+    setInstanceAttributes(0);
+}
+
+// GL 3.3 has no base instance: a run that starts later points the attributes further in.
+void SplatBatch::setInstanceAttributes(std::size_t first) {
+    const std::size_t splat = first * sizeof(octree::Splat);
+    mVertexArray.setAttribute(1, mInstances, 4, sizeof(octree::Splat), splat, 1);
+    mVertexArray.setAttribute(2, mInstances, 4, sizeof(octree::Splat), splat + 4 * sizeof(float),
+                              1);
+    if (mVectors) {
+        const std::size_t vector = first * sizeof(octree::SplatVector);
+        mVertexArray.setAttribute(3, *mVectors, 3, sizeof(octree::SplatVector), vector, 1);
+        mVertexArray.setIntegerAttribute(4, *mVectors, 2, GL_UNSIGNED_SHORT,
+                                         sizeof(octree::SplatVector), vector + 3 * sizeof(float),
+                                         1);
+    }
+    mAttributeFirst = first;
 }
 
 SplatBatch SplatBatch::textured(const kernel::FootprintTexture& footprint) {
@@ -74,9 +89,7 @@ SplatBatch SplatBatch::markSquares(SplatShape shape, const kernel::VectorSplatTa
     batch.mTable->setData(table.texels());
     batch.mVectors.emplace();
     batch.mVectors->setData(std::vector<octree::SplatVector>(1), gl::BufferUsage::DynamicDraw);
-    batch.mVertexArray.setAttribute(3, *batch.mVectors, 3, sizeof(octree::SplatVector), 0, 1);
-    batch.mVertexArray.setIntegerAttribute(4, *batch.mVectors, 2, GL_UNSIGNED_SHORT,
-                                           sizeof(octree::SplatVector), 3 * sizeof(float), 1);
+    batch.setInstanceAttributes(0);
     return batch;
 }
 
@@ -138,6 +151,7 @@ void SplatBatch::upload(const octree::SplatList& splats) {
                     "SplatBatch::upload(): more splats than one instanced draw can take");
     TEXSPLAT_ASSERT(!hasMarks() || splats.hasVectors() || splats.isEmpty(),
                     "SplatBatch::upload(): vector splats need the list's vectors");
+    mUploadedList.reset();
     mCount = splats.size();
     if (mCount > 0) {
         mInstances.setData(splats.splats(), gl::BufferUsage::DynamicDraw);
@@ -147,9 +161,23 @@ void SplatBatch::upload(const octree::SplatList& splats) {
     }
 }
 
+void SplatBatch::upload(const std::shared_ptr<const octree::SplatList>& splats) {
+    upload(*splats);
+    mUploadedList = splats;
+}
+
 void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks) {
-    if (mCount == 0) {
+    draw(view, marks, 0, mCount);
+}
+
+void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks, std::size_t first,
+                      std::size_t count) {
+    TEXSPLAT_ASSERT(first + count <= mCount, "SplatBatch::draw(): splats beyond the upload");
+    if (count == 0) {
         return;
+    }
+    if (first != mAttributeFirst) {
+        setInstanceAttributes(first);
     }
     mProgram.use();
     if (hasMarks()) {
@@ -175,7 +203,7 @@ void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks) {
         if (mFootprint) {
             mFootprint->bind(1);
         }
-        mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(mCount));
+        mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(count));
         return;
     }
     const bool gouraud = mShape == SplatShape::GouraudPolygon;
@@ -190,7 +218,7 @@ void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks) {
         mFootprint->bind(0);
         mProgram.setUniform("footprint", 0);
     }
-    mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(mCount));
+    mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(count));
 }
 
 } // namespace texsplat::render

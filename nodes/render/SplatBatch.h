@@ -10,6 +10,7 @@
 #include "scenegraph/gl/VertexArray.h"
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 
 namespace texsplat::kernel {
@@ -81,9 +82,24 @@ public:
     /// combined batches need the list's vectors.
     void upload(const octree::SplatList& splats);
 
+    /// @brief As upload(), remembering `splats` so that isUploaded() can tell: a node used
+    /// twice in a graph (DEF/USE) draws two lists with one batch, and RenderAction may
+    /// interleave their runs with other batches.
+    void upload(const std::shared_ptr<const octree::SplatList>& splats);
+
+    /// @brief Whether `splats` is the list the last upload() of a shared list put on the GPU.
+    bool isUploaded(const std::shared_ptr<const octree::SplatList>& splats) const {
+        return mUploadedList.lock() == splats;
+    }
+
     /// @brief Draws the uploaded splats in their order; `marks` matters to vector and combined
     /// batches only. Leaves blending and depth state to the caller (RenderAction's splat pass).
     void draw(const SplatView& view, const MarkDrawing& marks = {});
+
+    /// @brief Draws `count` uploaded splats from `first` on, in their order (one run of a
+    /// frame whose batches RenderAction interleaves by depth).
+    void draw(const SplatView& view, const MarkDrawing& marks, std::size_t first,
+              std::size_t count);
 
     /// @brief Number of uploaded splats.
     std::size_t size() const { return mCount; }
@@ -98,6 +114,7 @@ private:
     SplatBatch(SplatShape shape, double extent, const std::vector<float>& templateVertices,
                const std::vector<unsigned>& templateIndices);
     static SplatBatch markSquares(SplatShape shape, const kernel::VectorSplatTable& table);
+    void setInstanceAttributes(std::size_t first);
     bool hasMarks() const {
         return mShape == SplatShape::VectorSquare || mShape == SplatShape::CombinedSquare;
     }
@@ -118,6 +135,8 @@ private:
     int mColumns = 1;
     int mTemplateIndexCount;
     std::size_t mCount = 0;
+    std::size_t mAttributeFirst = 0; // the instance the per-instance attributes start at
+    std::weak_ptr<const octree::SplatList> mUploadedList;
 };
 
 } // namespace texsplat::render

@@ -1,10 +1,12 @@
 #include "scenegraph/actions/RenderAction.h"
 
+#include "scenegraph/actions/detail/DepthOrderedRuns.h"
 #include "scenegraph/gl/CheckGlError.h"
 
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <limits>
 
 namespace texsplat::sg {
 namespace {
@@ -60,10 +62,38 @@ void RenderAction::render(Node& root) {
     drawPasses();
 }
 
+void RenderAction::addSplats(DrawFunction draw) {
+    SplatWork work;
+    work.count = 1;
+    work.depths = [] { return std::vector<float>{std::numeric_limits<float>::infinity()}; };
+    work.drawRange = [draw = std::move(draw)](std::size_t, std::size_t) { draw(); };
+    mSplats.push_back(std::move(work));
+}
+
+void RenderAction::drawSplats() {
+    if (mSplats.size() == 1) {
+        mSplats.front().drawRange(0, mSplats.front().count);
+        return;
+    }
+    const Clock::time_point start = Clock::now();
+    std::vector<std::vector<float>> depths;
+    depths.reserve(mSplats.size());
+    for (const SplatWork& work : mSplats) {
+        depths.push_back(work.depths());
+    }
+    const std::vector<detail::SplatRun> runs = detail::depthOrderedRuns(depths);
+    addTime(RenderPhase::Order, secondsSince(start));
+    for (const detail::SplatRun& run : runs) {
+        mSplats[run.batch].drawRange(run.begin, run.end);
+    }
+}
+
 void RenderAction::drawPasses() {
     const Clock::time_point start = Clock::now();
-    // Splat batches upload their instances when drawn and count that as Upload; Draw is the rest.
+    // Splat batches upload their instances when drawn and count that as Upload, and merging
+    // batches by depth counts as Order; Draw is the rest.
     const double uploadBefore = mStatistics.time(RenderPhase::Upload);
+    const double orderBefore = mStatistics.time(RenderPhase::Order);
     mFramebuffer.clear(mBackground, 1.0f);
     {
         const PassState passState;
@@ -78,13 +108,12 @@ void RenderAction::drawPasses() {
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        for (const DrawFunction& draw : mSplats) {
-            draw();
-        }
+        drawSplats();
     }
     glFinish();
-    addTime(RenderPhase::Draw,
-            secondsSince(start) - (mStatistics.time(RenderPhase::Upload) - uploadBefore));
+    addTime(RenderPhase::Draw, secondsSince(start) -
+                                   (mStatistics.time(RenderPhase::Upload) - uploadBefore) -
+                                   (mStatistics.time(RenderPhase::Order) - orderBefore));
     // The closures may hold node data (splat lists, meshes); drop them with the frame.
     mOpaque.clear();
     mSplats.clear();

@@ -46,13 +46,15 @@ struct RenderStatistics {
 /// library) read the traversal state (camera, transform, transfer function, volume) and hand
 /// the action closures with everything they need, in two ordered lists. `render()` then draws:
 /// 1. the opaque list in traversal order, depth test and depth write on, no blending;
-/// 2. the splat list in traversal order, depth-tested against pass 1 but not writing depth,
-///    blended with premultiplied-alpha "over" (glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA)),
-///    each splat node's batch already back to front (Crawfis & Max 1993, section 3: "the
-///    splats are built up in back to front order").
+/// 2. the splats, depth-tested against pass 1 but not writing depth, blended with
+///    premultiplied-alpha "over" (glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA)), each splat
+///    node's batch already back to front (Crawfis & Max 1993, section 3: "the splats are built
+///    up in back to front order"). Batches of different nodes are composited in one depth order
+///    across nodes: the batches are merged by the depths of their splats (detail::
+///    depthOrderedRuns), so two volumes in the same space (the paper's figure 8: clouds and
+///    winds) interleave instead of one lying over the other.
 /// So a splat behind an opaque surface is hidden and one in front blends over it, whatever
-/// the order of the nodes in the graph. Splat batches of different nodes are composited in
-/// graph order, not interleaved by depth: put the farther volume first.
+/// the order of the nodes in the graph.
 ///
 /// The action needs a current GL context for its whole life; it owns the framebuffer and
 /// keeps it between frames (the viewer re-renders into the same one).
@@ -61,6 +63,17 @@ public:
     /// @brief A unit of work a node hands to the action; called once, with the framebuffer
     /// bound and the pass's GL state set.
     using DrawFunction = std::function<void()>;
+
+    /// @brief One node's back-to-front splats for the splat pass.
+    struct SplatWork {
+        /// @brief Number of splats.
+        std::size_t count = 0;
+        /// @brief The distance from the eye of each splat (any measure common to the frame's
+        /// batches: camera-space depth), asked for only when the frame has several batches.
+        std::function<std::vector<float>()> depths;
+        /// @brief Draws splats [begin, end), in their order; called with increasing ranges.
+        std::function<void(std::size_t begin, std::size_t end)> drawRange;
+    };
 
     /// @brief An action drawing into a new `width` x `height` framebuffer of `color` storage
     /// and 32-bit float depth.
@@ -80,8 +93,12 @@ public:
     /// @brief Queues opaque geometry for pass 1 (during traversal).
     void addOpaque(DrawFunction draw) { mOpaque.push_back(std::move(draw)); }
 
-    /// @brief Queues a back-to-front splat batch for pass 2 (during traversal).
-    void addSplats(DrawFunction draw) { mSplats.push_back(std::move(draw)); }
+    /// @brief Queues a node's back-to-front splats for pass 2 (during traversal).
+    void addSplats(SplatWork work) { mSplats.push_back(std::move(work)); }
+
+    /// @brief Queues splat drawing of no known depth for pass 2: one piece drawn whole, before
+    /// any splat with a depth (it counts as the farthest).
+    void addSplats(DrawFunction draw);
 
     /// @brief The premultiplied color the framebuffer is cleared to; default transparent black.
     void setBackground(const glm::vec4& color) { mBackground = color; }
@@ -115,11 +132,12 @@ protected:
 
 private:
     void drawPasses();
+    void drawSplats();
 
     gl::Framebuffer mFramebuffer;
     glm::vec4 mBackground{0.0f};
     std::vector<DrawFunction> mOpaque;
-    std::vector<DrawFunction> mSplats;
+    std::vector<SplatWork> mSplats;
     RenderStatistics mStatistics;
 };
 

@@ -1,0 +1,43 @@
+#include "scenegraph/actions/detail/DepthOrderedRuns.h"
+
+namespace texsplat::sg::detail {
+
+std::vector<SplatRun> depthOrderedRuns(const std::vector<std::vector<float>>& depths) {
+    const std::size_t batches = depths.size();
+    std::vector<std::size_t> next(batches, 0);
+    std::vector<SplatRun> runs;
+    // Whether splat `i` of batch `b` goes before the next splat of batch `other`.
+    const auto isBefore = [&](std::size_t b, std::size_t i, std::size_t other) {
+        const float here = depths[b][i];
+        const float there = depths[other][next[other]];
+        return here > there || (here == there && b < other);
+    };
+    for (;;) {
+        std::size_t best = batches;
+        for (std::size_t b = 0; b < batches; ++b) {
+            if (next[b] < depths[b].size() && (best == batches || isBefore(b, next[b], best))) {
+                best = b;
+            }
+        }
+        if (best == batches) {
+            return runs;
+        }
+        SplatRun run{best, next[best], next[best] + 1};
+        const auto continues = [&](std::size_t i) {
+            for (std::size_t other = 0; other < batches; ++other) {
+                if (other != best && next[other] < depths[other].size() &&
+                    !isBefore(best, i, other)) {
+                    return false;
+                }
+            }
+            return true;
+        };
+        while (run.end < depths[best].size() && continues(run.end)) {
+            ++run.end;
+        }
+        next[best] = run.end;
+        runs.push_back(run);
+    }
+}
+
+} // namespace texsplat::sg::detail
