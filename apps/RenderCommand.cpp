@@ -7,11 +7,18 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/engines/TimeInputs.h"
 #include "scenegraph/gl/EglContext.h"
+#include "scenegraph/sensors/SensorQueue.h"
+#include "scenegraph/sensors/SimulatedClock.h"
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
+#include <cctype>
+#include <charconv>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -29,15 +36,213 @@ double secondsSince(Clock::time_point start) {
     return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+constexpr int kMaxFrames = 1000000;
+
 struct RenderArguments {
     std::string scene;
     std::string output;
     std::string size = "512x512";
     std::string camera;
     std::string direction;
+    std::string frames = "1";
+    std::string fps = "24";
     bool timeReport = false;
     bool rayCast = false;
     float rayCastStep = sg::RayCastAction::kDefaultStepSize;
+};
+
+// The output name of each frame. A name with one printf-style integer conversion is a pattern:
+// `%d`, `%i` or `%u`, optionally with the flags `0` (pad with zeros) or `-` (pad on the right)
+// and a width of one or two digits (`%04d`); `%%` stands for a '%'. Nothing else may follow a
+// '%': the name is checked here, never handed to printf.
+class OutputPattern {
+public:
+    // Throws DataError when `frames` > 1 and `output` is not such a pattern. With a single
+    // frame, a name that is not a pattern is used as it is (as before --frames existed).
+    static OutputPattern parse(const std::string& output, int frames) {
+        OutputPattern pattern;
+        pattern.mOutput = output;
+        int conversions = 0;
+        std::optional<std::string> unsupported;
+        for (std::size_t i = 0; i < output.size() && !unsupported; ++i) {
+            std::string& text = conversions == 0 ? pattern.mPrefix : pattern.mSuffix;
+            if (output[i] != '%') {
+                text += output[i];
+                continue;
+            }
+            if (i + 1 < output.size() && output[i + 1] == '%') {
+                text += '%';
+                ++i;
+                continue;
+            }
+            std::size_t end = i + 1;
+            bool leftAligned = false;
+            bool zeroPadded = false;
+            for (; end < output.size() && (output[end] == '0' || output[end] == '-'); ++end) {
+                (output[end] == '-' ? leftAligned : zeroPadded) = true;
+            }
+            const std::size_t widthStart = end;
+            while (end < output.size() && output[end] >= '0' && output[end] <= '9') {
+                ++end;
+            }
+            const std::size_t widthDigits = end - widthStart;
+            if (end == output.size() || widthDigits > 2 ||
+                std::string("diu").find(output[end]) == std::string::npos) {
+                unsupported = conversionAt(output, i);
+                break;
+            }
+            if (++conversions == 1) {
+                pattern.mWidth =
+                    widthDigits == 0 ? 0 : std::stoul(output.substr(widthStart, widthDigits));
+                pattern.mFill = zeroPadded && !leftAligned ? '0' : ' ';
+                pattern.mLeftAligned = leftAligned;
+            }
+            i = end;
+        }
+        pattern.mIsPattern = !unsupported && conversions == 1;
+        if (frames > 1) {
+            if (unsupported) {
+                throw DataError("--output: '" + *unsupported + "' in '" + output +
+                                "' is not a frame number; use %d, %04d (4 digits, zero-padded) "
+                                "or %% for a '%'");
+            }
+            if (conversions > 1) {
+                throw DataError("--output: '" + output + "' has " + std::to_string(conversions) +
+                                " %d-style numbers; a frame name needs exactly one");
+            }
+            if (conversions == 0) {
+                throw DataError("--frames " + std::to_string(frames) +
+                                " needs an output name with one %d-style frame number (e.g. "
+                                "out%04d.png), got '" +
+                                output + "'");
+            }
+        }
+        return pattern;
+    }
+
+    // The file of frame `frame` (>= 0).
+    std::string name(int frame) const {
+        if (!mIsPattern) {
+            return mOutput;
+        }
+        const std::string digits = std::to_string(frame);
+        const std::string padding(std::max<std::size_t>(mWidth, digits.size()) - digits.size(),
+                                  mFill);
+        return mPrefix + (mLeftAligned ? digits + padding : padding + digits) + mSuffix;
+    }
+
+private:
+    // The printf conversion that starts at output[percent], for messages: up to its conversion
+    // letter (`%s`, `%.3d`, `%ld`) or the end.
+    static std::string conversionAt(const std::string& output, std::size_t percent) {
+        const auto isLengthModifier = [](char c) {
+            return std::string("hlLqjzt").find(c) != std::string::npos;
+        };
+        std::size_t end = percent + 1;
+        while (end < output.size() &&
+               (!std::isalpha(static_cast<unsigned char>(output[end])) ||
+                isLengthModifier(output[end]))) {
+            ++end;
+        }
+        return output.substr(percent, std::min(end + 1, output.size()) - percent);
+    }
+
+    std::string mOutput;
+    bool mIsPattern = false;
+    std::string mPrefix; // before the conversion, %% turned into %
+    std::string mSuffix; // after it, likewise
+    std::size_t mWidth = 0;
+    char mFill = ' ';
+    bool mLeftAligned = false;
+};
+
+// --frames and --fps: which frames to render, at which scene times, into which files.
+struct Animation {
+    int frames = 1;
+    double fps = 24.0;
+    OutputPattern output;
+
+    // Frame k shows the scene at k / fps seconds: SimulatedClock::setTime(k / fps) is the time a
+    // TimerSensor computes for its k-th trigger, so no error accumulates over a long movie.
+    double time(int frame) const { return static_cast<double>(frame) / fps; }
+};
+
+int parseFrames(const std::string& text) {
+    const bool isWhole = !text.empty() && text.size() <= 7 &&
+                         std::all_of(text.begin(), text.end(),
+                                     [](char c) { return c >= '0' && c <= '9'; });
+    const int frames = isWhole ? std::stoi(text) : 0;
+    if (frames < 1 || frames > kMaxFrames) {
+        throw DataError("--frames: expected a whole number from 1 to " +
+                        std::to_string(kMaxFrames) + ", got '" + text + "'");
+    }
+    return frames;
+}
+
+double parseFramesPerSecond(const std::string& text) {
+    double fps = 0.0;
+    const char* end = text.data() + text.size();
+    const auto [parsed, error] = std::from_chars(text.data(), end, fps);
+    if (text.empty() || error != std::errc() || parsed != end || !std::isfinite(fps) ||
+        fps <= 0.0) {
+        throw DataError("--fps: expected a finite number of frames per second > 0, got '" +
+                        text + "'");
+    }
+    return fps;
+}
+
+Animation parseAnimation(const RenderArguments& arguments) {
+    Animation animation;
+    animation.frames = parseFrames(arguments.frames);
+    animation.fps = parseFramesPerSecond(arguments.fps);
+    // The scene's time field is a float (SensorQueue::timeField()).
+    const double last = animation.time(animation.frames - 1);
+    if (!std::isfinite(static_cast<float>(last))) {
+        char seconds[32];
+        std::snprintf(seconds, sizeof seconds, "%g", last);
+        throw DataError("--fps: at " + arguments.fps + " frames per second frame " +
+                        std::to_string(animation.frames - 1) + " would be at " + seconds +
+                        " s, beyond the scene's time (a float)");
+    }
+    animation.output = OutputPattern::parse(arguments.output, animation.frames);
+    return animation;
+}
+
+// Runs the scene's time through the frames: before each, a SimulatedClock moves to the frame's
+// time and the sensor queue runs, so every engine (ElapsedTime) and every field connected to one
+// holds its value for that time. The same options give the same times, hence the same images.
+class FrameClock {
+public:
+    FrameClock(const Animation& animation, sg::Node& root)
+        : mAnimation(animation), mQueue(mClock) {
+        sg::connectTimeInputs(root, mQueue.timeField());
+    }
+
+    // Moves the scene to frame `frame`'s time (frames in increasing order).
+    void moveTo(int frame) {
+        const Clock::time_point start = Clock::now();
+        mClock.setTime(mAnimation.time(frame));
+        mQueue.process();
+        mSeconds += secondsSince(start);
+    }
+
+    // Reports frame `frame` written (a line on stderr for animations; nothing for one image).
+    void reportWritten(int frame) const {
+        if (mAnimation.frames > 1) {
+            std::fprintf(stderr, "frame %d/%d (t = %.6g s): %s\n", frame + 1, mAnimation.frames,
+                         mAnimation.time(frame), mAnimation.output.name(frame).c_str());
+            std::fflush(stderr);
+        }
+    }
+
+    // Wall seconds spent moving the clock and running the queue.
+    double seconds() const { return mSeconds; }
+
+private:
+    const Animation& mAnimation;
+    sg::SimulatedClock mClock;
+    sg::SensorQueue mQueue;
+    double mSeconds = 0.0;
 };
 
 // The times before rendering: reading the scene file and, for a scene without a camera, framing
@@ -49,23 +254,59 @@ struct SetupTimes {
     bool framed = false; ///< whether the scene had no camera and got one
 };
 
-void printTimes(const sg::RenderStatistics& statistics, const SetupTimes& setup, double context,
-                const gl::ContextInfo& contextInfo, double write) {
-    std::printf("time report (wall seconds):\n");
+// A time report line of what every frame does: for an animation the total over all frames,
+// then the mean per frame.
+void printFrameTime(const char* name, double total, int frames, const std::string& note = "") {
+    std::printf("  %-10s %9.4f", name, total);
+    if (frames > 1) {
+        std::printf("  %9.4f per frame", total / frames);
+    }
+    std::printf("%s\n", note.empty() ? "" : ("  (" + note + ")").c_str());
+}
+
+void printReportHeader(const SetupTimes& setup, const Animation& animation) {
+    if (animation.frames > 1) {
+        std::printf("time report (wall seconds; %d frames: totals over the frames, then the "
+                    "mean per frame):\n",
+                    animation.frames);
+    } else {
+        std::printf("time report (wall seconds):\n");
+    }
     std::printf("  %-10s %9.4f  (scene file)\n", "read", setup.readScene);
+}
+
+void printAnimateTime(const FrameClock& clock, const Animation& animation) {
+    if (animation.frames > 1) {
+        printFrameTime("animate", clock.seconds(), animation.frames,
+                       "clock and sensor queue: engines, connected fields");
+    }
+}
+
+void printTimes(const sg::RenderStatistics& statistics, const SetupTimes& setup, double context,
+                const gl::ContextInfo& contextInfo, double write, const FrameClock& clock,
+                const Animation& animation) {
+    const int frames = animation.frames;
+    printReportHeader(setup, animation);
     std::printf("  %-10s %9.4f  (%s: %s)\n", "context", context, contextInfo.platform.c_str(),
                 contextInfo.summary().c_str());
+    printAnimateTime(clock, animation);
     for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
         const auto name = std::string(sg::toString(static_cast<sg::RenderPhase>(phase)));
         if (static_cast<sg::RenderPhase>(phase) == sg::RenderPhase::Load && setup.framed) {
-            std::printf("  %-10s %9.4f  (%.4f of it while framing the scene)\n", name.c_str(),
-                        statistics.seconds[phase] + setup.frame, setup.frame);
+            char note[64];
+            std::snprintf(note, sizeof note, "%.4f of it while framing the scene", setup.frame);
+            printFrameTime(name.c_str(), statistics.seconds[phase] + setup.frame, frames, note);
         } else {
-            std::printf("  %-10s %9.4f\n", name.c_str(), statistics.seconds[phase]);
+            printFrameTime(name.c_str(), statistics.seconds[phase], frames);
         }
     }
-    std::printf("  %-10s %9.4f  (encode and rename)\n", "write", write);
-    std::printf("  splats %zu, triangles %zu\n", statistics.splats, statistics.triangles);
+    printFrameTime("write", write, frames, "encode and rename");
+    if (frames > 1) {
+        std::printf("  splats %zu, triangles %zu (all frames)\n", statistics.splats,
+                    statistics.triangles);
+    } else {
+        std::printf("  splats %zu, triangles %zu\n", statistics.splats, statistics.triangles);
+    }
 }
 
 // Progress of a ray cast on stderr: one updating line on a terminal; otherwise, once the render
@@ -93,34 +334,46 @@ private:
     int mLastPercent = -1;
 };
 
-// The reference image of --raycast: no GL context; the same camera, size and background as
+// The reference images of --raycast: no GL context; the same camera, size and background as
 // the GL render, so the two images compare pixel by pixel.
-void runRayCast(const RenderArguments& arguments, sg::Node& root, glm::ivec2 size,
-                image::ImageFormat format, const SetupTimes& setup) {
+void runRayCast(const RenderArguments& arguments, const Animation& animation, sg::Node& root,
+                glm::ivec2 size, image::ImageFormat format, const SetupTimes& setup) {
     sg::RayCastAction action(size.x, size.y);
     action.setBackground(format == image::ImageFormat::Png ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
                                                            : glm::vec4(0.0f));
     action.setStepSize(arguments.rayCastStep);
-    action.setProgress(RayCastProgress());
-    Clock::time_point start = Clock::now();
-    action.render(root);
-    const double integrate = secondsSince(start) + setup.frame;
-    const image::Image image = render::rayCastImage(action);
-    start = Clock::now();
-    image::writeImage(image, arguments.output);
-    const double write = secondsSince(start);
+    FrameClock clock(animation, root);
+    double integrate = setup.frame;
+    double write = 0.0;
+    for (int frame = 0; frame < animation.frames; ++frame) {
+        clock.moveTo(frame);
+        action.setProgress(RayCastProgress());
+        Clock::time_point start = Clock::now();
+        action.render(root);
+        integrate += secondsSince(start);
+        const image::Image image = render::rayCastImage(action);
+        start = Clock::now();
+        image::writeImage(image, animation.output.name(frame));
+        write += secondsSince(start);
+        clock.reportWritten(frame);
+    }
     if (arguments.timeReport) {
-        std::printf("time report (wall seconds):\n");
-        std::printf("  %-10s %9.4f  (scene file)\n", "read", setup.readScene);
-        std::printf("  %-10s %9.4f  (load, classify, integrate: ray cast, %u threads)\n",
-                    "ray cast", integrate, std::max(1u, std::thread::hardware_concurrency()));
-        std::printf("  %-10s %9.4f  (encode and rename)\n", "write", write);
+        printReportHeader(setup, animation);
+        printAnimateTime(clock, animation);
+        char note[80];
+        std::snprintf(note, sizeof note, "load, classify, integrate: ray cast, %u threads",
+                      std::max(1u, std::thread::hardware_concurrency()));
+        printFrameTime("ray cast", integrate, animation.frames, note);
+        printFrameTime("write", write, animation.frames, "encode and rename");
     }
 }
 
 void runRender(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
     // Refuse a bad output name or option before any work, so nothing is left half-done.
+    const Animation animation = parseAnimation(arguments);
+    // The extension of a pattern is the extension of every frame's name: a frame number has no
+    // letters, so a conversion inside the extension leaves no valid one either way.
     const image::ImageFormat format = image::supportedImageFormatOf(arguments.output);
     if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
         throw DataError("--raycast-step: only with --raycast");
@@ -137,7 +390,7 @@ void runRender(const RenderArguments& arguments) {
     setup.framed = root != scene;
 
     if (arguments.rayCast) {
-        runRayCast(arguments, *root, size, format, setup);
+        runRayCast(arguments, animation, *root, size, format, setup);
         return;
     }
     start = Clock::now();
@@ -148,15 +401,28 @@ void runRender(const RenderArguments& arguments) {
     // color > 0): composite over opaque black. EXR keeps the premultiplied layer with its alpha.
     action.setBackground(format == image::ImageFormat::Png ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
                                                            : glm::vec4(0.0f));
-    action.render(*root);
-    const image::Image image = render::renderedImage(
-        action, format == image::ImageFormat::Exr ? render::DepthReadback::With
-                                                  : render::DepthReadback::Without);
-    start = Clock::now();
-    image::writeImage(image, arguments.output);
-    const double write = secondsSince(start);
+    FrameClock clock(animation, *root);
+    sg::RenderStatistics total;
+    double write = 0.0;
+    for (int frame = 0; frame < animation.frames; ++frame) {
+        clock.moveTo(frame);
+        action.render(*root);
+        const image::Image image = render::renderedImage(
+            action, format == image::ImageFormat::Exr ? render::DepthReadback::With
+                                                      : render::DepthReadback::Without);
+        const sg::RenderStatistics& statistics = action.statistics();
+        for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
+            total.seconds[phase] += statistics.seconds[phase];
+        }
+        total.splats += statistics.splats;
+        total.triangles += statistics.triangles;
+        start = Clock::now();
+        image::writeImage(image, animation.output.name(frame));
+        write += secondsSince(start);
+        clock.reportWritten(frame);
+    }
     if (arguments.timeReport) {
-        printTimes(action.statistics(), setup, contextTime, context.info(), write);
+        printTimes(total, setup, contextTime, context.info(), write, clock, animation);
     }
 }
 
@@ -166,10 +432,12 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     auto arguments = std::make_shared<RenderArguments>();
     CLI::App* command = app.add_subcommand(
         "render", "Render a scene file (or the built-in tornado scene) to a PNG or OpenEXR image, "
-                  "headless");
+                  "or an animation to numbered images, headless");
     command->add_option("scene", arguments->scene,
                         "Inventor scene file (.iv); none: the built-in tornado with fibers");
-    command->add_option("-o,--output", arguments->output, "Output image: .png or .exr (float RGBA, Z)")
+    command->add_option("-o,--output", arguments->output,
+                        "Output image: .png or .exr (float RGBA, Z); with --frames a name with "
+                        "one frame number such as out%04d.png (%% for a '%')")
         ->required();
     command->add_option("--size", arguments->size, "Image size WxH")->capture_default_str();
     command->add_option("--camera", arguments->camera,
@@ -177,9 +445,18 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "(default perspective)");
     command->add_option("--direction", arguments->direction,
                         "x,y,z: viewing direction of that camera");
+    command->add_option("--frames", arguments->frames,
+                        "Render N frames of the scene's animation, frame k at scene time k/fps "
+                        "(engines such as ElapsedTime follow a simulated clock: every run gives "
+                        "the same images)")
+        ->type_name("N")
+        ->capture_default_str();
+    command->add_option("--fps", arguments->fps, "Frames per second of scene time for --frames")
+        ->type_name("F")
+        ->capture_default_str();
     command->add_flag("--time-report", arguments->timeReport,
                       "Print where the time went (read, context, load, classify, order, upload, "
-                      "draw, read back, write)");
+                      "draw, read back, write; with --frames the totals and the mean per frame)");
     command->add_flag("--raycast", arguments->rayCast,
                       "Render the reference with the CPU ray caster (exact emission-absorption of "
                       "the same reconstructed field, no GL context; progress on stderr)");

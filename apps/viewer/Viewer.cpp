@@ -12,11 +12,13 @@
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/engines/AnimationSpeed.h"
 #include "scenegraph/engines/TimeInputs.h"
 #include "scenegraph/sensors/IdleSensor.h"
 #include "scenegraph/sensors/NodeSensor.h"
 #include "scenegraph/sensors/RealTimeClock.h"
 #include "scenegraph/sensors/SensorQueue.h"
+#include "scenegraph/sensors/TimerSensor.h"
 
 #include <epoxy/gl.h>
 #define GLFW_INCLUDE_NONE
@@ -33,18 +35,30 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Mouse state between frames. The wheel and the button presses arrive through callbacks: a
-// frame may take longer than a whole gesture on a software rasterizer, and a drag then starts
-// where the button went down, not where the next frame finds the cursor.
+// Mouse and key state between frames. The wheel, the button presses and the pause key arrive
+// through callbacks: a frame may take longer than a whole gesture on a software rasterizer, and a
+// drag then starts where the button went down, not where the next frame finds the cursor; a
+// short key press between two frames must not be lost either.
 struct Pointer {
     glm::dvec2 last{0.0};
     bool wasDragging = false;
     double scroll = 0.0;
     std::optional<glm::dvec2> pressedAt;
+    int pauseToggles = 0; ///< space presses since the last frame
 };
+
+// How often the scene's time advances while engines follow it: a display's rate. The timer only
+// wakes the loop; the queue sets the time field at every processing.
+constexpr double kAnimationInterval = 1.0 / 60.0;
 
 void onScroll(GLFWwindow* window, double /*x*/, double y) {
     static_cast<Pointer*>(glfwGetWindowUserPointer(window))->scroll += y;
+}
+
+void onKey(GLFWwindow* window, int key, int /*scancode*/, int action, int /*mods*/) {
+    if (key == GLFW_KEY_SPACE && action == GLFW_PRESS) {
+        ++static_cast<Pointer*>(glfwGetWindowUserPointer(window))->pauseToggles;
+    }
 }
 
 void onMouseButton(GLFWwindow* window, int /*button*/, int action, int /*mods*/) {
@@ -87,6 +101,7 @@ void Viewer::run() {
     glfwSetWindowUserPointer(window.handle(), &pointer);
     glfwSetScrollCallback(window.handle(), onScroll); // before ImGui, which chains to them
     glfwSetMouseButtonCallback(window.handle(), onMouseButton);
+    glfwSetKeyCallback(window.handle(), onKey);
 
     sg::BoundingBoxAction boxAction;
     boxAction.apply(root);
@@ -95,7 +110,13 @@ void Viewer::run() {
 
     sg::RealTimeClock clock;
     sg::SensorQueue queue(clock);
-    sg::connectTimeInputs(root, queue.timeField());
+    const bool isAnimated = sg::connectTimeInputs(root, queue.timeField()) > 0;
+    // The paper's speed slider on the timer, and a pause: every ElapsedTime of the scene.
+    sg::AnimationSpeed animation(root);
+    // Without a timer the loop would sleep between events and the engines' time would advance
+    // only then; while the scene follows time and is not paused, it wakes the loop.
+    sg::TimerSensor animationTick(queue);
+    animationTick.setInterval(kAnimationInterval);
     bool needsRender = true;
     sg::NodeSensor changed(queue, [&] { needsRender = true; });
     changed.attach(root);
@@ -113,6 +134,14 @@ void Viewer::run() {
     for (int frame = 0; !window.shouldClose(); ++frame) {
         if (mOptions.frames > 0 && frame >= mOptions.frames) {
             break;
+        }
+        // The pause (key or panel) decides whether the time ticks; a paused viewer sleeps.
+        if (isAnimated && animation.isPaused() == animationTick.isScheduled()) {
+            if (animation.isPaused()) {
+                animationTick.unschedule();
+            } else {
+                animationTick.schedule();
+            }
         }
         const bool busy = needsRender || queue.hasDelaySensors() || queue.hasIdleSensors();
         if (mOptions.frames > 0 || busy) {
@@ -132,6 +161,10 @@ void Viewer::run() {
         if (glfwGetKey(handle, GLFW_KEY_R) == GLFW_PRESS) {
             controller.reset();
         }
+        if (pointer.pauseToggles % 2 == 1 && !animation.isEmpty() && !panel.wantsKeyboard()) {
+            animation.setPaused(!animation.isPaused());
+        }
+        pointer.pauseToggles = 0;
         glm::dvec2 cursor(0.0);
         glfwGetCursorPos(handle, &cursor.x, &cursor.y);
         const bool orbiting = glfwGetMouseButton(handle, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
@@ -193,7 +226,7 @@ void Viewer::run() {
         report.stage = refinement.stage();
         report.budget = refinement.budget();
         presenter.present(action->framebuffer(), mOptions.background, size);
-        panel.draw(report, refinement);
+        panel.draw(report, refinement, animation);
         window.swapBuffers();
     }
 

@@ -46,7 +46,10 @@ bool ViewerPanel::isAvailable() { return true; }
 
 bool ViewerPanel::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
 
-void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinement) {
+bool ViewerPanel::wantsKeyboard() const { return ImGui::GetIO().WantTextInput; }
+
+void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinement,
+                       sg::AnimationSpeed& animation) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -67,7 +70,25 @@ void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinem
             refinement.setInteractiveBudget(budget);
         }
     }
-    ImGui::TextUnformatted("drag: orbit  right/middle drag: pan  wheel: zoom  r: reset  q: quit");
+    if (!animation.isEmpty()) {
+        // Crawfis & Max's "Slider ... attached to the Timer": a factor on every ElapsedTime's
+        // own speed, so engines keep their relative rates.
+        bool paused = animation.isPaused();
+        if (ImGui::Checkbox("pause", &paused)) {
+            animation.setPaused(paused);
+        }
+        ImGui::SameLine();
+        float factor = animation.factor();
+        if (ImGui::SliderFloat("animation speed", &factor, 0.1f, 10.0f, "%.2fx",
+                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+            animation.setFactor(factor);
+        }
+    }
+    ImGui::TextUnformatted(animation.isEmpty()
+                               ? "drag: orbit  right/middle drag: pan  wheel: zoom  r: reset  "
+                                 "q: quit"
+                               : "drag: orbit  right/middle drag: pan  wheel: zoom  r: reset  "
+                                 "space: pause  q: quit");
     ImGui::End();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
@@ -79,7 +100,8 @@ ViewerPanel::ViewerPanel(GLFWwindow* window) : mWindow(window) {}
 ViewerPanel::~ViewerPanel() = default;
 bool ViewerPanel::isAvailable() { return false; }
 bool ViewerPanel::wantsMouse() const { return false; }
-void ViewerPanel::draw(const PanelReport&, ProgressiveRefinement&) {}
+bool ViewerPanel::wantsKeyboard() const { return false; }
+void ViewerPanel::draw(const PanelReport&, ProgressiveRefinement&, sg::AnimationSpeed&) {}
 
 #endif
 

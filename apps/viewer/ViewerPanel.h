@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apps/viewer/ProgressiveRefinement.h"
+#include "scenegraph/engines/AnimationSpeed.h"
 
 #include <cstddef>
 #include <string>
@@ -19,8 +20,9 @@ struct PanelReport {
     std::int32_t budget = 0; ///< splat budget in force (0: the scene's own settings)
 };
 
-/// @brief The viewer's ImGui overlay: the last frame's statistics, the refinement state and a
-/// slider for the interactive splat budget. Built only when the ImGui GLFW and OpenGL 3
+/// @brief The viewer's ImGui overlay: the last frame's statistics, the refinement state, a
+/// slider for the interactive splat budget and, for a scene with ElapsedTime engines, the
+/// animation's pause and speed. Built only when the ImGui GLFW and OpenGL 3
 /// backends are available (Debian ships them as sources with libimgui-dev); otherwise every
 /// call does nothing and the viewer runs without a panel.
 class ViewerPanel {
@@ -39,8 +41,13 @@ public:
     /// @brief True while the pointer is over the panel (the view must not take the drag).
     bool wantsMouse() const;
 
-    /// @brief Draws the panel over the frame; may change the refinement's interactive budget.
-    void draw(const PanelReport& report, ProgressiveRefinement& refinement);
+    /// @brief True while the panel takes typed keys (a slider's text entry: ctrl+click).
+    bool wantsKeyboard() const;
+
+    /// @brief Draws the panel over the frame; may change the refinement's interactive budget
+    /// and the animation's pause and speed factor (hidden when it controls no engine).
+    void draw(const PanelReport& report, ProgressiveRefinement& refinement,
+              sg::AnimationSpeed& animation);
 
 private:
     GLFWwindow* mWindow;

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -175,6 +176,165 @@ TEST_F(RenderCommandTest, reportsBadInputsAndWritesNothing) {
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_NE(missing.standardError.find(path("missing.iv")), std::string::npos);
     EXPECT_FALSE(fs::exists(png));
+}
+
+// A blob whose emission grows with the scene's time: every frame of an animation differs.
+// Speed 2, a power of two, keeps the engine exact: the queue's float times differ exactly in
+// double, and doubling them rounds nothing, so the emission at a time does not depend on the
+// steps that led there.
+const std::string kGlowingBlob = "#Inventor V2.1 ascii\nSeparator {\n"
+                                 "TransferFunction { preset HOT range 0 1.2 opacities [ 0, 4 ] "
+                                 "opacityValues [ 0, 1 ]\n"
+                                 "  emission = ElapsedTime { speed 2 } . timeOut }\n"
+                                 "VolumeData { source BLOB resolution 12 12 12 }\n"
+                                 "TextureSplat { }\n}\n";
+
+TEST_F(RenderCommandTest, framesFollowASimulatedClockAndEveryRunWritesTheSameBytes) {
+    const std::string scene = write("glowing.iv", kGlowingBlob);
+    const std::string options = " --size 24x24 --frames 4 --fps 2";
+    const auto first = runTexsplat("render " + scene + options + " -o " + path("a%02d.png"));
+    ASSERT_EQ(first.exitCode, 0) << first.standardError;
+    EXPECT_EQ(first.standardOutput, "");
+    EXPECT_EQ(first.standardError, "frame 1/4 (t = 0 s): " + path("a00.png") + "\n" +
+                                       "frame 2/4 (t = 0.5 s): " + path("a01.png") + "\n" +
+                                       "frame 3/4 (t = 1 s): " + path("a02.png") + "\n" +
+                                       "frame 4/4 (t = 1.5 s): " + path("a03.png") + "\n");
+    EXPECT_FALSE(fs::exists(path("a04.png")));
+    const auto second = runTexsplat("render " + scene + options + " -o " + path("b%02d.png"));
+    ASSERT_EQ(second.exitCode, 0) << second.standardError;
+    double lastMean = -1.0;
+    for (int frame = 0; frame < 4; ++frame) {
+        const std::string name = "0" + std::to_string(frame) + ".png";
+        const std::string bytes = read(path("a" + name));
+        ASSERT_FALSE(bytes.empty()) << name;
+        EXPECT_EQ(bytes, read(path("b" + name))) << "frame " << frame << " differs between runs";
+        // The emission grows with time: each frame is brighter than the one before.
+        const double mean = texsplat::image::readImage(path("a" + name)).statistics().mean.r;
+        EXPECT_GT(mean, lastMean + 0.01) << "frame " << frame;
+        lastMean = mean;
+    }
+    // Frame 0 is the scene at time 0: what a plain render (no --frames) draws.
+    const std::string still = path("still.png");
+    ASSERT_EQ(runTexsplat("render " + scene + " --size 24x24 -o " + still).exitCode, 0);
+    EXPECT_EQ(read(still), read(path("a00.png")));
+}
+
+// No engine of the core cycles yet (ElapsedTime only counts), so no scene repeats a frame after
+// a period. What makes a periodic animation repeat is that a frame is a function of its scene
+// time alone, not of the frames rendered before it; that is checked here: frame k at 2 fps and
+// frame 2k at 4 fps show the same time k/2 after different histories, and are the same bytes.
+TEST_F(RenderCommandTest, aFrameDependsOnlyOnItsSceneTime) {
+    const std::string scene = write("glowing.iv", kGlowingBlob);
+    ASSERT_EQ(runTexsplat("render " + scene + " --size 24x24 --frames 3 --fps 2 -o " +
+                          path("slow%d.png"))
+                  .exitCode,
+              0);
+    ASSERT_EQ(runTexsplat("render " + scene + " --size 24x24 --frames 5 --fps 4 -o " +
+                          path("fast%d.png"))
+                  .exitCode,
+              0);
+    for (int frame = 0; frame < 3; ++frame) {
+        const std::string slow = read(path("slow" + std::to_string(frame) + ".png"));
+        ASSERT_FALSE(slow.empty());
+        EXPECT_EQ(slow, read(path("fast" + std::to_string(2 * frame) + ".png"))) << frame;
+    }
+    EXPECT_NE(read(path("fast1.png")), read(path("fast2.png")));
+}
+
+TEST_F(RenderCommandTest, timeReportOfFramesGivesTotalsAndTheMeanPerFrame) {
+    const auto result = runTexsplat("render " + write("glowing.iv", kGlowingBlob) +
+                                    " --size 16x16 --frames 2 -o " + path("f%d.png") +
+                                    " --time-report");
+    ASSERT_EQ(result.exitCode, 0) << result.standardError;
+    const std::string& report = result.standardOutput;
+    EXPECT_EQ(report.rfind("time report (wall seconds; 2 frames: totals over the frames, then "
+                           "the mean per frame):\n",
+                           0),
+              0u)
+        << report;
+    for (const char* phase : {"animate", "load", "draw", "write"}) {
+        const std::size_t line = report.find(std::string("  ") + phase + " ");
+        ASSERT_NE(line, std::string::npos) << phase;
+        double total = -1.0;
+        double mean = -1.0;
+        ASSERT_EQ(std::sscanf(report.c_str() + line + 2 + std::strlen(phase), "%lf %lf per frame",
+                              &total, &mean),
+                  2)
+            << report;
+        EXPECT_NEAR(mean, total / 2, 1e-4) << phase;
+    }
+    EXPECT_NE(report.find("(all frames)"), std::string::npos);
+    // A 24 fps default: the second frame is at 1/24 s.
+    EXPECT_NE(result.standardError.find("frame 2/2 (t = 0.0416667 s): " + path("f1.png")),
+              std::string::npos)
+        << result.standardError;
+}
+
+TEST_F(RenderCommandTest, raycastRendersFramesToo) {
+    const auto result = runTexsplat("render " + write("glowing.iv", kGlowingBlob) +
+                                    " --size 8x8 --raycast --frames 2 --fps 1 -o " +
+                                    path("ray%d.png"));
+    ASSERT_EQ(result.exitCode, 0) << result.standardError;
+    const std::string first = read(path("ray0.png"));
+    ASSERT_FALSE(first.empty());
+    EXPECT_NE(first, read(path("ray1.png")));
+}
+
+TEST_F(RenderCommandTest, aSingleImageNameIsAPatternOnlyWhenItHoldsOneFrameNumber) {
+    const std::string scene = writeScene();
+    // A frame pattern without --frames writes frame 0; any other name is used as it is.
+    ASSERT_EQ(runTexsplat("render " + scene + " --size 8x8 -o " + path("one%03d.png")).exitCode,
+              0);
+    EXPECT_TRUE(fs::exists(path("one000.png")));
+    ASSERT_EQ(runTexsplat("render " + scene + " --size 8x8 -o " + path("50%.png")).exitCode, 0);
+    EXPECT_TRUE(fs::exists(path("50%.png")));
+    ASSERT_EQ(runTexsplat("render " + scene + " --size 8x8 -o " + path("%%%-3d.png")).exitCode,
+              0);
+    EXPECT_TRUE(fs::exists(path("%0  .png")));
+}
+
+TEST_F(RenderCommandTest, reportsBadFrameOptionsBeforeAnyWork) {
+    const std::string scene = writeScene();
+    const std::string pattern = path("out%04d.png");
+    const std::string first = path("out0000.png");
+    const std::string png = path("out.png");
+    expectError(scene + " --frames 3 -o " + png,
+                "--frames 3 needs an output name with one %d-style frame number (e.g. "
+                "out%04d.png), got '" +
+                    png + "'",
+                png);
+    for (const char* frames : {"0", "-1", "x", "2.5", "1000001", "''"}) {
+        expectError(scene + " --frames " + frames + " -o " + pattern,
+                    std::string("--frames: expected a whole number from 1 to 1000000, got '") +
+                        (std::string(frames) == "''" ? "" : frames) + "'",
+                    first);
+    }
+    for (const char* fps : {"0", "-24", "nan", "inf", "24fps", "''"}) {
+        expectError(scene + " --frames 2 --fps " + fps + " -o " + pattern,
+                    std::string("--fps: expected a finite number of frames per second > 0, got '") +
+                        (std::string(fps) == "''" ? "" : fps) + "'",
+                    first);
+    }
+    expectError(scene + " --frames 3 --fps 1e-300 -o " + pattern,
+                "--fps: at 1e-300 frames per second frame 2 would be at 2e+300 s, beyond the "
+                "scene's time (a float)",
+                first);
+    for (const char* conversion : {"%s", "%.3d", "%ld", "%100d", "%+d", "%x"}) {
+        const std::string name = path(std::string("out") + conversion + ".png");
+        expectError(scene + " --frames 2 -o '" + name + "'",
+                    "--output: '" + std::string(conversion) + "' in '" + name +
+                        "' is not a frame number; use %d, %04d (4 digits, zero-padded) or %% "
+                        "for a '%'",
+                    first);
+    }
+    const std::string twice = path("out%d_%d.png");
+    expectError(scene + " --frames 2 -o " + twice,
+                "--output: '" + twice + "' has 2 %d-style numbers; a frame name needs exactly one",
+                path("out0_0.png"));
+    const std::string tif = path("out%04d.tif");
+    expectError(scene + " --frames 2 -o " + tif,
+                tif + ": unknown image extension '.tif' (supported: .png, .exr)",
+                path("out0000.tif"));
 }
 
 } // namespace
