@@ -83,6 +83,14 @@ void runBench(const BenchArguments& arguments) {
     options.sizes = parseSizes(arguments.sizes);
     options.methods =
         withOption("--method", [&] { return bench::BenchMethod::parseList(arguments.methods); });
+    for (const bench::BenchMethod& method : options.methods) {
+        for (const bench::BenchDataset& dataset : options.datasets) {
+            if (method.needsVectors() && dataset.source() != bench::BenchDataset::Source::Tornado) {
+                throw Error("--method: " + method.name() + " draws vectors, but dataset " +
+                            dataset.name() + " is scalar (use tornado<N>)");
+            }
+        }
+    }
     options.repeat = arguments.repeat;
     options.warmup = arguments.warmup;
     options.threads = arguments.threads;
@@ -135,8 +143,9 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
         ->capture_default_str();
     command
         ->add_option("--method", arguments->methods,
-                     "Comma-separated methods: texture, texture-gaussian, polygon; @FRACTION "
-                     "draws the octree cut of that fraction of the splats")
+                     "Comma-separated methods: texture, texture-gaussian, polygon, vector and "
+                     "combined (tornado datasets only); @FRACTION draws the octree cut of that "
+                     "fraction of the splats")
         ->capture_default_str();
     command->add_option("--repeat", arguments->repeat, "Timed frames per method (median)")
         ->check(CLI::Range(1, 1000))

@@ -1,7 +1,9 @@
 #include "nodes/bench/BenchMethod.h"
 
+#include "nodes/CombinedSplat.h"
 #include "nodes/GaussianSplat.h"
 #include "nodes/TextureSplat.h"
+#include "nodes/VectorSplat.h"
 #include "scenegraph/Error.h"
 
 #include <algorithm>
@@ -20,12 +22,14 @@ struct KindName {
 
 constexpr KindName kKindNames[] = {{"texture", BenchMethod::Kind::TexturePaper},
                                    {"texture-gaussian", BenchMethod::Kind::TextureGaussian},
-                                   {"polygon", BenchMethod::Kind::PolygonGaussian}};
+                                   {"polygon", BenchMethod::Kind::PolygonGaussian},
+                                   {"vector", BenchMethod::Kind::Vector},
+                                   {"combined", BenchMethod::Kind::Combined}};
 
 [[noreturn]] void unknownMethod(const std::string& name) {
     throw DataError("unknown method '" + name +
-                    "' (expected texture, texture-gaussian or polygon, optionally with @FRACTION, "
-                    "e.g. texture@0.1)");
+                    "' (expected texture, texture-gaussian, polygon, vector or combined, optionally "
+                    "with @FRACTION, e.g. texture@0.1)");
 }
 
 } // namespace
@@ -84,6 +88,10 @@ sg::Node::Ptr BenchMethod::makeNode(std::size_t fullSplats) const {
     nodes::ScalarSplat::Ptr node;
     if (kind == Kind::PolygonGaussian) {
         node = nodes::GaussianSplat::create();
+    } else if (kind == Kind::Vector) {
+        node = nodes::VectorSplat::create();
+    } else if (kind == Kind::Combined) {
+        node = nodes::CombinedSplat::create();
     } else {
         nodes::TextureSplat::Ptr texture = nodes::TextureSplat::create();
         texture->kernel.setValue(kind == Kind::TextureGaussian ? nodes::SplatKernel::Gaussian

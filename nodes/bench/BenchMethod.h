@@ -16,6 +16,8 @@ struct BenchMethod {
         TexturePaper,    ///< TextureSplat, the paper's kernel (Crawfis & Max 1993, figure 4b)
         TextureGaussian, ///< TextureSplat with its Gaussian kernel
         PolygonGaussian, ///< GaussianSplat: 3 x 7 Gouraud-shaded polygon (figure 4a)
+        Vector,          ///< VectorSplat: marks of the vector table (figure 5), vector data only
+        Combined,        ///< CombinedSplat: texture splats with marks (figure 7), vector data only
     };
 
     Kind kind = Kind::TexturePaper;
@@ -23,10 +25,11 @@ struct BenchMethod {
     /// maxSplats); 0: every non-empty voxel (no octree).
     double budget = 0.0;
 
-    /// @brief The method called `name`: `texture`, `texture-gaussian`, `polygon`, each
-    /// optionally followed by `@FRACTION` (an octree budget in (0, 1), e.g. `texture@0.1`).
-    /// @throws DataError "unknown method 'x' (expected texture, texture-gaussian or polygon,
-    /// optionally with @FRACTION, e.g. texture@0.1)".
+    /// @brief The method called `name`: `texture`, `texture-gaussian`, `polygon`, `vector`,
+    /// `combined`, each optionally followed by `@FRACTION` (an octree budget in (0, 1), e.g.
+    /// `texture@0.1`).
+    /// @throws DataError "unknown method 'x' (expected texture, texture-gaussian, polygon,
+    /// vector or combined, optionally with @FRACTION, e.g. texture@0.1)".
     static BenchMethod fromName(const std::string& name);
 
     /// @brief Methods from a comma-separated list of names.
@@ -39,6 +42,9 @@ struct BenchMethod {
     /// @brief Whether this is the full-quality reference among the methods (texture, paper
     /// kernel, full resolution).
     bool isFullQuality() const { return kind == Kind::TexturePaper && budget == 0.0; }
+
+    /// @brief Whether the method draws a vector field (vector, combined).
+    bool needsVectors() const { return kind == Kind::Vector || kind == Kind::Combined; }
 
     /// @brief A new splat node drawing this way, for a volume whose full-resolution list has
     /// `fullSplats` splats (the budget is a fraction of it; at least 1 splat).

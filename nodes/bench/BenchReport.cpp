@@ -115,22 +115,22 @@ std::string benchTable(const std::vector<BenchResult>& results) {
     std::string text;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "%-11s %-9s %-18s %9s %11s %11s %9s %9s %9s %7s %7s %10s %8s %10s %8s\n",
+                  "%-11s %-9s %-18s %9s %11s %11s %9s %9s %9s %7s %7s %10s %8s %10s %8s %9s\n",
                   "dataset", "size", "method", "splats", "fragments", "ceil frags", "frame ms",
                   "draw ms", "ceil ms", "frame/c", "draw/c", "ref RMSE", "ref PSNR",
-                  "full RMSE", "full PSNR");
+                  "full RMSE", "full PSNR", "frame/tex");
     text += line;
     for (const BenchResult& r : results) {
         std::snprintf(line, sizeof line,
                       "%-11s %-9s %-18s %9zu %11llu %11llu %9.2f %9.2f %9.2f %7.3f %7.3f %10s "
-                      "%8s %10s %8s\n",
+                      "%8s %10s %8s %9s\n",
                       r.dataset.c_str(), sizeText(r).c_str(), r.method.c_str(), r.splats,
                       static_cast<unsigned long long>(r.fragments),
                       static_cast<unsigned long long>(r.ceilingFragments), 1e3 * r.frameSeconds,
                       1e3 * r.drawSeconds(), 1e3 * r.ceilingSeconds, r.frameRatio,
                       r.drawRatio, cell("%.3e", r.referenceRmse).c_str(),
                       cell("%.2f", r.referencePsnr).c_str(), cell("%.3e", r.fullRmse).c_str(),
-                      cell("%.2f", r.fullPsnr).c_str());
+                      cell("%.2f", r.fullPsnr).c_str(), cell("%.3f", r.fullFrameRatio).c_str());
         text += line;
     }
     return text;
@@ -140,7 +140,7 @@ std::string benchCsv(const std::vector<BenchResult>& results) {
     std::string text = "dataset,width,height,method,full_quality,splats,fragments,"
                        "ceiling_fragments,frame_ms,load_ms,classify_ms,order_ms,upload_ms,"
                        "draw_ms,read_back_ms,ceiling_ms,frame_ratio,draw_ratio,reference_rmse,"
-                       "reference_psnr,full_rmse,full_psnr\n";
+                       "reference_psnr,full_rmse,full_psnr,full_frame_ratio\n";
     for (const BenchResult& r : results) {
         text += r.dataset + "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," +
                 r.method + "," + (r.isFullQuality ? "1" : "0") + "," + std::to_string(r.splats) +
@@ -154,7 +154,7 @@ std::string benchCsv(const std::vector<BenchResult>& results) {
         text += "," + csvNumber(1e3 * r.ceilingSeconds) + "," + csvNumber(r.frameRatio) + "," +
                 csvNumber(r.drawRatio) + "," + csvNumber(r.referenceRmse) + "," +
                 csvNumber(r.referencePsnr) + "," + csvNumber(r.fullRmse) + "," +
-                csvNumber(r.fullPsnr) + "\n";
+                csvNumber(r.fullPsnr) + "," + csvNumber(r.fullFrameRatio) + "\n";
     }
     return text;
 }

@@ -47,6 +47,10 @@ struct BenchResult {
     /// Draw time (RenderPhase::Draw) over the ceiling's time, paired the same way: the overhead
     /// of the splat shading alone.
     double drawRatio = std::numeric_limits<double>::quiet_NaN();
+    /// Frame time over the full-quality texture splats' frame time in the same run (NaN when
+    /// the run has no full-quality method): what a method costs against the paper's texture
+    /// splats, e.g. vector splats (the paper paid +50 %).
+    double fullFrameRatio = std::numeric_limits<double>::quiet_NaN();
 };
 
 } // namespace texsplat::bench

@@ -4,6 +4,7 @@
 #include "nodes/NodeTypes.h"
 #include "nodes/ScalarSplat.h"
 #include "nodes/TransferFunction.h"
+#include "nodes/VectorMarkSplat.h"
 #include "nodes/VolumeData.h"
 #include "nodes/bench/FillRateCeiling.h"
 #include "nodes/bench/detail/SamplesPassed.h"
@@ -161,8 +162,10 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
         const auto& splatNode = static_cast<const nodes::ScalarSplat&>(*node);
         root->replaceChild(3, node);
 
-        // The ceiling draws the very list this method draws (the full list, or its octree cut).
-        const float extent = splatNode.size.value();
+        // The ceiling draws the very list this method draws (the full list, or its octree cut),
+        // with quads as large as the method's (vector marks reach past the scalar splat).
+        const auto* marks = dynamic_cast<const nodes::VectorMarkSplat*>(node.get());
+        const float extent = splatNode.size.value() * (marks ? marks->windowScale.value() : 1.0f);
         octree::SplatList cutList;
         if (method.budget > 0.0) {
             emitFor(source, static_cast<std::size_t>(splatNode.maxSplats.value()), cutList);
@@ -234,6 +237,10 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
         for (std::size_t i = 0; i < images.size(); ++i) {
             BenchResult& result = results[first + i];
             compare(fullImage, images[i], result.fullRmse, result.fullPsnr);
+            result.fullFrameRatio =
+                result.frameSeconds /
+                results[first + static_cast<std::size_t>(full - mOptions.methods.begin())]
+                    .frameSeconds;
         }
     }
 }

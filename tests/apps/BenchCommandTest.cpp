@@ -39,7 +39,7 @@ TEST_F(BenchCommandTest, printsTheTableAndWritesCsvAndPlot) {
     const std::string& text = output.standardOutput;
     EXPECT_NE(text.find("dataset     size      method                splats   fragments  "
                         "ceil frags  frame ms   draw ms   ceil ms frame/c  draw/c   ref RMSE "
-                        "ref PSNR  full RMSE full PSNR\n"),
+                        "ref PSNR  full RMSE full PSNR frame/tex\n"),
               std::string::npos)
         << text;
     EXPECT_NE(text.find("ml8         32x24     texture "), std::string::npos) << text;
@@ -50,12 +50,12 @@ TEST_F(BenchCommandTest, printsTheTableAndWritesCsvAndPlot) {
     EXPECT_EQ(lines[0], "dataset,width,height,method,full_quality,splats,fragments,"
                         "ceiling_fragments,frame_ms,load_ms,classify_ms,order_ms,upload_ms,"
                         "draw_ms,read_back_ms,ceiling_ms,frame_ratio,draw_ratio,reference_rmse,"
-                        "reference_psnr,full_rmse,full_psnr");
+                        "reference_psnr,full_rmse,full_psnr,full_frame_ratio");
     const std::vector<std::string> methods = {"texture", "texture-gaussian", "polygon",
                                               "texture@0.5"};
     for (std::size_t row = 1; row < lines.size(); ++row) {
         const std::vector<std::string> fields = split(lines[row], ',');
-        ASSERT_EQ(fields.size(), 22u) << lines[row];
+        ASSERT_EQ(fields.size(), 23u) << lines[row];
         EXPECT_EQ(fields[0], "ml8");
         EXPECT_EQ(fields[1], "32");
         EXPECT_EQ(fields[2], "24");
@@ -87,6 +87,25 @@ TEST_F(BenchCommandTest, printsTheTableAndWritesCsvAndPlot) {
     EXPECT_NE(svg.find("</svg>"), std::string::npos);
 }
 
+TEST_F(BenchCommandTest, timesVectorAndCombinedSplatsAgainstTextureSplatsInTheSameRun) {
+    const auto output = runTexsplat("bench --dataset tornado10 --size 32x32 --repeat 1 "
+                                    "--method texture,vector,combined --no-reference --csv " +
+                                    path("bench.csv"));
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
+    ASSERT_EQ(lines.size(), 4u);
+    const std::vector<std::string> texture = split(lines[1], ',');
+    EXPECT_EQ(texture[22], "1") << "the full-quality method against itself";
+    for (const std::size_t row : {2u, 3u}) {
+        const std::vector<std::string> fields = split(lines[row], ',');
+        EXPECT_EQ(fields[3], row == 2 ? "vector" : "combined");
+        EXPECT_GT(std::stoull(fields[5]), 0u) << "splats";
+        const double ratio = std::stod(fields[22]);
+        EXPECT_TRUE(std::isfinite(ratio) && ratio > 0.0) << lines[row];
+        EXPECT_GT(std::stod(fields[20]), 0.0) << "marks change the image";
+    }
+}
+
 TEST_F(BenchCommandTest, skipsTheReferenceWhenAsked) {
     const auto output = runTexsplat("bench --dataset blob6 --size 16x16 --repeat 1 "
                                     "--method texture,polygon --no-reference --csv " +
@@ -96,7 +115,7 @@ TEST_F(BenchCommandTest, skipsTheReferenceWhenAsked) {
     const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
     ASSERT_EQ(lines.size(), 3u);
     const std::vector<std::string> fields = split(lines[2], ',');
-    ASSERT_EQ(fields.size(), 22u) << lines[2];
+    ASSERT_EQ(fields.size(), 23u) << lines[2];
     EXPECT_EQ(fields[18], "") << "no reference RMSE";
     EXPECT_EQ(fields[19], "") << "no reference PSNR";
     EXPECT_GT(std::stod(fields[20]), 0.0) << "the polygon against the texture splats";
@@ -113,7 +132,12 @@ TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError,
               "texsplat: error: --method: unknown method 'texture@1.5' (expected texture, "
-              "texture-gaussian or polygon, optionally with @FRACTION, e.g. texture@0.1)\n");
+              "texture-gaussian, polygon, vector or combined, optionally with @FRACTION, e.g. "
+              "texture@0.1)\n");
+    output = runTexsplat("bench --dataset tornado8,ml8 --method texture,vector");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError, "texsplat: error: --method: vector draws vectors, but "
+                                    "dataset ml8 is scalar (use tornado<N>)\n");
     output = runTexsplat("bench --dataset ml8 --size 16by16");
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError, "texsplat: error: --size: expected WxH with whole numbers "
