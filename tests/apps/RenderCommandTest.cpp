@@ -219,10 +219,9 @@ TEST_F(RenderCommandTest, framesFollowASimulatedClockAndEveryRunWritesTheSameByt
     EXPECT_EQ(read(still), read(path("a00.png")));
 }
 
-// No engine of the core cycles yet (ElapsedTime only counts), so no scene repeats a frame after
-// a period. What makes a periodic animation repeat is that a frame is a function of its scene
-// time alone, not of the frames rendered before it; that is checked here: frame k at 2 fps and
-// frame 2k at 4 fps show the same time k/2 after different histories, and are the same bytes.
+// What makes a periodic animation repeat is that a frame is a function of its scene time alone,
+// not of the frames rendered before it; that is checked here: frame k at 2 fps and frame 2k at
+// 4 fps show the same time k/2 after different histories, and are the same bytes.
 TEST_F(RenderCommandTest, aFrameDependsOnlyOnItsSceneTime) {
     const std::string scene = write("glowing.iv", kGlowingBlob);
     ASSERT_EQ(runTexsplat("render " + scene + " --size 24x24 --frames 3 --fps 2 -o " +
@@ -239,6 +238,26 @@ TEST_F(RenderCommandTest, aFrameDependsOnlyOnItsSceneTime) {
         EXPECT_EQ(slow, read(path("fast" + std::to_string(2 * frame) + ".png"))) << frame;
     }
     EXPECT_NE(read(path("fast1.png")), read(path("fast2.png")));
+}
+
+// Vector splats cycle through the rows of their table: with ElapsedTime speed 0.5 the phase
+// (in cycles) repeats every 2 s, 8 frames at 4 fps, and so does the image, bit for bit.
+TEST_F(RenderCommandTest, anAnimationWhosePhasePeriodIsPFramesRepeatsAfterPFrames) {
+    const std::string scene = write(
+        "flow.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                   "TransferFunction { range 0 0.32 opacities [ 0, 60 ] }\n"
+                   "VolumeData { source TORNADO resolution 10 10 10 }\n"
+                   "VectorSplat { phase = ElapsedTime { speed 0.5 } . timeOut }\n}\n");
+    ASSERT_EQ(runTexsplat("render " + scene + " --size 32x32 --frames 10 --fps 4 -o " +
+                          path("flow%d.png"))
+                  .exitCode,
+              0);
+    EXPECT_EQ(read(path("flow0.png")), read(path("flow8.png")));
+    EXPECT_EQ(read(path("flow1.png")), read(path("flow9.png")));
+    for (int frame = 1; frame < 8; ++frame) {
+        EXPECT_NE(read(path("flow0.png")), read(path("flow" + std::to_string(frame) + ".png")))
+            << "frame " << frame << " of the period";
+    }
 }
 
 TEST_F(RenderCommandTest, timeReportOfFramesGivesTotalsAndTheMeanPerFrame) {

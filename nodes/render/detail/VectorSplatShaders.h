@@ -31,6 +31,7 @@ uniform float stretch;
 uniform int rowShift;          // the animation phase, in rows
 uniform int rows;
 uniform int columns;
+uniform bool combined;
 
 out vec2 tableCoord;
 out vec2 footprintCoord;
@@ -38,6 +39,7 @@ out float lengthScale;
 flat out vec4 medium;
 flat out float layer;
 flat out int hasMarks;
+flat out float polygonAlpha; // vector splats: the opacity A of one voxel's depth of the medium
 
 void main() {
     vec3 centre = positionSize.xyz;
@@ -69,6 +71,10 @@ void main() {
             hasMarks = 1;
         }
     }
+    if (hasMarks == 0 && !combined) {
+        gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // no marks, nothing to draw: no fragments
+        return;
+    }
     vec3 v = cross(axis, u);
     float halfWidth = extent * size;
     vec3 offset = (corner.x * (hasMarks == 1 ? stretch : 1.0) * u + corner.y * v) * halfWidth;
@@ -80,6 +86,7 @@ void main() {
     footprintCoord = scalarOffset / footprintExtent * 0.5 + 0.5;
     lengthScale = size / eLength;
     medium = colorExtinction;
+    polygonAlpha = shadeSplat(vec3(0.0), colorExtinction.a, lengthScale).a;
     int row = (int(rowColumn.x) + rowShift) % rows;
     layer = float(row * columns + int(min(rowColumn.y, uint(columns - 1))));
 }
@@ -101,6 +108,7 @@ in float lengthScale;
 flat in vec4 medium;
 flat in float layer;
 flat in int hasMarks;
+flat in float polygonAlpha;
 
 uniform sampler2DArray marks;
 uniform sampler2D footprint;
@@ -122,7 +130,6 @@ void main() {
                           : vec4(scalar.rgb * (1.0 - contrast + intensity), scalar.a);
         return;
     }
-    float polygonAlpha = shadeSplat(vec3(0.0), medium.a, lengthScale).a;
     float alpha = polygonAlpha * table.g;
     vec3 color = blend ? medium.rgb * (1.0 - table.r) + blendColor * table.r
                        : medium.rgb * table.r;
