@@ -18,13 +18,22 @@
 namespace texsplat::render {
 namespace {
 
-// The shading function first (both stages call it), then the stage.
-std::string stageSource(const char* stage) { return std::string(detail::kSplatShading) + stage; }
+// The shading function first (both stages call it; it opens with the #version line), then
+// `defines`, then the stage.
+std::string stageSource(const char* stage, const char* defines = "") {
+    return std::string(detail::kSplatShading) + defines + stage;
+}
 
 gl::Program makeProgram(SplatShape shape) {
-    if (shape == SplatShape::VectorSquare || shape == SplatShape::CombinedSquare) {
+    if (shape == SplatShape::VectorSquare) {
         return gl::Program("vector splat", stageSource(detail::kVectorSplatVertexShader),
                            stageSource(detail::kVectorSplatFragmentShader));
+    }
+    if (shape == SplatShape::CombinedSquare) {
+        const char* combined = "#define COMBINED 1\n";
+        return gl::Program("combined splat",
+                           stageSource(detail::kVectorSplatVertexShader, combined),
+                           stageSource(detail::kVectorSplatFragmentShader, combined));
     }
     return gl::Program("splat", stageSource(detail::kSplatVertexShader),
                        stageSource(detail::kSplatFragmentShader));
@@ -85,7 +94,7 @@ SplatBatch SplatBatch::markSquares(SplatShape shape, const kernel::VectorSplatTa
     batch.mRows = table.rows();
     batch.mColumns = table.columns();
     batch.mTable.emplace(table.resolution(), table.resolution(), table.rows() * table.columns(),
-                         gl::TextureFormat::RG32F, bilinearClamped());
+                         gl::TextureFormat::RG8, bilinearClamped());
     batch.mTable->setData(table.texels());
     batch.mVectors.emplace();
     batch.mVectors->setData(std::vector<octree::SplatVector>(1), gl::BufferUsage::DynamicDraw);
@@ -192,16 +201,14 @@ void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks, std::size
         mProgram.setUniform("rowShift", ((marks.rowShift % mRows) + mRows) % mRows);
         mProgram.setUniform("rows", mRows);
         mProgram.setUniform("columns", mColumns);
-        mProgram.setUniform("combined", mShape == SplatShape::CombinedSquare ? 1 : 0);
         mProgram.setUniform("blend", marks.textureOperator == MarkOperator::Blend ? 1 : 0);
         mProgram.setUniform("blendColor", marks.blendColor);
-        mProgram.setUniform("contrast", marks.contrast);
         mTable->bind(0);
         mProgram.setUniform("marks", 0);
-        // Two sampler types must not share a unit, bound or not (the draw would fail).
-        mProgram.setUniform("footprint", 1);
-        if (mFootprint) {
+        if (mShape == SplatShape::CombinedSquare) {
+            mProgram.setUniform("contrast", marks.contrast);
             mFootprint->bind(1);
+            mProgram.setUniform("footprint", 1);
         }
         mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(count));
         return;

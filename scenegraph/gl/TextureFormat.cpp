@@ -9,6 +9,7 @@ const char* toString(TextureFormat format) {
     case TextureFormat::RGBA32F: return "RGBA32F";
     case TextureFormat::RGBA16F: return "RGBA16F";
     case TextureFormat::RGBA8: return "RGBA8";
+    case TextureFormat::RG8: return "RG8";
     case TextureFormat::Depth24: return "DEPTH24";
     case TextureFormat::Depth32F: return "DEPTH32F";
     }

@@ -9,6 +9,7 @@ enum class TextureFormat {
     RGBA32F,  ///< Four float channels.
     RGBA16F,  ///< Four half-float channels (render targets).
     RGBA8,    ///< Four 8-bit normalized channels; uploaded floats are clamped to [0, 1].
+    RG8,      ///< Two 8-bit normalized channels, as RGBA8 (the vector splat table).
     Depth24,  ///< 24-bit normalized depth.
     Depth32F, ///< 32-bit float depth.
 };

@@ -31,7 +31,6 @@ uniform float stretch;
 uniform int rowShift;          // the animation phase, in rows
 uniform int rows;
 uniform int columns;
-uniform bool combined;
 
 out vec2 tableCoord;
 out vec2 footprintCoord;
@@ -71,10 +70,12 @@ void main() {
             hasMarks = 1;
         }
     }
-    if (hasMarks == 0 && !combined) {
+#ifndef COMBINED
+    if (hasMarks == 0) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // no marks, nothing to draw: no fragments
         return;
     }
+#endif
     vec3 v = cross(axis, u);
     float halfWidth = extent * size;
     vec3 offset = (corner.x * (hasMarks == 1 ? stretch : 1.0) * u + corner.y * v) * halfWidth;
@@ -92,7 +93,8 @@ void main() {
 }
 )";
 
-/// The vector splat fragment shader: the paper's two texture operators on the table's
+/// The vector splat fragment shader (COMBINED defined for combined splats: one program each,
+/// so that neither pays for the other's texture lookups): the paper's two texture operators on the table's
 /// (intensity I, opacity A_tex) at the splat's row and column.
 /// - Vector splats: the polygon has the splat's colour RGB and the opacity A of one voxel's
 ///   slab of its medium, A = 1 − exp(−τ·lengthScale); MODULATE gives (RGB·I, A·A_tex), BLEND
@@ -111,29 +113,31 @@ flat in int hasMarks;
 flat in float polygonAlpha;
 
 uniform sampler2DArray marks;
-uniform sampler2D footprint;
-uniform bool combined;
 uniform bool blend;
 uniform vec3 blendColor;
+#ifdef COMBINED
+uniform sampler2D footprint;
 uniform float contrast;
+#endif
 
 out vec4 fragColor;
 
 void main() {
-    vec2 table = hasMarks == 1 ? texture(marks, vec3(tableCoord, layer)).rg : vec2(0.0);
-    if (combined) {
-        vec4 scalar = shadeSplat(medium.rgb, medium.a,
-                                 texture(footprint, footprintCoord).r * lengthScale);
-        float intensity = contrast * table.r;
-        fragColor = blend ? vec4(scalar.rgb * (1.0 - intensity) + blendColor * (intensity * scalar.a),
-                                 scalar.a)
-                          : vec4(scalar.rgb * (1.0 - contrast + intensity), scalar.a);
-        return;
-    }
+    vec2 table = texture(marks, vec3(tableCoord, layer)).rg * float(hasMarks);
+#ifdef COMBINED
+    vec4 scalar = shadeSplat(medium.rgb, medium.a,
+                             texture(footprint, footprintCoord).r * lengthScale);
+    float intensity = contrast * table.r;
+    fragColor = blend ? vec4(scalar.rgb * (1.0 - intensity) + blendColor * (intensity * scalar.a),
+                             scalar.a)
+                      : vec4(scalar.rgb * (1.0 - contrast + intensity), scalar.a);
+#else
     float alpha = polygonAlpha * table.g;
+    if (alpha == 0.0) discard; // between the marks: nothing to blend
     vec3 color = blend ? medium.rgb * (1.0 - table.r) + blendColor * table.r
                        : medium.rgb * table.r;
     fragColor = vec4(color * alpha, alpha);
+#endif
 }
 )";
 

@@ -13,6 +13,7 @@ FormatInfo formatInfo(TextureFormat format) {
     case TextureFormat::RGBA32F: return {GL_RGBA32F, GL_RGBA, 4};
     case TextureFormat::RGBA16F: return {GL_RGBA16F, GL_RGBA, 4};
     case TextureFormat::RGBA8: return {GL_RGBA8, GL_RGBA, 4};
+    case TextureFormat::RG8: return {GL_RG8, GL_RG, 2};
     case TextureFormat::Depth24: return {GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, 1};
     case TextureFormat::Depth32F: return {GL_DEPTH_COMPONENT32F, GL_DEPTH_COMPONENT, 1};
     }
