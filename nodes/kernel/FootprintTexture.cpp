@@ -1,14 +1,12 @@
 #include "nodes/kernel/FootprintTexture.h"
 
+#include "nodes/image/GrayPfm.h"
 #include "nodes/image/ImageIo.h"
-#include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <sstream>
 
 namespace texsplat::kernel {
@@ -117,25 +115,10 @@ TextureRipple FootprintTexture::measureLayerRipple(const RadialKernel& kernel,
     return ripple;
 }
 
-void FootprintTexture::writePfm(const std::string& path) const {
-    std::ostringstream header;
-    header << "Pf\n" << mResolution << " " << mResolution << "\n-1.0\n";
-    std::string contents = header.str();
-    // A negative scale declares little-endian floats; the bytes are taken from the IEEE bit
-    // pattern least significant first, so the file is the same on any host.
-    for (float value : mTexels) {
-        std::uint32_t bits = 0;
-        std::memcpy(&bits, &value, sizeof(bits));
-        for (int shift = 0; shift < 32; shift += 8)
-            contents.push_back(static_cast<char>((bits >> shift) & 0xffu));
-    }
-    writeFileAtomically(path, contents);
-}
-
 void FootprintTexture::write(const std::string& path) const {
     checkPath(path);
     if (fileExtension(path) == ".pfm") {
-        writePfm(path);
+        image::writeGrayPfm(path, mResolution, mResolution, mTexels);
         return;
     }
     image::Image image(mResolution, mResolution);

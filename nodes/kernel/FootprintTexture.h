@@ -92,7 +92,6 @@ public:
 private:
     FootprintTexture(int resolution, double extent, std::vector<float> texels);
 
-    void writePfm(const std::string& path) const;
 
     int mResolution;
     double mExtent;

@@ -371,3 +371,94 @@ TEST_F(KernelCommandTest, badOptionsFailWithClearMessages) {
     EXPECT_NE(badResolution.exitCode, 0);
     EXPECT_NE(badResolution.standardError.find("--resolution"), std::string::npos);
 }
+
+TEST_F(KernelCommandTest, vectorTableWritesFigureThreeAndOneLine) {
+    const auto output = runTexsplat("kernel --vector-table " + path("v.png") +
+                                    " --rows 4 --columns 3 --resolution 16 --mark-type scratches "
+                                    "--seed 9");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_EQ(output.standardOutput,
+              "vector table " + path("v.png") +
+                  ": 4 rows x 3 columns of 16x16 texels, scratches, seed 9\n");
+    EXPECT_EQ(output.standardError, "");
+    // Two tables of 3 cells of 16 texels and 4 one-texel lines, 4 texels apart; 4 rows high.
+    const texsplat::image::Image image = texsplat::image::readImage(path("v.png"));
+    EXPECT_EQ(image.sizeString(), "108x69");
+    EXPECT_GT(image.statistics().maximum.r, 0.5);
+
+    const auto defaults = runTexsplat("kernel --vector-table " + path("V.PFM"));
+    EXPECT_EQ(defaults.exitCode, 0) << defaults.standardError;
+    EXPECT_EQ(defaults.standardOutput, "vector table " + path("V.PFM") +
+                                           ": 16 rows x 8 columns of 64x64 texels, particles, "
+                                           "seed 1\n");
+    EXPECT_EQ(read(path("V.PFM")).substr(0, 16), "Pf\n1046 1041\n-1.");
+}
+
+TEST_F(KernelCommandTest, vectorTableOptionsFailBeforeAnyWork) {
+    const std::string table = path("v.png");
+    const struct {
+        std::string arguments;
+        std::string message;
+    } cases[] = {
+        {"kernel --vector-table " + path("v.tif"),
+         path("v.tif") + ": unknown image extension '.tif' (supported: .png, .pfm, .exr)"},
+        {"kernel --vector-table " + path("v"),
+         path("v") + ": no image extension (supported: .png, .pfm, .exr)"},
+        {"kernel --vector-table " + table + " --rows 0",
+         "--rows: vector table: rows must be in 1..256, got 0"},
+        {"kernel --vector-table " + table + " --columns 65",
+         "--columns: vector table: columns must be in 1..64, got 65"},
+        {"kernel --vector-table " + table + " --resolution 4",
+         "--resolution: vector table: resolution must be in 8..1024, got 4"},
+        {"kernel --vector-table " + table + " --extent 0",
+         "--extent: vector table: splatExtent must be finite and in (0, 8], got 0"},
+        {"kernel --vector-table " + table + " --rows 256 --columns 64 --resolution 1024",
+         "vector table: rows * columns * resolution^2 must be at most 134217728 texels, got "
+         "17179869184"},
+        // A bad option is reported before a bad path.
+        {"kernel --vector-table " + path("v.tif") + " --rows 300",
+         "--rows: vector table: rows must be in 1..256, got 300"},
+        {"kernel --vector-table /nonexistent-directory/v.png",
+         "/nonexistent-directory/v.png: cannot create a file in directory "
+         "/nonexistent-directory: No such file or directory"},
+    };
+    for (const auto& badCase : cases) {
+        const auto output = runTexsplat(badCase.arguments);
+        EXPECT_EQ(output.exitCode, 1) << badCase.arguments;
+        EXPECT_EQ(output.standardError, "texsplat: error: " + badCase.message + "\n")
+            << badCase.arguments;
+        EXPECT_EQ(output.standardOutput, "") << badCase.arguments;
+    }
+    EXPECT_FALSE(std::filesystem::exists(table));
+    EXPECT_FALSE(std::filesystem::exists(path("v.tif")));
+    EXPECT_FALSE(std::filesystem::exists(path("v")));
+    // The vector table is a mode of its own: the kernel's analyses and outputs do not mix with
+    // it, and its own options need it.
+    const std::vector<std::string> analyses = {"--json",
+                                               "--optimize",
+                                               "--kernel gaussian",
+                                               "--texture " + path("t.pfm"),
+                                               "--plot " + path("p.svg"),
+                                               "--spacing 1,1,2"};
+    for (const std::string& arguments : analyses) {
+        const auto output = runTexsplat("kernel --vector-table " + table + " " + arguments);
+        EXPECT_NE(output.exitCode, 0) << arguments;
+        EXPECT_NE(output.standardError.find("excludes"), std::string::npos)
+            << arguments << ": " << output.standardError;
+        EXPECT_EQ(output.standardOutput, "") << arguments;
+    }
+    for (const char* arguments : {"--rows 4", "--columns 2", "--seed 3", "--mark-type scratches"}) {
+        const auto output = runTexsplat(std::string("kernel --json ") + arguments);
+        EXPECT_NE(output.exitCode, 0) << arguments;
+        EXPECT_NE(output.standardError.find("requires --vector-table"), std::string::npos)
+            << arguments << ": " << output.standardError;
+    }
+    const auto badType = runTexsplat("kernel --vector-table " + table + " --mark-type arrows");
+    EXPECT_NE(badType.exitCode, 0);
+    EXPECT_NE(badType.standardError.find("--mark-type: arrows not in {particles,scratches}"),
+              std::string::npos)
+        << badType.standardError;
+    EXPECT_FALSE(std::filesystem::exists(table));
+    EXPECT_FALSE(std::filesystem::exists(path("t.pfm")));
+    EXPECT_FALSE(std::filesystem::exists(path("p.svg")));
+}
