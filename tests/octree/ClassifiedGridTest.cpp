@@ -68,3 +68,18 @@ TEST(ClassifiedGrid, rejectsNegativeOrNonFiniteValues) {
               "ClassifiedGrid: voxel (0, 1, 0): extinction must be finite and >= 0, got inf");
     EXPECT_TRUE(grid.isEmptyVoxel(grid.index({1, 0, 1})));
 }
+
+TEST(ClassifiedGrid, vectorsAreThereOnlyWhenEnabledAndMustBeFinite) {
+    ClassifiedGrid grid({2, 1, 1}, glm::dvec3(1.0), glm::dvec3(0.0));
+    EXPECT_FALSE(grid.hasVectors());
+    grid.enableVectors();
+    ASSERT_TRUE(grid.hasVectors());
+    EXPECT_EQ(grid.vector(1), glm::vec3(0.0f));
+    grid.setVector({1, 0, 0}, {1.0f, -2.0f, 3.0f});
+    EXPECT_EQ(grid.vector(1), glm::vec3(1.0f, -2.0f, 3.0f));
+    EXPECT_EQ(errorOf([&] {
+                  grid.setVector({0, 0, 0}, {0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f});
+              }),
+              "ClassifiedGrid: voxel (0, 0, 0): vector must be finite, got (0, nan, 0)");
+    EXPECT_EQ(grid.vector(0), glm::vec3(0.0f));
+}
