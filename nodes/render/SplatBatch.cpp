@@ -196,7 +196,6 @@ void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks, std::size
         mProgram.setUniform("eye", view.eye);
         mProgram.setUniform("direction", view.direction);
         mProgram.setUniform("extent", mExtent);
-        mProgram.setUniform("footprintExtent", mFootprintExtent);
         mProgram.setUniform("stretch", marks.stretch);
         mProgram.setUniform("rowShift", ((marks.rowShift % mRows) + mRows) % mRows);
         mProgram.setUniform("rows", mRows);
@@ -206,6 +205,7 @@ void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks, std::size
         mTable->bind(0);
         mProgram.setUniform("marks", 0);
         if (mShape == SplatShape::CombinedSquare) {
+            mProgram.setUniform("footprintExtent", mFootprintExtent);
             mProgram.setUniform("contrast", marks.contrast);
             mFootprint->bind(1);
             mProgram.setUniform("footprint", 1);

@@ -26,14 +26,18 @@ uniform bool perspective;
 uniform vec3 eye;
 uniform vec3 direction;
 uniform float extent;          // the table's half-width in voxels at size 1
-uniform float footprintExtent; // the scalar footprint texture's half-width (combined splats)
+#ifdef COMBINED
+uniform float footprintExtent; // the scalar footprint texture's half-width
+#endif
 uniform float stretch;
 uniform int rowShift;          // the animation phase, in rows
 uniform int rows;
 uniform int columns;
 
 out vec2 tableCoord;
+#ifdef COMBINED
 out vec2 footprintCoord;
+#endif
 out float lengthScale;
 flat out vec4 medium;
 flat out float layer;
@@ -81,10 +85,12 @@ void main() {
     vec3 offset = (corner.x * (hasMarks == 1 ? stretch : 1.0) * u + corner.y * v) * halfWidth;
     gl_Position = localToClip * vec4(centre + spacing * offset, 1.0);
     tableCoord = corner.xy * 0.5 + 0.5;
+#ifdef COMBINED
     // The same voxel offset in the TextureSplat's own square, so the scalar part samples the
     // footprint exactly where a TextureSplat would.
     vec2 scalarOffset = vec2(dot(offset, scalarU), dot(offset, cross(axis, scalarU))) / size;
     footprintCoord = scalarOffset / footprintExtent * 0.5 + 0.5;
+#endif
     lengthScale = size / eLength;
     medium = colorExtinction;
     polygonAlpha = shadeSplat(vec3(0.0), colorExtinction.a, lengthScale).a;
@@ -105,7 +111,9 @@ void main() {
 ///   With contrast 0 (or no marks) the pixel is exactly the TextureSplat's.
 constexpr const char* kVectorSplatFragmentShader = R"(
 in vec2 tableCoord;
+#ifdef COMBINED
 in vec2 footprintCoord;
+#endif
 in float lengthScale;
 flat in vec4 medium;
 flat in float layer;
