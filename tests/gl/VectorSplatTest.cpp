@@ -363,6 +363,30 @@ TEST(VectorSplat, zeroNanHugeAndDenormalVectorsGiveFiniteImages) {
     }
 }
 
+TEST(VectorSplat, octreeCutsDrawTheMeanVectorsOfCoarserNodes) {
+    const VolumeData::Ptr tornado = VolumeData::create();
+    tornado->source.setValue(VolumeSource::Tornado);
+    tornado->resolution.setValue(glm::vec3(16.0f));
+    TransferFunction::Ptr transfer = TransferFunction::create();
+    transfer->range.setValue(glm::vec2(0.0f, 0.32f));
+    transfer->opacities.setValue({0.0f, 30.0f});
+    VectorSplat::Ptr splat = VectorSplat::create();
+    sg::Separator::Ptr root = sg::Separator::create();
+    for (const sg::Node::Ptr& node :
+         std::vector<sg::Node::Ptr>{topCamera(0.5f, 0.5f, 1.2f), tornado, transfer, splat}) {
+        root->addChild(node);
+    }
+    test::sharedContext();
+    const test::RenderedFrame full = test::renderFrame(*root, 96, 96);
+    splat->maxSplats.setValue(200);
+    const test::RenderedFrame cut = test::renderFrame(*root, 96, 96);
+    EXPECT_GT(full.statistics.splats, 1000u);
+    EXPECT_LE(cut.statistics.splats, 200u);
+    EXPECT_GT(cut.statistics.splats, 100u);
+    test::expectFiniteWithAlphaInRange(cut.image, "octree cut");
+    test::expectFiniteAndNotEmpty(cut.image, "octree cut");
+}
+
 TEST(CombinedSplat, withZeroContrastMarksItIsTheTextureSplatImage) {
     const VolumeData::Ptr tornado = VolumeData::create();
     tornado->source.setValue(VolumeSource::Tornado);
