@@ -43,21 +43,6 @@ gl::Program makeProgram(SplatShape shape) {
 const std::vector<float> kSquareVertices{-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
 const std::vector<unsigned> kSquareIndices{0, 1, 2, 0, 2, 3};
 
-// The octagon around the unit circle, inside the square [-1, 1]² (its vertices on the square's
-// sides): the vector table's window is radial and zero beyond the circle, so the octagon draws
-// every texel that can show and 17 % fewer fragments than the square.
-std::vector<float> octagonVertices() {
-    std::vector<float> vertices;
-    const double radius = 1.0 / std::cos(glm::pi<double>() / 8.0);
-    for (int k = 0; k < 8; ++k) {
-        const double angle = glm::pi<double>() / 8.0 + k * glm::pi<double>() / 4.0;
-        vertices.insert(vertices.end(), {static_cast<float>(radius * std::cos(angle)),
-                                         static_cast<float>(radius * std::sin(angle)), 0.0f});
-    }
-    return vertices;
-}
-const std::vector<unsigned> kOctagonIndices{0, 1, 2, 0, 2, 3, 0, 3, 4, 0, 4, 5, 0, 5, 6, 0, 6, 7};
-
 gl::TextureSampling bilinearClamped() {
     return {gl::TextureFilter::Linear, gl::TextureWrap::ClampToEdge, false};
 }
@@ -105,7 +90,7 @@ SplatBatch SplatBatch::textured(const kernel::FootprintTexture& footprint) {
 }
 
 SplatBatch SplatBatch::markSquares(SplatShape shape, const kernel::VectorSplatTable& table) {
-    SplatBatch batch(shape, table.extent(), octagonVertices(), kOctagonIndices);
+    SplatBatch batch(shape, table.extent(), kSquareVertices, kSquareIndices);
     batch.mRows = table.rows();
     batch.mColumns = table.columns();
     batch.mTable.emplace(table.resolution(), table.resolution(), table.rows() * table.columns(),

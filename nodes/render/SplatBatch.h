@@ -64,8 +64,7 @@ public:
     static SplatBatch polygonal(const kernel::RadialKernel& kernel, double extent,
                                 int radialSamples = 3, int azimuthSamples = 7);
 
-    /// @brief Vector splats: squares of `table.extent()` voxels at size 1 (drawn as the octagon
-    /// around the window's circle, which holds every texel that can show), turned to their
+    /// @brief Vector splats: squares of `table.extent()` voxels at size 1, turned to their
     /// projected vector, carrying the table (an RG8 texture array, bilinear, one layer per row
     /// and column: 8 bits hold the marks' values to 0.002, and llvmpipe samples them about
     /// twice as fast as floats) under the operator of the MarkDrawing passed to draw(). The splat list must
@@ -109,7 +108,7 @@ public:
     /// @brief What the splats are drawn as.
     SplatShape shape() const { return mShape; }
 
-    /// @brief Triangles of the template (2 for a square, 6 for the octagon of the vector tables).
+    /// @brief Triangles of the template (2 for a square).
     int templateTriangles() const { return mTemplateIndexCount / 3; }
 
 private:
