@@ -137,8 +137,9 @@ public:
 
     /// @brief All layers in layer() order; each layer resolution² texels, row-major, row 0 at
     /// y = −E, texel (i, j) (column i, row j) centred at (−E + (i + ½)·2E/N, −E + (j + ½)·2E/N)
-    /// (as FootprintTexture); 2 floats per texel: (intensity, opacity), each in [0, 1]. Uploaded
-    /// as it is as an RG32F texture array of rows · columns layers.
+    /// (as FootprintTexture); 2 floats per texel: (intensity, opacity), each in [0, 1]. The GL
+    /// renderer uploads them as an RG8 texture array of rows · columns layers (8 bits hold them
+    /// to 0.002 and llvmpipe samples them faster than floats).
     const std::vector<float>& texels() const { return mTexels; }
 
     /// @brief (intensity, opacity) of texel (i, j) of layer(row, column): i counts along x, j
