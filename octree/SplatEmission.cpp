@@ -7,6 +7,7 @@
 #include "octree/View.h"
 #include "octree/detail/BackToFront.h"
 #include "scenegraph/Assert.h"
+#include "scenegraph/Random.h"
 
 #include <glm/geometric.hpp>
 
@@ -15,14 +16,6 @@
 
 namespace texsplat::octree {
 namespace {
-
-// splitmix64's finalizer: a well-mixed 64-bit hash, identical on every platform.
-std::uint64_t mix(std::uint64_t value) {
-    value += 0x9e3779b97f4a7c15ull;
-    value = (value ^ (value >> 30)) * 0xbf58476d1ce4e5b9ull;
-    value = (value ^ (value >> 27)) * 0x94d049bb133111ebull;
-    return value ^ (value >> 31);
-}
 
 // A coarse node's key: its level above the voxel bits, so it never equals a voxel's index.
 std::uint64_t nodeKey(const NodeRef& node) {
@@ -45,7 +38,7 @@ SplatVector vectorSplat(const VectorEmission& emission, glm::vec3 position, glm:
     SplatVector result;
     result.vector = vector;
     result.row = static_cast<std::uint16_t>(
-        mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32)) %
+        sg::Random::mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32)) %
         static_cast<std::uint64_t>(emission.rows));
     // In double: a huge vector's squared length overflows float.
     const glm::dvec3 camera = glm::dmat3(glm::mat3(emission.localToCamera)) * glm::dvec3(vector);

@@ -3,6 +3,7 @@
 #include "nodes/TransferFunction.h"
 #include "nodes/image/detail/Viridis.h"
 #include "scenegraph/Assert.h"
+#include "scenegraph/Random.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -42,10 +43,7 @@ PiecewiseLinear<glm::vec3> evenlySpaced(std::vector<glm::vec3> colors) {
 
 // A fixed integer hash (splitmix64's finalizer) mapped to [0, 1): the same noise everywhere.
 float hashToUnit(std::uint64_t i) {
-    std::uint64_t z = i + 0x9e3779b97f4a7c15ULL;
-    z = (z ^ (z >> 30U)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27U)) * 0x94d049bb133111ebULL;
-    z ^= z >> 31U;
+    const std::uint64_t z = sg::Random::mix(i + 0x9e3779b97f4a7c15ULL);
     return static_cast<float>(z >> 40U) / static_cast<float>(1ULL << 24U);
 }
 

@@ -1,6 +1,7 @@
 #include "nodes/kernel/FootprintTexture.h"
 
 #include "nodes/image/GrayPfm.h"
+#include "nodes/kernel/detail/BilinearSample.h"
 #include "nodes/image/ImageIo.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
@@ -63,25 +64,10 @@ FootprintTexture FootprintTexture::quantizedTo8Bits() const {
 }
 
 double FootprintTexture::sample(const std::array<double, 2>& point) const {
-    if (!(std::fabs(point[0]) <= mExtent && std::fabs(point[1]) <= mExtent))
-        return 0.0;
-    const auto texelCoordinate = [&](double x) {
-        return (x + mExtent) / (2.0 * mExtent) * mResolution - 0.5;
-    };
-    const double u = texelCoordinate(point[0]);
-    const double v = texelCoordinate(point[1]);
-    const double column = std::floor(u);
-    const double row = std::floor(v);
-    const double fu = u - column;
-    const double fv = v - row;
-    const auto texel = [&](double r, double c) {
-        const auto clamp = [&](double index) {
-            return static_cast<size_t>(std::clamp(index, 0.0, mResolution - 1.0));
-        };
-        return static_cast<double>(mTexels[clamp(r) * mResolution + clamp(c)]);
-    };
-    return (1.0 - fv) * ((1.0 - fu) * texel(row, column) + fu * texel(row, column + 1)) +
-           fv * ((1.0 - fu) * texel(row + 1, column) + fu * texel(row + 1, column + 1));
+    return detail::bilinearSample(point[0], point[1], mExtent, mResolution, [&](int i, int j) {
+        return static_cast<double>(mTexels[static_cast<std::size_t>(j) * mResolution +
+                                           static_cast<std::size_t>(i)]);
+    });
 }
 
 TextureRipple FootprintTexture::measureLayerRipple(const RadialKernel& kernel,

@@ -1,9 +1,11 @@
 #include "nodes/kernel/VectorSplatTable.h"
 
 #include "nodes/image/GrayPfm.h"
+#include "nodes/kernel/detail/BilinearSample.h"
 #include "nodes/image/ImageIo.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/Random.h"
 #include "scenegraph/FileExtension.h"
 
 #include <algorithm>
@@ -26,26 +28,6 @@ constexpr float kMaxMarkDensity = 64.0f;
 constexpr float kMaxSplatExtent = 8.0f;
 constexpr float kMinWindowScale = 1.0f;
 constexpr float kMaxWindowScale = 4.0f;
-
-// splitmix64 (Steele, Lea & Flood 2014), written out so that the marks do not depend on the
-// standard library's distributions, which differ between implementations.
-class SplitMix64 {
-public:
-    explicit SplitMix64(std::uint64_t seed) : mState(seed) {}
-
-    std::uint64_t next() {
-        std::uint64_t z = (mState += 0x9e3779b97f4a7c15ull);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-        return z ^ (z >> 31);
-    }
-
-    /// A double in [0, 1) from the top 53 bits: exact, the same on every machine.
-    double unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-
-private:
-    std::uint64_t mState;
-};
 
 struct Mark {
     double x;          ///< centre in the mark domain, in [−E, E) (periodic with period 2E)
@@ -100,13 +82,13 @@ std::vector<Mark> makeMarks(const VectorTableParameters& parameters, double exte
     const double period = 2.0 * extent;
     const auto count = std::max<long long>(
         1, std::llround(static_cast<double>(parameters.markDensity) * period * period));
-    SplitMix64 random(parameters.seed);
+    sg::Random random(parameters.seed);
     std::vector<Mark> marks(static_cast<std::size_t>(count));
     for (Mark& mark : marks) {
-        mark.x = -extent + period * random.unit();
-        mark.y = -extent + period * random.unit();
+        mark.x = -extent + period * random.uniform();
+        mark.y = -extent + period * random.uniform();
         mark.brightness = VectorSplatTable::kMinBrightness +
-                          (1.0 - VectorSplatTable::kMinBrightness) * random.unit();
+                          (1.0 - VectorSplatTable::kMinBrightness) * random.uniform();
     }
     return marks;
 }
@@ -388,26 +370,8 @@ glm::vec2 VectorSplatTable::texel(int row, int column, int i, int j) const {
 }
 
 glm::vec2 VectorSplatTable::sample(int row, int column, float x, float y) const {
-    if (!(std::fabs(x) <= mExtent && std::fabs(y) <= mExtent))
-        return glm::vec2(0.0f);
-    const int n = resolution();
-    const auto texelCoordinate = [&](float value) {
-        return (value + mExtent) / (2.0f * mExtent) * static_cast<float>(n) - 0.5f;
-    };
-    const float u = texelCoordinate(x);
-    const float v = texelCoordinate(y);
-    const float i = std::floor(u);
-    const float j = std::floor(v);
-    const float fu = u - i;
-    const float fv = v - j;
-    const auto at = [&](float ti, float tj) {
-        const auto clamp = [&](float index) {
-            return static_cast<int>(std::clamp(index, 0.0f, static_cast<float>(n - 1)));
-        };
-        return texel(row, column, clamp(ti), clamp(tj));
-    };
-    return (1.0f - fv) * ((1.0f - fu) * at(i, j) + fu * at(i + 1.0f, j)) +
-           fv * ((1.0f - fu) * at(i, j + 1.0f) + fu * at(i + 1.0f, j + 1.0f));
+    return detail::bilinearSample(x, y, mExtent, resolution(),
+                                  [&](int i, int j) { return texel(row, column, i, j); });
 }
 
 int VectorSplatTable::columnOf(float towardEye, int columns) {

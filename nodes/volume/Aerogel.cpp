@@ -1,7 +1,7 @@
 #include "nodes/volume/Aerogel.h"
 
 #include "nodes/volume/detail/Format.h"
-#include "nodes/volume/detail/Random.h"
+#include "scenegraph/Random.h"
 #include "nodes/volume/detail/Sampling.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
@@ -30,7 +30,7 @@ std::vector<Fiber> aerogelFibers(const AerogelParameters& parameters) {
                         std::to_string(parameters.fiberCount));
     checkRange("radius", parameters.minRadius, parameters.maxRadius);
     checkRange("length", parameters.minLength, parameters.maxLength);
-    detail::Random random(parameters.seed);
+    sg::Random random(parameters.seed);
     std::vector<Fiber> fibers(static_cast<std::size_t>(parameters.fiberCount));
     for (Fiber& fiber : fibers) {
         const glm::dvec3 center(random.uniform(), random.uniform(), random.uniform());

@@ -1,6 +1,6 @@
 #include "nodes/volume/Blob.h"
 
-#include "nodes/volume/detail/Random.h"
+#include "scenegraph/Random.h"
 #include "nodes/volume/detail/Sampling.h"
 #include "scenegraph/Error.h"
 
@@ -13,7 +13,7 @@ std::vector<GaussianTerm> blobTerms(const BlobParameters& parameters) {
     if (parameters.termCount < 1)
         throw DataError("blob: term count must be at least 1, got " +
                         std::to_string(parameters.termCount));
-    detail::Random random(parameters.seed);
+    sg::Random random(parameters.seed);
     std::vector<GaussianTerm> terms(static_cast<std::size_t>(parameters.termCount));
     for (GaussianTerm& term : terms) {
         for (int axis = 0; axis < 3; ++axis)

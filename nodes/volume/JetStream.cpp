@@ -1,7 +1,7 @@
 #include "nodes/volume/JetStream.h"
 
 #include "nodes/volume/detail/Format.h"
-#include "nodes/volume/detail/Random.h"
+#include "scenegraph/Random.h"
 #include "nodes/volume/detail/Sampling.h"
 #include "nodes/volume/detail/ValueNoise.h"
 #include "scenegraph/Error.h"
@@ -45,7 +45,7 @@ struct Jet {
 };
 
 std::array<Jet, 2> makeJets(std::uint64_t seed) {
-    detail::Random random(seed);
+    sg::Random random(seed);
     const double twoPi = 2.0 * kPi;
     Jet polar{50.0, 7.0, 5.0, 8.0, 9.5, 55.0, 4.0, 2.5, 0.0, 0.0};
     Jet subtropical{30.0, 2.5, 4.0, 5.0, 12.0, 45.0, 3.0, 2.0, 0.0, 0.0};
@@ -106,7 +106,7 @@ JetStreamField generateJetStream(const JetStreamParameters& parameters) {
 
     // Cloudiness: moist air rising ahead of the troughs, on the equatorward side of the polar
     // jet (the polar front), plus a tropical band; moisture falls off with height.
-    const std::uint64_t noiseSeed = detail::Random::mix(parameters.seed ^ 0xC10D5ull);
+    const std::uint64_t noiseSeed = sg::Random::mix(parameters.seed ^ 0xC10D5ull);
     const auto cloudiness = [&](const glm::dvec3& p) {
         const Jet& polar = jets[0];
         double slope = 0.0;

@@ -98,24 +98,25 @@ double maxDifference(const image::Image& a, const image::Image& b) {
     return largest;
 }
 
-// The orientation, in degrees in [0, 180) counter-clockwise from +x (y up), of the lines in
-// the alpha of `region`: the structure tensor's weakest direction.
-double lineOrientation(const image::Image& image, const image::ImageRegion& region) {
-    double xx = 0.0;
-    double yy = 0.0;
-    double xy = 0.0;
+// The structure tensor (xx, yy, xy sums of gradient products) of the alpha of `region`, with y
+// up.
+glm::dvec3 structureTensor(const image::Image& image, const image::ImageRegion& region) {
+    glm::dvec3 tensor(0.0);
     for (int y = region.y + 1; y + 1 < region.y + region.height; ++y) {
         for (int x = region.x + 1; x + 1 < region.x + region.width; ++x) {
             const double gx = image.pixel(x + 1, y).a - image.pixel(x - 1, y).a;
             const double gy = image.pixel(x, y - 1).a - image.pixel(x, y + 1).a; // rows go down
-            xx += gx * gx;
-            yy += gy * gy;
-            xy += gx * gy;
+            tensor += glm::dvec3(gx * gx, gy * gy, gx * gy);
         }
     }
-    const double gradient = 0.5 * std::atan2(2.0 * xy, xx - yy);
-    const double degrees = glm::degrees(gradient) + 90.0;
-    return std::fmod(degrees + 180.0, 180.0);
+    return tensor;
+}
+
+// The orientation, in degrees in [0, 180) counter-clockwise from +x, of the lines whose
+// structure tensor is `tensor`: its weakest direction.
+double lineOrientation(const glm::dvec3& tensor) {
+    const double gradient = 0.5 * std::atan2(2.0 * tensor.z, tensor.x - tensor.y);
+    return std::fmod(glm::degrees(gradient) + 90.0 + 180.0, 180.0);
 }
 
 double angleBetweenLines(double a, double b) {
@@ -134,8 +135,8 @@ TEST(VectorSplat, marksRunAlongTheProjectedVector) {
                    7 * kPixelsPerVoxel);
         test::expectFiniteWithAlphaInRange(image, "uniform field");
         const int inner = 5 * kPixelsPerVoxel;
-        const double measured =
-            lineOrientation(image, {kPixelsPerVoxel, kPixelsPerVoxel, inner, inner});
+        const double measured = lineOrientation(
+            structureTensor(image, {kPixelsPerVoxel, kPixelsPerVoxel, inner, inner}));
         EXPECT_LT(angleBetweenLines(measured, degrees), 5.0)
             << "field at " << degrees << " degrees, marks at " << measured;
     }
@@ -144,22 +145,32 @@ TEST(VectorSplat, marksRunAlongTheProjectedVector) {
 TEST(VectorSplat, marksRunAlongTheProjectedVectorNearThePerspectiveImageBorder) {
     for (const double degrees : {0.0, 60.0, 135.0}) {
         const auto angle = static_cast<float>(glm::radians(degrees));
-        // 6x6 voxels in the plane z = 0, seen 45 degrees off the axis of a 100-degree camera.
+        // 6x6 voxels in the plane z = 0 reaching past the right border of a 60-degree camera,
+        // 20 to 30 degrees off its axis where the marks are measured.
         const VolumeData::Ptr field = uniformField(
             "border" + std::to_string(static_cast<int>(degrees)), {6, 6, 1},
             glm::vec3(std::cos(angle), std::sin(angle), 0.0f));
         PerspectiveCamera::Ptr camera = PerspectiveCamera::create();
-        camera->position.setValue(glm::vec3(-3.5f, 2.5f, 6.0f));
-        camera->heightAngle.setValue(glm::radians(100.0f));
+        camera->position.setValue(glm::vec3(-1.0f, 2.5f, 6.0f));
+        camera->heightAngle.setValue(glm::radians(60.0f));
         camera->nearDistance.setValue(0.5f);
         camera->farDistance.setValue(30.0f);
         const int pixels = 320;
-        const image::Image image =
-            render(camera, {field, constantOpacity(8.0f), whiteScratches()}, pixels);
-        test::expectFiniteWithAlphaInRange(image, "near the border");
-        // The grid spans x in [5.5, 11.5] / 7.15 of the half-width: the right part of the image.
-        const double measured = lineOrientation(image, {pixels * 3 / 4, pixels * 3 / 8,
-                                                        pixels / 4 - 8, pixels / 4});
+        // Few marks fall in the region: the tensors of four seeds' marks together.
+        glm::dvec3 tensor(0.0);
+        for (const int seed : {1, 2, 3, 4}) {
+            VectorSplat::Ptr splat = whiteScratches();
+            splat->markDensity.setValue(4.0f);
+            splat->seed.setValue(seed);
+            const image::Image image =
+                render(camera, {field, constantOpacity(8.0f), splat}, pixels);
+            test::expectFiniteWithAlphaInRange(image, "near the border");
+            // Image x from 0.6 to 0.95 of the half-width (world x 1.1 to 2.3), y within 0.3 of
+            // the centre.
+            tensor += structureTensor(image, {pixels * 8 / 10, pixels * 7 / 20, pixels * 7 / 40,
+                                              pixels * 3 / 10});
+        }
+        const double measured = lineOrientation(tensor);
         EXPECT_LT(angleBetweenLines(measured, degrees), 5.0)
             << "field at " << degrees << " degrees, marks at " << measured;
     }
@@ -314,27 +325,33 @@ TEST(VectorSplat, voxelsOutsideTheMaskRangeDrawNothing) {
 TEST(VectorSplat, colourByPositionFollowsTheAxis) {
     const VolumeData::Ptr field = uniformField("position", {8, 1, 1}, glm::vec3(0.0f, 1.0f, 0.0f));
     VectorSplat::Ptr splat = VectorSplat::create();
-    splat->colorMode.setValue(VectorColorMode::Position);
     splat->positionAxis.setValue(Axis::X);
     splat->positionRange.setValue(glm::vec2(0.0f, 7.0f));
-    splat->markDensity.setValue(8.0f);
-    const image::Image image = render(topCamera(3.5f, 0.0f, 8.0f),
-                                      {field, constantOpacity(4.0f), splat}, 8 * kPixelsPerVoxel);
-    // The straight colour (r / a) of the brightest pixels near each voxel's centre line grows
-    // with x: the gray map from black at x = 0 to white at x = 7.
+    const auto draw = [&](VectorColorMode mode) {
+        splat->colorMode.setValue(mode);
+        return render(topCamera(3.5f, 0.0f, 8.0f), {field, constantOpacity(4.0f), splat},
+                      8 * kPixelsPerVoxel);
+    };
+    // The same marks in white and coloured by x: their ratio is the colour, whatever the marks.
+    const image::Image white = draw(VectorColorMode::Constant);
+    const image::Image byPosition = draw(VectorColorMode::Position);
+    // Over each voxel's column of pixels (splats overlap, so a mean of the neighbours' colours
+    // too), the gray map from black at x = 0 to white at x = 7 grows with x.
     double previous = -1.0;
     for (int voxel = 0; voxel < 8; ++voxel) {
-        double brightest = 0.0;
-        for (int y = 0; y < image.height(); ++y) {
-            for (int dx = -2; dx <= 2; ++dx) {
-                const glm::vec4 p = image.pixel(voxel * kPixelsPerVoxel + 16 + dx, y);
-                if (p.a > 0.05f) {
-                    brightest = std::max(brightest, double(p.r) / p.a);
-                }
+        double coloured = 0.0;
+        double reference = 0.0;
+        for (int y = 0; y < white.height(); ++y) {
+            for (int x = voxel * kPixelsPerVoxel; x < (voxel + 1) * kPixelsPerVoxel; ++x) {
+                coloured += byPosition.pixel(x, y).r;
+                reference += white.pixel(x, y).r;
             }
         }
-        EXPECT_GT(brightest, previous) << "voxel " << voxel;
-        previous = brightest;
+        ASSERT_GT(reference, 0.0) << "voxel " << voxel;
+        const double gray = coloured / reference;
+        EXPECT_GT(gray, previous + 0.05) << "voxel " << voxel;
+        EXPECT_NEAR(gray, voxel / 7.0, 0.15) << "voxel " << voxel;
+        previous = gray;
     }
 }
 

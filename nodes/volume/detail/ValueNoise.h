@@ -1,6 +1,6 @@
 #pragma once
 
-#include "nodes/volume/detail/Random.h"
+#include "scenegraph/Random.h"
 
 #include <glm/glm.hpp>
 
@@ -17,10 +17,10 @@ inline double valueNoise(const glm::dvec3& position, std::uint64_t seed) {
     const glm::dvec3 f = position - cell;
     const glm::dvec3 w = f * f * (3.0 - 2.0 * f);
     const auto lattice = [&](int dx, int dy, int dz) {
-        std::uint64_t h = Random::mix(seed);
-        h = Random::mix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell.x) + dx));
-        h = Random::mix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell.y) + dy));
-        h = Random::mix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell.z) + dz));
+        std::uint64_t h = sg::Random::mix(seed);
+        h = sg::Random::mix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell.x) + dx));
+        h = sg::Random::mix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell.y) + dy));
+        h = sg::Random::mix(h ^ static_cast<std::uint64_t>(static_cast<std::int64_t>(cell.z) + dz));
         return double(h >> 11) * 0x1.0p-53;
     };
     double result = 0.0;

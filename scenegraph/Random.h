@@ -2,11 +2,12 @@
 
 #include <cstdint>
 
-namespace texsplat::volume::detail {
+namespace texsplat::sg {
 
 /// @brief SplitMix64 (Steele, Lea & Flood 2014): a tiny generator whose output is fully
 /// specified, so seeded generators give the same data on every platform and standard library
-/// (std::uniform_real_distribution does not promise that).
+/// (std::uniform_real_distribution does not promise that): the volume generators, the vector
+/// splat table's marks, the vector splats' random rows, the noisy colour map.
 class Random {
 public:
     /// @brief A generator started from `seed`.
@@ -33,4 +34,4 @@ private:
     std::uint64_t mState;
 };
 
-} // namespace texsplat::volume::detail
+} // namespace texsplat::sg
