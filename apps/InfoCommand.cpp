@@ -1,6 +1,7 @@
 #include "apps/Commands.h"
 
 #include "nodes/NodeTypes.h"
+#include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Node.h"
@@ -58,6 +59,11 @@ void printScene(const std::string& path) {
 void runInfo(const InfoArguments& arguments) {
     registerTypes();
     if (!arguments.reference) {
+        // A data file (by its first bytes or extension) gets what a scene needs to read it.
+        if (volume::detectVolumeFileFormat(arguments.scene) != volume::VolumeFileFormat::Unknown) {
+            std::fputs(volume::describeVolumeFile(arguments.scene).c_str(), stdout);
+            return;
+        }
         printScene(arguments.scene);
         return;
     }
@@ -77,9 +83,12 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
     auto arguments = std::make_shared<InfoArguments>();
     CLI::App* command = app.add_subcommand(
         "info", "Print a scene file's graph (types, names, fields that differ from their "
-                "defaults), or the scene-file reference of every node and engine type");
-    CLI::Option* scene =
-        command->add_option("scene", arguments->scene, "Inventor scene file (.iv) to describe");
+                "defaults), what a data file holds (texsplat-raw, .npy, .vdb: grids, dimensions, "
+                "voxel size, bounds, value range, histogram), or the scene-file reference of "
+                "every node and engine type");
+    CLI::Option* scene = command->add_option(
+        "scene", arguments->scene,
+        "Inventor scene file (.iv) or data file (texsplat-raw, .npy, .vdb) to describe");
     CLI::Option* reference = command->add_flag(
         "--reference", arguments->reference,
         "Print the Markdown reference of every node and engine type, generated from the types");

@@ -4,6 +4,7 @@
 #include "scenegraph/Declare.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/fields/Fields.h"
+#include "scenegraph/io/RelativeFileNames.h"
 
 #include <memory>
 #include <mutex>
@@ -25,12 +26,12 @@ namespace texsplat::nodes {
 ///     fileName  ""
 /// }
 /// @endcode
-class Mesh : public sg::Declare<Mesh, sg::Node> {
+class Mesh : public sg::Declare<Mesh, sg::Node>, public sg::RelativeFileNames {
 public:
     /// @brief The scene-file name.
     static constexpr const char* kTypeName = "Mesh";
 
-    sg::SFString fileName; ///< the glTF file (relative to the working directory)
+    sg::SFString fileName; ///< the glTF file (relative to the scene file's folder: sg::RelativeFileNames)
 
     /// @brief The triangles of the file, read on first use.
     /// @throws IoError, ParseError or DataError (prefixed with the node) when reading fails.

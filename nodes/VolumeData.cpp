@@ -6,6 +6,7 @@
 #include "nodes/volume/JetStream.h"
 #include "nodes/volume/Magnitude.h"
 #include "nodes/volume/MarschnerLobb.h"
+#include "nodes/volume/NpyVolume.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/volume/Tornado.h"
 #include "nodes/volume/VdbVolume.h"
@@ -48,45 +49,97 @@ VolumeData::VolumeData() {
     addField(resolution, "resolution", glm::vec3(64.0f));
     addField(time, "time", 0.0f);
     addField(component, "component", VolumeComponent::Magnitude, kVolumeComponentNames);
+    addField(dimensions, "dimensions", glm::vec3(0.0f));
+    addField(dataType, "dataType", volume::RawValueType::Float32, kVolumeDataTypeNames);
+    addField(byteOrder, "byteOrder", volume::RawEndian::Little, kVolumeByteOrderNames);
+    addField(headerBytes, "headerBytes", 0);
+    addField(components, "components", 1);
 }
 
-glm::i64vec3 VolumeData::dims() const {
+namespace {
+
+// Voxels per axis from an SFVec3f of whole numbers (Inventor has no integer vector field).
+glm::i64vec3 wholeNumbers(const sg::SFVec3f& field, const std::string& name) {
     // Beyond this a grid could not be held anyway, and the conversion stays exact.
     constexpr float kMaxSamples = 1e9f;
-    const glm::vec3 samples = resolution.value();
+    const glm::vec3 samples = field.value();
     for (int axis = 0; axis < 3; ++axis) {
         const float n = samples[axis];
         if (!(n >= 1.0f && n <= kMaxSamples) || std::floor(n) != n) {
-            throw DataError("resolution must hold whole numbers from 1 to 1e9, got " +
-                            resolution.valueText());
+            throw DataError(name + " must hold whole numbers from 1 to 1e9, got " +
+                            field.valueText());
         }
     }
     return glm::i64vec3(samples);
 }
 
+} // namespace
+
+glm::i64vec3 VolumeData::dims() const { return wholeNumbers(resolution, "resolution"); }
+
+volume::RawHeader VolumeData::headerlessLayout() const {
+    volume::RawHeader layout;
+    layout.dims = wholeNumbers(dimensions, "dimensions");
+    layout.type = dataType.as<volume::RawValueType>();
+    layout.endian = byteOrder.as<volume::RawEndian>();
+    if (components.value() != 1 && components.value() != 3) {
+        throw DataError("components must be 1 or 3, got " + components.valueText());
+    }
+    layout.components = components.value();
+    if (headerBytes.value() < 0) {
+        throw DataError("headerBytes must be 0 or more, got " + headerBytes.valueText());
+    }
+    return layout;
+}
+
 std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
     auto result = std::make_shared<Loaded>();
     const auto kind = source.as<VolumeSource>();
-    const auto requireFile = [this]() -> const std::string& {
+    const auto requireFile = [this]() -> std::string {
         if (fileName.value().empty()) {
             throw DataError("fileName is empty; source " +
                             *kVolumeSourceNames.name(source.value()) + " reads a file");
         }
-        return fileName.value();
+        return resolvedPath(fileName.value());
     };
     switch (kind) {
     case VolumeSource::FileRaw: {
-        const std::string& path = requireFile();
+        const std::string path = requireFile();
         result->grid = volume::readRawVolume(path, loadProgress(*this, path));
         break;
     }
+    case VolumeSource::FileRawHeaderless: {
+        const std::string path = requireFile();
+        result->grid = volume::readHeaderlessRawVolume(path, headerlessLayout(),
+                                                       headerBytes.value(),
+                                                       loadProgress(*this, path));
+        break;
+    }
+    case VolumeSource::FileNpy: {
+        const std::string path = requireFile();
+        result->grid = volume::readNpyVolume(path, loadProgress(*this, path));
+        break;
+    }
     case VolumeSource::FileVdb: {
-        const std::string& path = requireFile();
-        if (gridName.value().empty()) {
-            throw DataError("gridName is empty; source FILE_VDB needs the name of a grid in " +
-                            path);
+        const std::string path = requireFile();
+        std::string name = gridName.value();
+        if (name.empty()) {
+            // A file of one grid needs no name; otherwise say which names there are.
+            const std::vector<volume::VdbGridInfo> grids = volume::listVdbGrids(path);
+            if (grids.size() != 1) {
+                std::string names;
+                for (const volume::VdbGridInfo& grid : grids) {
+                    names += (names.empty() ? "" : ", ") + grid.name + " (" + grid.valueType + ")";
+                }
+                throw DataError(
+                    grids.empty() ? path + ": the file has no grids"
+                                  : "gridName is empty and " + path + " has " +
+                                        std::to_string(grids.size()) +
+                                        " grids; set gridName to one of: " + names);
+            }
+            name = grids.front().name;
         }
-        result->grid = volume::readVdbGrid(path, gridName.value(), loadProgress(*this, path));
+        result->grid = volume::readVdbGrid(path, name, loadProgress(*this, path));
         break;
     }
     case VolumeSource::Tornado:

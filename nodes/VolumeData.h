@@ -2,12 +2,14 @@
 
 #include "nodes/volume/Aerogel.h"
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/RawHeader.h"
 #include "scenegraph/Box3.h"
 #include "scenegraph/Declare.h"
 #include "scenegraph/EnumNames.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/fields/Fields.h"
 #include "scenegraph/fields/SFEnum.h"
+#include "scenegraph/io/RelativeFileNames.h"
 
 #include <memory>
 #include <mutex>
@@ -19,6 +21,9 @@ namespace texsplat::nodes {
 enum class VolumeSource {
     FileRaw,       ///< a texsplat-raw file (`fileName`), scalar or vector
     FileVdb,       ///< grid `gridName` of an OpenVDB file (`fileName`), scalar or vector
+    FileRawHeaderless, ///< raw values without a header (`fileName`), laid out as `dimensions`,
+                       ///< `dataType`, `byteOrder`, `headerBytes` and `components` say
+    FileNpy,           ///< a NumPy .npy array (`fileName`): (z, y, x) scalars, (z, y, x, 3) vectors
     Tornado,       ///< Crawfis's tornado (vectors; `resolution`, `time`)
     MarschnerLobb, ///< the Marschner-Lobb test signal (scalar; `resolution`)
     Blob,          ///< a sum of seeded Gaussians (scalar; `resolution`)
@@ -29,11 +34,28 @@ enum class VolumeSource {
 /// @brief Scene-file names of VolumeSource.
 inline const sg::EnumNames kVolumeSourceNames{{"FILE_RAW", VolumeSource::FileRaw},
                                               {"FILE_VDB", VolumeSource::FileVdb},
+                                              {"FILE_RAW_HEADERLESS",
+                                               VolumeSource::FileRawHeaderless},
+                                              {"FILE_NPY", VolumeSource::FileNpy},
                                               {"TORNADO", VolumeSource::Tornado},
                                               {"MARSCHNER_LOBB", VolumeSource::MarschnerLobb},
                                               {"BLOB", VolumeSource::Blob},
                                               {"JET_STREAM", VolumeSource::JetStream},
                                               {"AEROGEL", VolumeSource::Aerogel}};
+
+/// @brief Scene-file names of the value types of FILE_RAW_HEADERLESS (`dataType`).
+inline const sg::EnumNames kVolumeDataTypeNames{{"UINT8", volume::RawValueType::UInt8},
+                                                {"INT8", volume::RawValueType::Int8},
+                                                {"UINT16", volume::RawValueType::UInt16},
+                                                {"INT16", volume::RawValueType::Int16},
+                                                {"UINT32", volume::RawValueType::UInt32},
+                                                {"INT32", volume::RawValueType::Int32},
+                                                {"FLOAT32", volume::RawValueType::Float32},
+                                                {"FLOAT64", volume::RawValueType::Float64}};
+
+/// @brief Scene-file names of the byte orders of FILE_RAW_HEADERLESS (`byteOrder`).
+inline const sg::EnumNames kVolumeByteOrderNames{{"LITTLE", volume::RawEndian::Little},
+                                                 {"BIG", volume::RawEndian::Big}};
 
 /// @brief How VolumeData makes the scalar that scalar splats classify, from vector data.
 enum class VolumeComponent {
@@ -57,14 +79,21 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 ///
 /// Fields:
 /// - `source`: see VolumeSource.
-/// - `fileName`: the file for FILE_RAW and FILE_VDB (relative to the working directory).
-/// - `gridName`: FILE_VDB: the grid in the file; with `component SCALAR`: the generator's scalar
-///   grid (JET_STREAM: "cloudiness").
+/// - `fileName`: the file of the FILE_ sources. A relative name is relative to the folder of the
+///   scene file the node was read from (sg::RelativeFileNames), or to the working directory for
+///   a node made in C++; errors name the path tried.
+/// - `gridName`: FILE_VDB: the grid in the file (may stay empty when the file has one grid); with
+///   `component SCALAR`: the generator's scalar grid (JET_STREAM: "cloudiness").
 /// - `resolution`: samples along x, y, z for the generators, as an SFVec3f of whole numbers >= 1
 ///   (Inventor has no integer vector field); files bring their own.
 /// - `time`: animation time of TORNADO (frames) and JET_STREAM (days).
 /// - `component`: how scalarGrid() is made from vector data (VolumeComponent); scalar data is
 ///   used as it is with either value.
+/// - `dimensions`, `dataType`, `byteOrder`, `headerBytes`, `components`: the layout of a
+///   FILE_RAW_HEADERLESS file: voxels along x, y, z (whole numbers >= 1, x fastest in the file),
+///   the value type, the byte order of multi-byte values, bytes to skip before the values, and
+///   1 (scalars) or 3 (vectors, x y z interleaved per voxel). The file must hold exactly
+///   `headerBytes` plus the values.
 ///
 /// The node's bounding box is the box the grid's voxel cells cover (GridGeometry bounds) under
 /// the model matrix. During a traversal the node puts itself into VolumeElement. The accessors
@@ -73,15 +102,21 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 /// File format:
 /// @code
 /// VolumeData {
-///     source      BLOB   # FILE_RAW, FILE_VDB, TORNADO, MARSCHNER_LOBB, BLOB, JET_STREAM, AEROGEL
+///     source      BLOB   # FILE_RAW, FILE_VDB, FILE_RAW_HEADERLESS, FILE_NPY, TORNADO,
+///                        # MARSCHNER_LOBB, BLOB, JET_STREAM, AEROGEL
 ///     fileName    ""
 ///     gridName    ""
 ///     resolution  64 64 64
 ///     time        0
 ///     component   MAGNITUDE   # MAGNITUDE, SCALAR
+///     dimensions  0 0 0
+///     dataType    FLOAT32     # UINT8, INT8, UINT16, INT16, UINT32, INT32, FLOAT32, FLOAT64
+///     byteOrder   LITTLE      # LITTLE, BIG
+///     headerBytes 0
+///     components  1
 /// }
 /// @endcode
-class VolumeData : public sg::Declare<VolumeData, sg::Node> {
+class VolumeData : public sg::Declare<VolumeData, sg::Node>, public sg::RelativeFileNames {
 public:
     /// @brief The scene-file name.
     static constexpr const char* kTypeName = "VolumeData";
@@ -92,6 +127,11 @@ public:
     sg::SFVec3f resolution; ///< generator samples per axis (whole numbers)
     sg::SFFloat time;       ///< generator time
     sg::SFEnum component;   ///< VolumeComponent
+    sg::SFVec3f dimensions; ///< FILE_RAW_HEADERLESS voxels per axis (whole numbers)
+    sg::SFEnum dataType;    ///< FILE_RAW_HEADERLESS value type (volume::RawValueType)
+    sg::SFEnum byteOrder;   ///< FILE_RAW_HEADERLESS byte order (volume::RawEndian)
+    sg::SFInt32 headerBytes; ///< FILE_RAW_HEADERLESS bytes before the values
+    sg::SFInt32 components; ///< FILE_RAW_HEADERLESS values per voxel: 1 or 3
 
     /// @brief The scalar field for scalar splats: scalar data as it is, vector data as
     /// `component` says. Loads on first use.
@@ -133,6 +173,7 @@ private:
     std::shared_ptr<const Loaded> loaded() const;
     std::shared_ptr<const Loaded> load() const;
     glm::i64vec3 dims() const;
+    volume::RawHeader headerlessLayout() const;
 
     mutable std::mutex mMutex;
     mutable std::shared_ptr<const Loaded> mLoaded;

@@ -10,6 +10,7 @@ packages=(
     libcli11-dev libglfw3-dev libimgui-dev
     libgtest-dev libbenchmark-dev libcoin-dev
     clang libclang-rt-14-dev xvfb xauth locales
+    python3-numpy
 )
 apt-get update
 apt-get install -y --no-install-recommends "${packages[@]}"

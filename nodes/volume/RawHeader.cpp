@@ -1,6 +1,7 @@
 #include "nodes/volume/RawHeader.h"
 
 #include "nodes/volume/GridGeometry.h"
+#include "nodes/volume/detail/Printable.h"
 #include "scenegraph/Error.h"
 
 #include <charconv>
@@ -12,6 +13,9 @@
 
 namespace texsplat::volume {
 namespace {
+
+using detail::isText;
+using detail::printable;
 
 constexpr std::string_view kMagic = "texsplat-raw";
 constexpr std::size_t kMaxLineLength = 1024;
@@ -80,7 +84,8 @@ void expectValueCount(const HeaderReader& reader, const Line& line, std::size_t 
     if (found == count)
         return;
     const int column = found > count ? line.tokens[count + 1].column : line.tokens[0].column;
-    throw ParseError(reader.where(line.number, column) + "'" + line.tokens[0].text + "' takes " +
+    throw ParseError(reader.where(line.number, column) + "'" + printable(line.tokens[0].text) +
+                     "' takes " +
                      std::to_string(count) + " value" + (count == 1 ? "" : "s") + ", found " +
                      std::to_string(found));
 }
@@ -95,7 +100,8 @@ Number parseNumber(const HeaderReader& reader, const Line& line, std::size_t ind
     const auto [end, error] = std::from_chars(first, last, value);
     if (error != std::errc() || end != last)
         throw ParseError(reader.where(line.number, token.column) + "expected " + kind + " for '" +
-                         line.tokens[0].text + "', found '" + token.text + "'");
+                         printable(line.tokens[0].text) + "', found '" + printable(token.text) +
+                         "'");
     return value;
 }
 
@@ -111,12 +117,14 @@ void checkGeometry(const HeaderReader& reader, const Line& line, const glm::i64v
 
 RawValueType parseType(const HeaderReader& reader, const Line& line) {
     const std::string& name = line.tokens[1].text;
-    for (RawValueType type : {RawValueType::Float32, RawValueType::Float64, RawValueType::UInt8,
-                              RawValueType::UInt16})
+    for (RawValueType type : {RawValueType::UInt8, RawValueType::Int8, RawValueType::UInt16,
+                              RawValueType::Int16, RawValueType::UInt32, RawValueType::Int32,
+                              RawValueType::Float32, RawValueType::Float64})
         if (name == toString(type))
             return type;
-    throw ParseError(reader.where(line.number, line.tokens[1].column) + "unknown type '" + name +
-                     "'; expected float32, float64, uint8 or uint16");
+    throw ParseError(reader.where(line.number, line.tokens[1].column) + "unknown type '" +
+                     printable(name) +
+                     "'; expected uint8, int8, uint16, int16, uint32, int32, float32 or float64");
 }
 
 } // namespace
@@ -127,19 +135,29 @@ const char* toString(RawValueType type) {
     case RawValueType::Float64: return "float64";
     case RawValueType::UInt8: return "uint8";
     case RawValueType::UInt16: return "uint16";
+    case RawValueType::Int8: return "int8";
+    case RawValueType::Int16: return "int16";
+    case RawValueType::UInt32: return "uint32";
+    case RawValueType::Int32: return "int32";
     }
     return "unknown";
 }
 
-int RawHeader::bytesPerValue() const {
+int bytesPerValue(RawValueType type) {
     switch (type) {
-    case RawValueType::Float32: return 4;
+    case RawValueType::UInt8:
+    case RawValueType::Int8: return 1;
+    case RawValueType::UInt16:
+    case RawValueType::Int16: return 2;
+    case RawValueType::Float32:
+    case RawValueType::UInt32:
+    case RawValueType::Int32: return 4;
     case RawValueType::Float64: return 8;
-    case RawValueType::UInt8: return 1;
-    case RawValueType::UInt16: return 2;
     }
     return 0;
 }
+
+int RawHeader::bytesPerValue() const { return volume::bytesPerValue(type); }
 
 std::int64_t RawHeader::dataBytes() const {
     const std::int64_t valueBytes = std::int64_t{bytesPerValue()} * components;
@@ -153,14 +171,20 @@ std::int64_t RawHeader::dataBytes() const {
 RawHeader RawHeader::parse(std::istream& in, const std::string& source) {
     HeaderReader reader(in, source);
     Line line;
-    if (!reader.next(line) || line.tokens.size() != 2 || line.tokens[0].text != kMagic) {
+    const bool hasFirstLine = reader.next(line);
+    if (!hasFirstLine || line.tokens.size() != 2 || line.tokens[0].text != kMagic) {
         const std::string found = line.tokens.empty() ? "" : line.tokens[0].text;
-        throw ParseError(reader.where(1, 1) + "expected 'texsplat-raw 1' on the first line" +
-                         (found.empty() ? std::string() : ", found '" + found + "'"));
+        std::string what = "expected 'texsplat-raw 1' on the first line";
+        if (hasFirstLine && !found.empty())
+            what += isText(found) ? ", found '" + printable(found) + "'"
+                                  : std::string(", found binary data (a headerless raw file? "
+                                                "describe it in the scene: VolumeData source "
+                                                "FILE_RAW_HEADERLESS)");
+        throw ParseError(reader.where(1, 1) + what);
     }
     if (line.tokens[1].text != "1")
         throw ParseError(reader.where(1, line.tokens[1].column) +
-                         "unsupported texsplat-raw version '" + line.tokens[1].text +
+                         "unsupported texsplat-raw version '" + printable(line.tokens[1].text) +
                          "'; this reader reads version 1");
 
     RawHeader header;
@@ -171,7 +195,8 @@ RawHeader RawHeader::parse(std::istream& in, const std::string& source) {
         const std::string& key = line.tokens[0].text;
         const auto [previous, isNew] = seen.emplace(key, line.number);
         if (!isNew)
-            throw ParseError(reader.where(line.number, 1) + "duplicate header key '" + key +
+            throw ParseError(reader.where(line.number, 1) + "duplicate header key '" +
+                             printable(key) +
                              "' (first given on line " + std::to_string(previous->second) + ")");
         if (key == "dims") {
             expectValueCount(reader, line, 3);
@@ -186,7 +211,8 @@ RawHeader RawHeader::parse(std::istream& in, const std::string& source) {
             header.components = parseNumber<int>(reader, line, 1, "an integer");
             if (header.components != 1 && header.components != 3)
                 throw ParseError(reader.where(line.number, line.tokens[1].column) +
-                                 "components must be 1 or 3, found " + line.tokens[1].text);
+                                 "components must be 1 or 3, found " +
+                                 printable(line.tokens[1].text));
         } else if (key == "spacing" || key == "origin") {
             expectValueCount(reader, line, 3);
             glm::dvec3& target = key == "spacing" ? header.spacing : header.origin;
@@ -198,7 +224,8 @@ RawHeader RawHeader::parse(std::istream& in, const std::string& source) {
             const std::string& name = line.tokens[1].text;
             if (name != "little" && name != "big")
                 throw ParseError(reader.where(line.number, line.tokens[1].column) +
-                                 "unknown endian '" + name + "'; expected little or big");
+                                 "unknown endian '" + printable(name) +
+                                 "'; expected little or big");
             header.endian = name == "little" ? RawEndian::Little : RawEndian::Big;
         } else if (key == "data") {
             expectValueCount(reader, line, 0);
@@ -208,7 +235,8 @@ RawHeader RawHeader::parse(std::istream& in, const std::string& source) {
                                      required + "' line");
             return header;
         } else {
-            throw ParseError(reader.where(line.number, 1) + "unknown header key '" + key +
+            throw ParseError(reader.where(line.number, 1) + "unknown header key '" +
+                             printable(key) +
                              "'; expected dims, type, components, spacing, origin, endian or data");
         }
     }

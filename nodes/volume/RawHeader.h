@@ -9,8 +9,9 @@
 
 namespace texsplat::volume {
 
-/// @brief Binary type of the values in a texsplat-raw file.
-enum class RawValueType { Float32, Float64, UInt8, UInt16 };
+/// @brief Binary type of the values in a texsplat-raw file (and of headerless raw and NumPy data,
+/// which share the decoding).
+enum class RawValueType { Float32, Float64, UInt8, UInt16, Int8, Int16, UInt32, Int32 };
 
 /// @brief Byte order of the values in a texsplat-raw file.
 enum class RawEndian { Little, Big };
@@ -63,5 +64,8 @@ struct RawHeader {
 
 /// @brief The header keyword of a value type ("float32").
 const char* toString(RawValueType type);
+
+/// @brief Bytes of one value of `type`.
+int bytesPerValue(RawValueType type);
 
 } // namespace texsplat::volume

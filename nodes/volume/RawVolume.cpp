@@ -2,6 +2,7 @@
 
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/RawHeader.h"
+#include "nodes/volume/detail/RawData.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 
@@ -11,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -40,11 +42,15 @@ void decode(RawValueType type, const unsigned char* bytes, std::size_t count, bo
     case RawValueType::Float64: decode<double>(bytes, count, swapBytes, out); break;
     case RawValueType::UInt8: decode<std::uint8_t>(bytes, count, swapBytes, out); break;
     case RawValueType::UInt16: decode<std::uint16_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::Int8: decode<std::int8_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::Int16: decode<std::int16_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::UInt32: decode<std::uint32_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::Int32: decode<std::int32_t>(bytes, count, swapBytes, out); break;
     }
 }
 
-std::string sizeDescription(const RawHeader& header) {
-    return "the header asks for " + std::to_string(header.dims.x) + " x " +
+std::string sizeDescription(const RawHeader& header, const std::string& subject) {
+    return subject + " " + std::to_string(header.dims.x) + " x " +
            std::to_string(header.dims.y) + " x " + std::to_string(header.dims.z) + " voxels x " +
            std::to_string(header.components) +
            (header.components == 1 ? " component x " : " components x ") +
@@ -54,7 +60,7 @@ std::string sizeDescription(const RawHeader& header) {
 
 // Reads the values chunk by chunk into `store(firstValue, values, count)`, reporting progress.
 template <typename Store>
-void readValues(std::ifstream& in, const std::string& path, const RawHeader& header,
+void readValues(std::istream& in, const std::string& path, const RawHeader& header,
                 const ProgressCallback& progress, Store store) {
     const std::int64_t valueBytes = header.bytesPerValue();
     const std::int64_t totalValues = header.dataBytes() / valueBytes;
@@ -143,38 +149,107 @@ AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress)
             throw DataError(path + ": " + error.what());
         }
     }();
+    const std::string subject = "the header asks for";
     if (available < needed)
-        throw DataError(path + ": truncated data: " + sizeDescription(header) + ", but only " +
-                        std::to_string(available) + " bytes follow it");
+        throw DataError(path + ": truncated data: " + sizeDescription(header, subject) +
+                        ", but only " + std::to_string(available) + " bytes follow it");
     if (available > needed)
-        throw DataError(path + ": data size mismatch: " + sizeDescription(header) + ", but " +
-                        std::to_string(available) + " bytes follow it");
+        throw DataError(path + ": data size mismatch: " + sizeDescription(header, subject) +
+                        ", but " + std::to_string(available) + " bytes follow it");
+    return detail::readRawData(in, path, header, detail::RawOrder::XFastest, progress);
+}
 
-    const GridGeometry geometry(header.dims, header.origin, header.spacing);
+AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout,
+                                std::int64_t headerBytes, const ProgressCallback& progress) {
+    std::ifstream in = detail::openForReading(path);
+    if (headerBytes < 0)
+        throw DataError(path + ": headerBytes must be 0 or more, got " +
+                        std::to_string(headerBytes));
+    std::error_code sizeError;
+    const auto fileSize = static_cast<std::int64_t>(std::filesystem::file_size(path, sizeError));
+    if (sizeError)
+        throw IoError(path + ": cannot read file size (" + sizeError.message() + ")");
+    const std::int64_t needed = [&] {
+        try {
+            const std::int64_t dataBytes = layout.dataBytes();
+            if (dataBytes > std::numeric_limits<std::int64_t>::max() - headerBytes)
+                throw DataError("the file would exceed 2^63 bytes");
+            return dataBytes + headerBytes;
+        } catch (const DataError& error) {
+            throw DataError(path + ": " + error.what());
+        }
+    }();
+    if (fileSize != needed)
+        throw DataError(path + ": file size mismatch: " +
+                        sizeDescription(layout, "the scene describes") + ", plus " +
+                        std::to_string(headerBytes) + " header bytes = " +
+                        std::to_string(needed) + " bytes, but the file has " +
+                        std::to_string(fileSize) + " bytes");
+    in.seekg(static_cast<std::streamoff>(headerBytes));
+    return detail::readRawData(in, path, layout, detail::RawOrder::XFastest, progress);
+}
+
+namespace detail {
+
+AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& layout,
+                    RawOrder order, const ProgressCallback& progress) {
+    const GridGeometry geometry(layout.dims, layout.origin, layout.spacing);
+    const glm::i64vec3 dims = layout.dims;
+    const std::int64_t voxels = geometry.voxelCount();
+    // Our index of value number `n` of a file that stores z fastest (NumPy's Fortran order of a
+    // (z, y, x[, component]) array: each component is a block of its own).
+    const auto zFastest = [dims, voxels](std::int64_t n, std::int64_t& voxel, int& component) {
+        component = static_cast<int>(n / voxels);
+        const std::int64_t rest = n % voxels;
+        const std::int64_t z = rest % dims.z;
+        const std::int64_t y = (rest / dims.z) % dims.y;
+        const std::int64_t x = rest / (dims.z * dims.y);
+        voxel = x + dims.x * (y + dims.y * z);
+    };
     AnyGrid result;
-    if (header.components == 1) {
+    if (layout.components == 1) {
         auto grid = std::make_shared<DenseScalarGrid>(geometry);
         float* target = grid->values().data();
-        readValues(in, path, header, progress,
-                   [target](std::int64_t first, const float* values, std::int64_t count) {
-                       std::copy(values, values + count, target + first);
+        readValues(in, path, layout, progress,
+                   [&](std::int64_t first, const float* values, std::int64_t count) {
+                       if (order == RawOrder::XFastest) {
+                           std::copy(values, values + count, target + first);
+                           return;
+                       }
+                       std::int64_t voxel = 0;
+                       int component = 0;
+                       for (std::int64_t i = 0; i < count; ++i) {
+                           zFastest(first + i, voxel, component);
+                           target[voxel] = values[i];
+                       }
                    });
         detail::checkFiniteVoxels(path, grid->statistics());
         result = grid;
     } else {
         auto grid = std::make_shared<DenseVectorGrid>(geometry);
         glm::vec3* target = grid->values().data();
-        readValues(in, path, header, progress,
-                   [target](std::int64_t first, const float* values, std::int64_t count) {
-                       for (std::int64_t i = 0; i < count; i += 3)
-                           target[(first + i) / 3] = glm::vec3(values[i], values[i + 1],
-                                                               values[i + 2]);
+        readValues(in, path, layout, progress,
+                   [&](std::int64_t first, const float* values, std::int64_t count) {
+                       if (order == RawOrder::XFastest) {
+                           for (std::int64_t i = 0; i < count; i += 3)
+                               target[(first + i) / 3] =
+                                   glm::vec3(values[i], values[i + 1], values[i + 2]);
+                           return;
+                       }
+                       std::int64_t voxel = 0;
+                       int component = 0;
+                       for (std::int64_t i = 0; i < count; ++i) {
+                           zFastest(first + i, voxel, component);
+                           target[voxel][component] = values[i];
+                       }
                    });
         detail::checkFiniteVoxels(path, grid->statistics());
         result = grid;
     }
     return result;
 }
+
+} // namespace detail
 
 void writeRawVolume(const std::string& path, const ScalarGrid& grid) { writeGrid(path, grid, 1); }
 

@@ -25,7 +25,12 @@ std::shared_ptr<Node> SceneReader::readFile(const std::string& path) {
     if (file.bad()) {
         throw IoError(path + ": cannot read scene file");
     }
-    return readString(contents.str(), path);
+    // Relative file names in the scene (VolumeData's fileName) mean files beside it.
+    std::error_code error;
+    const std::filesystem::path absolute = std::filesystem::absolute(path, error);
+    const std::string text = contents.str(); // the parser views it
+    detail::SceneParser parser(text, path, error ? std::string() : absolute.parent_path().string());
+    return parser.parseFile();
 }
 
 std::shared_ptr<Node> SceneReader::readString(std::string_view text, const std::string& fileName) {

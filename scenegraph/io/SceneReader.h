@@ -25,10 +25,12 @@ namespace texsplat::sg {
 class SceneReader {
 public:
     /// @brief Reads the file at `path`. Throws IoError when it cannot be read, ParseError when
-    /// its content is not a valid scene.
+    /// its content is not a valid scene. Nodes that read files (RelativeFileNames) resolve
+    /// relative names against the folder of `path`.
     static std::shared_ptr<Node> readFile(const std::string& path);
 
-    /// @brief Reads scene text; `fileName` names it in messages.
+    /// @brief Reads scene text; `fileName` names it in messages. Relative file names in the
+    /// scene stay relative to the working directory.
     static std::shared_ptr<Node> readString(std::string_view text,
                                             const std::string& fileName = "<string>");
 };

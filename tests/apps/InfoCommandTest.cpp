@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -75,6 +77,98 @@ TEST_F(InfoCommandTest, readsEveryExampleSceneWithTheNodesLibrarysTypes) {
         EXPECT_EQ(output.exitCode, 0) << name << ": " << output.standardError;
         EXPECT_NE(output.standardOutput.find("VolumeData {"), std::string::npos) << name;
     }
+}
+
+// The bytes of values 0, 1, ..., count - 1 as little-endian float32.
+std::string floatRamp(int count) {
+    std::string bytes;
+    for (int i = 0; i < count; ++i) {
+        const float value = static_cast<float>(i);
+        unsigned char word[4];
+        std::memcpy(word, &value, 4);
+        if (__BYTE_ORDER__ != __ORDER_LITTLE_ENDIAN__)
+            std::reverse(word, word + 4);
+        bytes.append(reinterpret_cast<const char*>(word), 4);
+    }
+    return bytes;
+}
+
+// What a scene needs for a data file: dimensions (x fastest: a (2, 3, 4) array is 4 x 3 x 2),
+// voxel size, bounds, active voxels, value range and a histogram whose counts add up.
+TEST_F(InfoCommandTest, describesANumpyFile) {
+    std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 3, 4), }";
+    header.resize(128 - 10 - 1, ' ');
+    header += '\n';
+    const std::string path = write("ramp.npy", std::string("\x93NUMPY\x01\x00", 8) +
+                                                   char(header.size()) + '\0' + header +
+                                                   floatRamp(24));
+    const auto output = runTexsplat("info " + path);
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    const std::string full(40, '#');
+    const std::string part(27, '#');
+    EXPECT_EQ(output.standardOutput,
+              path + ": NumPy .npy, dtype '<f4' (float32), shape (2, 3, 4), C order\n"
+                     "  values        scalar\n"
+                     "  dimensions    4 x 3 x 2 voxels (x, y, z)\n"
+                     "  voxel size    1 x 1 x 1\n"
+                     "  bounding box  (-0.5, -0.5, -0.5) .. (3.5, 2.5, 1.5)\n"
+                     "  active voxels 24 of 24\n"
+                     "  value range   0 .. 23\n"
+                     "  histogram (10 bins)\n"
+                     "               0 .. 2.3                   3 " + full + "\n"
+                     "             2.3 .. 4.6                   2 " + part + "\n"
+                     "             4.6 .. 6.9                   2 " + part + "\n"
+                     "             6.9 .. 9.2                   3 " + full + "\n"
+                     "             9.2 .. 11.5                  2 " + part + "\n"
+                     "            11.5 .. 13.8                  2 " + part + "\n"
+                     "            13.8 .. 16.1                  3 " + full + "\n"
+                     "            16.1 .. 18.4                  2 " + part + "\n"
+                     "            18.4 .. 20.7                  2 " + part + "\n"
+                     "            20.7 .. 23                    3 " + full + "\n"
+                     "  scene         VolumeData { source FILE_NPY fileName \"" + path + "\" }\n");
+}
+
+TEST_F(InfoCommandTest, describesATexsplatRawFileOfVectors) {
+    const std::string path =
+        write("wind.raw", "texsplat-raw 1\ndims 2 1 1\ntype float32\ncomponents 3\n"
+                          "spacing 0.5 2 3\norigin 10 20 30\ndata\n" + floatRamp(6));
+    const auto output = runTexsplat("info " + path);
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    const std::string text = output.standardOutput;
+    EXPECT_EQ(text.substr(0, text.find("  histogram")),
+              path + ": texsplat-raw, float32, little endian\n"
+                     "  values        vector (3 components)\n"
+                     "  dimensions    2 x 1 x 1 voxels (x, y, z)\n"
+                     "  voxel size    0.5 x 2 x 3\n"
+                     "  bounding box  (9.75, 19, 28.5) .. (10.75, 21, 31.5)\n"
+                     "  active voxels 2 of 2\n"
+                     "  length range  2.236068 .. 7.071068\n");
+    EXPECT_NE(
+        text.find("  scene         VolumeData { source FILE_RAW fileName \"" + path + "\" }\n"),
+        std::string::npos);
+}
+
+// A headerless .raw: the message says which format was expected and how to describe the file,
+// and prints none of its bytes.
+TEST_F(InfoCommandTest, aHeaderlessRawFileGetsTheFormatNamedNotItsBytes) {
+    const std::string path = write("ct.raw", std::string("\x8c\xe9\x02\xfa\x80U\x00\x00", 8));
+    const auto output = runTexsplat("info " + path);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardOutput, "");
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: " + path +
+                  ":1:1: expected 'texsplat-raw 1' on the first line, found binary data (a "
+                  "headerless raw file? describe it in the scene: VolumeData source "
+                  "FILE_RAW_HEADERLESS)\n");
+}
+
+TEST_F(InfoCommandTest, aBrokenDataFileGetsTheReadersMessage) {
+    const std::string path = write("broken.npy", std::string("\x93NUMPY\x07\x00", 8));
+    const auto output = runTexsplat("info " + path);
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError, "texsplat: error: " + path +
+                                        ": unsupported .npy format version 7.0; this reader "
+                                        "reads versions 1, 2 and 3\n");
 }
 
 TEST_F(InfoCommandTest, referenceListsTypesWithFieldsAndDefaults) {

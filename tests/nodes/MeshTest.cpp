@@ -1,12 +1,15 @@
 #include "nodes/Mesh.h"
 
 #include "SceneNodesTestSupport.h"
+#include "nodes/NodeTypes.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/io/SceneReader.h"
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <string>
 
@@ -68,6 +71,19 @@ TEST(Mesh, readsATriangleWithItsNodeTransformAndBaseColour) {
     sg::BoundingBoxAction action;
     action.apply(*root);
     EXPECT_EQ(action.boundingBox(), sg::Box3(glm::vec3(10, 0, 0), glm::vec3(12, 2, 0)));
+}
+
+TEST(Mesh, aRelativeFileNameIsResolvedAgainstTheSceneFilesFolder) {
+    registerNodeTypes();
+    const std::string name =
+        std::filesystem::path(writeFile("relative.gltf", triangleGltf("4", ""))).filename();
+    // The scene names the file relative to its own folder, which is not the working directory.
+    const std::string scene = writeFile(
+        "relative-mesh.iv", "#Inventor V2.1 ascii\nMesh { fileName \"" + name + "\" }\n");
+    const sg::Node::Ptr root = sg::SceneReader::readFile(scene);
+    const auto& mesh = static_cast<const Mesh&>(*root);
+    EXPECT_EQ(mesh.fileName.value(), name);
+    EXPECT_EQ(mesh.triangleMesh()->positions.size(), 3u);
 }
 
 TEST(Mesh, rereadsWhenTheFileNameChanges) {

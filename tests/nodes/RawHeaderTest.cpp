@@ -6,6 +6,7 @@
 
 #include <sstream>
 #include <string>
+#include <utility>
 
 namespace texsplat::volume {
 namespace {
@@ -76,6 +77,35 @@ TEST(RawHeader, defaultsAndFormatRoundTrip) {
     EXPECT_EQ(back.endian, header.endian);
 }
 
+// A headerless raw file read as texsplat-raw: the message names the format expected and says
+// what to do, and never puts the file's bytes on the terminal.
+TEST(RawHeader, binaryDataIsNamedNotPrinted) {
+    EXPECT_EQ(errorOf(std::string("\x01\x02\xff\xfe\x00\x80 junk\n", 12)),
+              "ParseError: grid.raw:1:1: expected 'texsplat-raw 1' on the first line, found "
+              "binary data (a headerless raw file? describe it in the scene: VolumeData source "
+              "FILE_RAW_HEADERLESS)");
+    EXPECT_EQ(errorOf(std::string(2000, '\x07')),
+              "ParseError: grid.raw:1:1: header line longer than 1024 characters; is this a "
+              "texsplat-raw file?");
+    EXPECT_EQ(errorOf("texsplat-raw 1\ndims 4 \x9b\x01 4\n"),
+              "ParseError: grid.raw:2:8: expected an integer for 'dims', found '\\x9b\\x01'");
+    EXPECT_EQ(errorOf("texsplat-raw \xff\n"), "ParseError: grid.raw:1:14: unsupported "
+                                              "texsplat-raw version '\\xff'; this reader reads "
+                                              "version 1");
+}
+
+TEST(RawHeader, readsEveryValueType) {
+    const std::pair<const char*, int> types[] = {{"uint8", 1},  {"int8", 1},  {"uint16", 2},
+                                                 {"int16", 2},  {"uint32", 4}, {"int32", 4},
+                                                 {"float32", 4}, {"float64", 8}};
+    for (const auto& [name, bytes] : types) {
+        const RawHeader header =
+            parse(std::string("texsplat-raw 1\ndims 2 1 1\ntype ") + name + "\ndata\n");
+        EXPECT_STREQ(toString(header.type), name);
+        EXPECT_EQ(header.dataBytes(), 2 * bytes) << name;
+    }
+}
+
 TEST(RawHeader, reportsGrammarErrorsWithLineAndColumn) {
     const std::string start = "texsplat-raw 1\n";
     EXPECT_EQ(errorOf(""), "ParseError: grid.raw:1:1: expected 'texsplat-raw 1' on the first line");
@@ -93,8 +123,9 @@ TEST(RawHeader, reportsGrammarErrorsWithLineAndColumn) {
               "ParseError: grid.raw:2:8: expected an integer for 'dims', found '4.5'");
     EXPECT_EQ(errorOf(start + "spacing 1 1 one\n"),
               "ParseError: grid.raw:2:13: expected a number for 'spacing', found 'one'");
-    EXPECT_EQ(errorOf(start + "type int32\n"), "ParseError: grid.raw:2:6: unknown type 'int32'; "
-                                                "expected float32, float64, uint8 or uint16");
+    EXPECT_EQ(errorOf(start + "type int64\n"),
+              "ParseError: grid.raw:2:6: unknown type 'int64'; expected uint8, int8, uint16, "
+              "int16, uint32, int32, float32 or float64");
     EXPECT_EQ(errorOf(start + "components 2\n"),
               "ParseError: grid.raw:2:12: components must be 1 or 3, found 2");
     EXPECT_EQ(errorOf(start + "endian middle\n"),

@@ -210,5 +210,72 @@ TEST(RawVolume, reportsBadHeadersAndZeroSizeGrids) {
               empty + ":2:6: grid dimensions must be at least 1 voxel each, got 8 x 0 x 8");
 }
 
+RawHeader headerlessLayout(glm::i64vec3 dims, RawValueType type, int components = 1,
+                           RawEndian endian = RawEndian::Little) {
+    RawHeader layout;
+    layout.dims = dims;
+    layout.type = type;
+    layout.components = components;
+    layout.endian = endian;
+    return layout;
+}
+
+TEST(RawVolume, readsHeaderlessFilesOfEveryTypeAndByteOrder) {
+    const std::string skipped = "sixteen bytes...";
+    const auto check = [&](auto values, RawValueType type, RawEndian endian) {
+        const bool swap = endian == RawEndian::Big;
+        const std::string path = writeFile(std::string(toString(type)) + (swap ? "be" : "le"),
+                                           skipped, values, swap);
+        const ScalarGridPtr grid = std::get<ScalarGridPtr>(
+            readHeaderlessRawVolume(path, headerlessLayout({2, 1, 2}, type, 1, endian), 16));
+        EXPECT_EQ(grid->geometry(), GridGeometry({2, 1, 2})) << toString(type);
+        for (int k = 0; k < 2; ++k)
+            for (int i = 0; i < 2; ++i)
+                EXPECT_EQ(grid->value({i, 0, k}), float(values[std::size_t(i + 2 * k)]))
+                    << toString(type) << " " << i << " " << k;
+    };
+    for (RawEndian endian : {RawEndian::Little, RawEndian::Big}) {
+        check(std::vector<std::uint8_t>{0, 1, 200, 255}, RawValueType::UInt8, endian);
+        check(std::vector<std::int8_t>{-128, -1, 0, 127}, RawValueType::Int8, endian);
+        check(std::vector<std::uint16_t>{0, 1, 300, 65535}, RawValueType::UInt16, endian);
+        check(std::vector<std::int16_t>{-32768, -2, 300, 32767}, RawValueType::Int16, endian);
+        check(std::vector<std::uint32_t>{0, 7, 70000, 16777216}, RawValueType::UInt32, endian);
+        check(std::vector<std::int32_t>{-16777216, -3, 70000, 5}, RawValueType::Int32, endian);
+        check(std::vector<float>{-1.5f, 0.25f, 3e10f, 7.0f}, RawValueType::Float32, endian);
+        check(std::vector<double>{-1.5, 0.25, 1e-3, 7.0}, RawValueType::Float64, endian);
+    }
+}
+
+TEST(RawVolume, readsHeaderlessVectors) {
+    const std::vector<float> values = {1, 2, 3, 4, 5, 6};
+    const std::string path = writeFile("vectors.raw", "", values);
+    const VectorGridPtr grid = std::get<VectorGridPtr>(
+        readHeaderlessRawVolume(path, headerlessLayout({2, 1, 1}, RawValueType::Float32, 3), 0));
+    EXPECT_EQ(grid->value({0, 0, 0}), glm::vec3(1, 2, 3));
+    EXPECT_EQ(grid->value({1, 0, 0}), glm::vec3(4, 5, 6));
+}
+
+TEST(RawVolume, headerlessSizeMismatchNamesBothByteCounts) {
+    const std::string path = writeFile("short.raw", "", std::vector<float>(60, 1.0f));
+    const auto errorOfHeaderless = [&](const RawHeader& layout, std::int64_t headerBytes) {
+        try {
+            readHeaderlessRawVolume(path, layout, headerBytes);
+        } catch (const DataError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no such error");
+    };
+    EXPECT_EQ(errorOfHeaderless(headerlessLayout({4, 4, 4}, RawValueType::Float32), 0),
+              path + ": file size mismatch: the scene describes 4 x 4 x 4 voxels x 1 component x 4 "
+                     "bytes (float32) = 256 bytes, plus 0 header bytes = 256 bytes, but the file "
+                     "has 240 bytes");
+    EXPECT_EQ(errorOfHeaderless(headerlessLayout({4, 4, 2}, RawValueType::UInt16, 3), 16),
+              path + ": file size mismatch: the scene describes 4 x 4 x 2 voxels x 3 components x "
+                     "2 bytes (uint16) = 192 bytes, plus 16 header bytes = 208 bytes, but the file "
+                     "has 240 bytes");
+    EXPECT_EQ(errorOfHeaderless(headerlessLayout({4, 4, 2}, RawValueType::UInt16, 3), -1),
+              path + ": headerBytes must be 0 or more, got -1");
+}
+
 } // namespace
 } // namespace texsplat::volume

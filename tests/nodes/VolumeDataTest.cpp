@@ -1,6 +1,7 @@
 #include "nodes/VolumeData.h"
 
 #include "SceneNodesTestSupport.h"
+#include "nodes/NodeTypes.h"
 #include "nodes/Transform.h"
 #include "nodes/elements/VolumeElement.h"
 #include "nodes/volume/DenseGrid.h"
@@ -10,6 +11,7 @@
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/io/SceneReader.h"
 
 #include <gtest/gtest.h>
 
@@ -18,6 +20,7 @@
 #endif
 
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -185,15 +188,199 @@ TEST(VolumeData, readsAGridOfAnOpenVdbFile) {
     volume->setName("cloud");
     volume->source.setValue(VolumeSource::FileVdb);
     volume->fileName = path;
-    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
-              "VolumeData 'cloud': gridName is empty; source FILE_VDB needs the name of a grid "
-              "in " + path);
     volume->gridName = "density";
     const volume::ScalarGridPtr grid = volume->scalarGrid();
     EXPECT_EQ(grid->geometry().dims(), glm::i64vec3(1));
     EXPECT_EQ(grid->value({0, 0, 0}), 2.5f);
 }
+
+TEST(VolumeData, aFileOfOneGridNeedsNoGridNameAndOtherwiseTheGridsAreListed) {
+    openvdb::initialize();
+    auto density = openvdb::FloatGrid::create(0.0f);
+    density->setName("density");
+    density->getAccessor().setValue({3, 4, 5}, 2.5f);
+    const std::string one = testPath("one.vdb");
+    openvdb::io::File(one).write({density});
+    const auto volume = VolumeData::create();
+    volume->setName("cloud");
+    volume->source.setValue(VolumeSource::FileVdb);
+    volume->fileName = one;
+    EXPECT_EQ(volume->scalarGrid()->value({0, 0, 0}), 2.5f);
+
+    auto velocity = openvdb::Vec3SGrid::create();
+    velocity->setName("velocity");
+    velocity->getAccessor().setValue({0, 0, 0}, openvdb::Vec3s(1.0f, 0.0f, 0.0f));
+    const std::string two = testPath("two.vdb");
+    openvdb::io::File(two).write({density, velocity});
+    volume->fileName = two;
+    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': gridName is empty and " + two +
+                  " has 2 grids; set gridName to one of: density (float), velocity (vec3s)");
+    volume->gridName = "pressure";
+    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': " + two +
+                  ": no grid named 'pressure'; the file has: density (float), velocity (vec3s)");
+    volume->gridName = "velocity";
+    EXPECT_EQ(volume->vectorGrid()->value({0, 0, 0}), glm::vec3(1.0f, 0.0f, 0.0f));
+
+    const std::string none = testPath("none.vdb");
+    openvdb::io::File(none).write(openvdb::GridCPtrVec());
+    volume->fileName = none;
+    volume->gridName = "";
+    EXPECT_EQ(errorOf<DataError>([&] { volume->scalarGrid(); }),
+              "VolumeData 'cloud': " + none + ": the file has no grids");
+}
 #endif
+
+// Restores the working directory when it goes out of scope.
+class WorkingDirectory {
+public:
+    explicit WorkingDirectory(const std::filesystem::path& directory)
+        : mPrevious(std::filesystem::current_path()) {
+        std::filesystem::current_path(directory);
+    }
+    ~WorkingDirectory() { std::filesystem::current_path(mPrevious); }
+    WorkingDirectory(const WorkingDirectory&) = delete;
+    WorkingDirectory& operator=(const WorkingDirectory&) = delete;
+
+private:
+    std::filesystem::path mPrevious;
+};
+
+// A folder of its own for the test, made empty.
+std::filesystem::path testFolder(const std::string& name) {
+    const std::filesystem::path folder = testPath(name);
+    std::filesystem::remove_all(folder);
+    std::filesystem::create_directories(folder);
+    return folder;
+}
+
+TEST(VolumeData, relativeFileNamesResolveAgainstTheSceneFilesFolder) {
+    registerNodeTypes();
+    const std::filesystem::path project = testFolder("project");
+    std::filesystem::create_directories(project / "scenes" / "data");
+    std::filesystem::create_directories(project / "elsewhere");
+    volume::DenseScalarGrid grid(volume::GridGeometry({2, 3, 4}, {0.0, 0.0, 0.0}, {1, 1, 1}), 1.0f);
+    volume::writeRawVolume((project / "scenes" / "data" / "grid.raw").string(), grid);
+    const std::string text = "#Inventor V2.1 ascii\n"
+                             "DEF cloud VolumeData { source FILE_RAW fileName \"data/grid.raw\" "
+                             "}\n";
+    std::ofstream(project / "scenes" / "scene.iv") << text;
+
+    const WorkingDirectory elsewhere(project / "elsewhere");
+    const sg::Node::Ptr root = sg::SceneReader::readFile("../scenes/scene.iv");
+    sg::BoundingBoxAction action;
+    action.apply(*root);
+    EXPECT_EQ(action.boundingBox().min(), glm::vec3(-0.5f));
+    EXPECT_EQ(action.boundingBox().max(), glm::vec3(1.5f, 2.5f, 3.5f));
+    // The field keeps the name as written, so the scene written back still travels with its data.
+    const auto& volume = static_cast<const VolumeData&>(*root);
+    EXPECT_EQ(volume.fileName.value(), "data/grid.raw");
+    EXPECT_EQ(volume.baseDirectory(), (project / "elsewhere" / ".." / "scenes").string());
+
+    // An absolute name is used as it is.
+    const sg::Node::Ptr absolute = sg::SceneReader::readString(
+        "#Inventor V2.1 ascii\nVolumeData { source FILE_RAW fileName \"" +
+        (project / "scenes" / "data" / "grid.raw").string() + "\" }\n");
+    EXPECT_EQ(static_cast<const VolumeData&>(*absolute).bounds().max(),
+              glm::vec3(1.5f, 2.5f, 3.5f));
+}
+
+TEST(VolumeData, aMissingFileIsNamedByTheFullPathTried) {
+    registerNodeTypes();
+    const std::filesystem::path folder = testFolder("scenes");
+    std::ofstream(folder / "scene.iv")
+        << "#Inventor V2.1 ascii\n"
+           "DEF cloud VolumeData { source FILE_NPY fileName \"cloud.npy\" }\n";
+    const WorkingDirectory elsewhere(::testing::TempDir());
+    const sg::Node::Ptr root = sg::SceneReader::readFile((folder / "scene.iv").string());
+    const auto& volume = static_cast<const VolumeData&>(*root);
+    EXPECT_EQ(errorOf<IoError>([&] { volume.bounds(); }),
+              "VolumeData 'cloud': " + (folder / "cloud.npy").string() +
+                  ": cannot open file (No such file or directory)");
+}
+
+TEST(VolumeData, aNodeMadeInCodeResolvesAgainstTheWorkingDirectory) {
+    const std::filesystem::path folder = testFolder("code");
+    volume::DenseScalarGrid grid(volume::GridGeometry({2, 2, 2}), 3.0f);
+    volume::writeRawVolume((folder / "grid.raw").string(), grid);
+    const WorkingDirectory inFolder(folder);
+    const auto volume = VolumeData::create();
+    volume->source.setValue(VolumeSource::FileRaw);
+    volume->fileName = "grid.raw";
+    EXPECT_EQ(volume->baseDirectory(), "");
+    EXPECT_EQ(volume->scalarGrid()->value({1, 1, 1}), 3.0f);
+}
+
+TEST(VolumeData, readsAHeaderlessRawFileAsTheSceneDescribesIt) {
+    registerNodeTypes();
+    const std::filesystem::path folder = testFolder("headerless");
+    {
+        std::ofstream out(folder / "ct.raw", std::ios::binary);
+        out << "HEAD";
+        // 3 x 2 x 1 voxels of big-endian int16: 256 * i - 1.
+        for (int i = 0; i < 6; ++i) {
+            const auto value = static_cast<std::uint16_t>(static_cast<std::int16_t>(256 * i - 1));
+            out.put(static_cast<char>(value >> 8)).put(static_cast<char>(value & 0xff));
+        }
+    }
+    std::ofstream(folder / "scene.iv")
+        << "#Inventor V2.1 ascii\nDEF ct VolumeData { source FILE_RAW_HEADERLESS fileName "
+           "\"ct.raw\" dimensions 3 2 1 dataType INT16 byteOrder BIG headerBytes 4 }\n";
+    const sg::Node::Ptr root = sg::SceneReader::readFile((folder / "scene.iv").string());
+    auto& volume = static_cast<VolumeData&>(*root);
+    const volume::ScalarGridPtr grid = volume.scalarGrid();
+    EXPECT_EQ(grid->geometry().dims(), glm::i64vec3(3, 2, 1));
+    EXPECT_EQ(grid->value({0, 0, 0}), -1.0f);
+    EXPECT_EQ(grid->value({2, 1, 0}), 1279.0f);
+
+    const std::string path = (folder / "ct.raw").string();
+    volume.headerBytes = 0;
+    EXPECT_EQ(errorOf<DataError>([&] { volume.scalarGrid(); }),
+              "VolumeData 'ct': " + path + ": file size mismatch: the scene describes 3 x 2 x 1 "
+              "voxels x 1 component x 2 bytes (int16) = 12 bytes, plus 0 header bytes = 12 bytes, "
+              "but the file has 16 bytes");
+    volume.dimensions = glm::vec3(3.0f, 0.0f, 1.0f);
+    EXPECT_EQ(errorOf<DataError>([&] { volume.scalarGrid(); }),
+              "VolumeData 'ct': dimensions must hold whole numbers from 1 to 1e9, got 3 0 1");
+    volume.dimensions = glm::vec3(1.0f);
+    volume.components = 2;
+    EXPECT_EQ(errorOf<DataError>([&] { volume.scalarGrid(); }),
+              "VolumeData 'ct': components must be 1 or 3, got 2");
+    volume.components = 1;
+    volume.headerBytes = -4;
+    EXPECT_EQ(errorOf<DataError>([&] { volume.scalarGrid(); }),
+              "VolumeData 'ct': headerBytes must be 0 or more, got -4");
+
+    // The same file as FILE_RAW: the format expected is named and no byte of it printed.
+    volume.source.setValue(VolumeSource::FileRaw);
+    EXPECT_EQ(errorOf<ParseError>([&] { volume.scalarGrid(); }),
+              "VolumeData 'ct': " + path + ":1:1: expected 'texsplat-raw 1' on the first line, "
+              "found binary data (a headerless raw file? describe it in the scene: VolumeData "
+              "source FILE_RAW_HEADERLESS)");
+}
+
+TEST(VolumeData, readsANumpyFile) {
+    const std::string path = testPath("grid.npy");
+    {
+        std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (2, 1, 3), }";
+        header.resize(128 - 10 - 1, ' ');
+        header += '\n';
+        std::ofstream out(path, std::ios::binary);
+        out << std::string("\x93NUMPY\x01\x00", 8) << char(header.size()) << '\0' << header;
+        for (int i = 0; i < 6; ++i) {
+            const float value = 0.5f * float(i);
+            out.write(reinterpret_cast<const char*>(&value), sizeof value);
+        }
+    }
+    const auto volume = VolumeData::create();
+    volume->source.setValue(VolumeSource::FileNpy);
+    volume->fileName = path;
+    const volume::ScalarGridPtr grid = volume->scalarGrid();
+    EXPECT_EQ(grid->geometry().dims(), glm::i64vec3(3, 1, 2));
+    EXPECT_EQ(grid->value({2, 0, 0}), 1.0f);
+    EXPECT_EQ(grid->value({0, 0, 1}), 1.5f);
+}
 
 TEST(VolumeData, errorsNameTheNodeAndTheSource) {
     const auto volume = VolumeData::create();

@@ -10,6 +10,7 @@
 #include "scenegraph/fields/Field.h"
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/fields/ValueFormat.h"
+#include "scenegraph/io/RelativeFileNames.h"
 #include "scenegraph/io/UnknownNode.h"
 #include "scenegraph/io/detail/NumberText.h"
 
@@ -38,8 +39,8 @@ bool startsNumber(char c) {
 
 } // namespace
 
-SceneParser::SceneParser(std::string_view text, std::string fileName)
-    : mLexer(text, std::move(fileName)) {}
+SceneParser::SceneParser(std::string_view text, std::string fileName, std::string baseDirectory)
+    : mLexer(text, std::move(fileName)), mBaseDirectory(std::move(baseDirectory)) {}
 
 std::shared_ptr<Node> SceneParser::parseFile() {
     mLexer.readHeader();
@@ -226,6 +227,9 @@ std::shared_ptr<FieldContainer> SceneParser::createInstance(const std::string& t
             mLexer.fail(where, "node type '" + typeName + "' is abstract and cannot be read");
         }
         std::shared_ptr<FieldContainer> container = type->create();
+        if (auto* files = dynamic_cast<RelativeFileNames*>(container.get())) {
+            files->setBaseDirectory(mBaseDirectory);
+        }
         for (const std::optional<Description>& description : {fields, inputs}) {
             if (description) {
                 checkDescription(*container, *description, false);

@@ -28,8 +28,10 @@ public:
     /// own limit, so everything read can be traversed.
     static constexpr int kMaxNesting = 1000;
 
-    /// @brief A parser for `text`, which came from `fileName` (for messages).
-    SceneParser(std::string_view text, std::string fileName);
+    /// @brief A parser for `text`, which came from `fileName` (for messages). Nodes that read
+    /// files (RelativeFileNames) get `baseDirectory` to resolve relative names against; empty
+    /// leaves them resolving against the working directory.
+    SceneParser(std::string_view text, std::string fileName, std::string baseDirectory = {});
 
     /// @brief Parses the whole file: one top-level node is the result; several are put under
     /// a new Separator (as Inventor's SoDB::readAll does).
@@ -76,6 +78,7 @@ private:
     [[noreturn]] void failExpected(const std::string& what, const std::string& got);
 
     SceneLexer mLexer;
+    std::string mBaseDirectory;
     std::map<std::string, std::shared_ptr<FieldContainer>, std::less<>> mDefinitions;
     std::vector<ReadConnection> mConnections;
     int mNesting = 0;
