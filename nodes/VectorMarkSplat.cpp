@@ -4,6 +4,7 @@
 #include "nodes/detail/NodeContext.h"
 #include "nodes/kernel/VectorSplatTable.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/fields/ValueFormat.h"
 
 #include <cmath>
 #include <string>
@@ -60,6 +61,21 @@ kernel::VectorTableParameters VectorMarkSplat::tableParameters() const {
 
 void VectorMarkSplat::checkFields() const {
     ScalarSplat::checkFields();
+    // The fields the table names otherwise, by their names here.
+    if (tableRows.value() < 1 || tableRows.value() > kernel::VectorSplatTable::kMaxRows) {
+        throw DataError("tableRows must be in 1.." +
+                        std::to_string(kernel::VectorSplatTable::kMaxRows) + ", got " +
+                        tableRows.valueText());
+    }
+    if (tableColumns.value() < 1 || tableColumns.value() > kernel::VectorSplatTable::kMaxColumns) {
+        throw DataError("tableColumns must be in 1.." +
+                        std::to_string(kernel::VectorSplatTable::kMaxColumns) + ", got " +
+                        tableColumns.valueText());
+    }
+    if (size.value() > kernel::VectorSplatTable::kMaxSplatExtent) {
+        throw DataError("size must be at most " + sg::formatFloat(kernel::VectorSplatTable::kMaxSplatExtent) +
+                        " for vector splats, got " + size.valueText());
+    }
     kernel::VectorSplatTable::checkParameters(tableParameters());
     if (!std::isfinite(phase.value())) {
         throw DataError("phase must be finite, got " + phase.valueText());

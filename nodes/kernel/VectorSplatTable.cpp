@@ -20,12 +20,9 @@ namespace texsplat::kernel {
 
 namespace {
 
-constexpr int kMaxRows = 256;
-constexpr int kMaxColumns = 64;
 constexpr int kMinResolution = 8;
 constexpr int kMaxResolution = 1024;
 constexpr float kMaxMarkDensity = 64.0f;
-constexpr float kMaxSplatExtent = 8.0f;
 constexpr float kMinWindowScale = 1.0f;
 constexpr float kMaxWindowScale = 4.0f;
 
@@ -237,8 +234,8 @@ bool VectorTableParameters::operator==(const VectorTableParameters& other) const
 
 void VectorSplatTable::checkParameters(const VectorTableParameters& parameters) {
     const VectorTableParameters& p = parameters;
-    checkRange("rows", p.rows, 1, kMaxRows);
-    checkRange("columns", p.columns, 1, kMaxColumns);
+    checkRange("rows", p.rows, 1, VectorSplatTable::kMaxRows);
+    checkRange("columns", p.columns, 1, VectorSplatTable::kMaxColumns);
     checkRange("resolution", p.resolution, kMinResolution, kMaxResolution);
     if (p.markType != MarkType::Particles && p.markType != MarkType::Scratches)
         throw DataError("vector table: markType must be Particles or Scratches, got " +
@@ -246,7 +243,8 @@ void VectorSplatTable::checkParameters(const VectorTableParameters& parameters) 
     checkReal("markDensity", p.markDensity,
               p.markDensity > 0.0f && p.markDensity <= kMaxMarkDensity, "(0, 64]");
     checkReal("splatExtent", p.splatExtent,
-              p.splatExtent > 0.0f && p.splatExtent <= kMaxSplatExtent, "(0, 8]");
+              p.splatExtent > 0.0f && p.splatExtent <= VectorSplatTable::kMaxSplatExtent,
+              "(0, 8]");
     checkReal("windowScale", p.windowScale,
               p.windowScale >= kMinWindowScale && p.windowScale <= kMaxWindowScale, "[1, 4]");
     const std::uint64_t texels = static_cast<std::uint64_t>(p.rows) *

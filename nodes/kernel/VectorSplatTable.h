@@ -70,6 +70,12 @@ public:
     /// @brief The shortest projected mark length, for vectors along the view axis: a mark never
     /// collapses to a line.
     static constexpr float kMinProjectedLength = 0.1f;
+    /// @brief The most rows (animation phases) a table may have.
+    static constexpr int kMaxRows = 256;
+    /// @brief The most columns (foreshortening levels) a table may have.
+    static constexpr int kMaxColumns = 64;
+    /// @brief The largest splatExtent (the scalar splat's half-width in voxels).
+    static constexpr float kMaxSplatExtent = 8.0f;
 
     /// @brief The most texels a table may hold, rows × columns × resolution² (1 GiB of RG32F).
     static constexpr std::uint64_t kMaxTexels = std::uint64_t{1} << 27;

@@ -423,6 +423,61 @@ TEST(CombinedSplat, withZeroContrastMarksItIsTheTextureSplatImage) {
     EXPECT_GT(maxDifference(scalar, render(camera, {tornado, transfer, combined}, 96)), 0.05);
 }
 
+TEST(VectorSplat, badFieldsAndScalarDataAreReportedByName) {
+    const auto message = [](const std::vector<sg::Node::Ptr>& nodes) {
+        try {
+            render(topCamera(0.0f, 0.0f, 4.0f), nodes, 8);
+        } catch (const DataError& error) {
+            return std::string(error.what());
+        }
+        return std::string("no error");
+    };
+    const VolumeData::Ptr field = uniformField("fields", {2, 2, 2}, glm::vec3(1.0f, 0.0f, 0.0f));
+    VectorSplat::Ptr splat = VectorSplat::create();
+    splat->setName("winds");
+    const auto expectError = [&](const std::string& expected) {
+        EXPECT_EQ(message({field, constantOpacity(1.0f), splat}), "VectorSplat 'winds': " + expected);
+    };
+    splat->tableRows.setValue(0);
+    expectError("tableRows must be in 1..256, got 0");
+    splat->tableRows.setValue(16);
+    splat->tableColumns.setValue(65);
+    expectError("tableColumns must be in 1..64, got 65");
+    splat->tableColumns.setValue(8);
+    splat->size.setValue(9.0f);
+    expectError("size must be at most 8 for vector splats, got 9");
+    splat->size.setValue(1.6f);
+    splat->stretch.setValue(0.5f);
+    expectError("stretch must be finite and >= 1, got 0.5");
+    splat->stretch.setValue(1.0f);
+    splat->phase.setValue(std::numeric_limits<float>::infinity());
+    expectError("phase must be finite, got inf");
+    splat->phase.setValue(0.0f);
+    splat->colorMode.setValue(VectorColorMode::Scalar);
+    expectError("colorMode SCALAR needs colorData, a scalar VolumeData");
+    splat->colorData.setValue(constantOpacity(1.0f));
+    expectError("colorData must be a VolumeData, got TransferFunction");
+    splat->colorMode.setValue(VectorColorMode::Magnitude);
+    splat->colorData.setValue(nullptr);
+    splat->maskRange.setValue(glm::vec2(2.0f, 1.0f));
+    expectError("maskRange must be finite with maskRange[0] <= maskRange[1], got 2 1");
+    splat->maskRange.setValue(glm::vec2(0.0f, 1.0f));
+    splat->maskData.setValue(uniformField("mask", {3, 2, 2}, glm::vec3(1.0f)));
+    EXPECT_EQ(message({field, constantOpacity(1.0f), splat}).rfind(
+                  "VectorSplat 'winds': maskData VolumeData has 3x2x2 voxels but the vectors have "
+                  "2x2x2",
+                  0),
+              0u);
+    splat->maskData.setValue(nullptr);
+    VolumeData::Ptr scalars = VolumeData::create();
+    scalars->source.setValue(VolumeSource::Blob);
+    scalars->resolution.setValue(glm::vec3(2.0f));
+    EXPECT_EQ(message({scalars, constantOpacity(1.0f), splat}),
+              "VectorSplat 'winds': VolumeData holds scalars; vector splats need a vector field (a "
+              "raw file with 3 components, an OpenVDB vec3s grid, or TORNADO, JET_STREAM, "
+              "AEROGEL)");
+}
+
 TEST(VectorSplat, aSceneWithoutVectorSplatsMakesNoVectorTable) {
     ASSERT_EQ(kernel::VectorSplatTable::liveTables(), 0u) << "an earlier test leaked a table";
     const VolumeData::Ptr field = uniformField("tables", {2, 2, 2}, glm::vec3(1.0f, 0.0f, 0.0f));
