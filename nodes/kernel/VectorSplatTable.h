@@ -77,7 +77,8 @@ public:
     /// @brief The largest splatExtent (the scalar splat's half-width in voxels).
     static constexpr float kMaxSplatExtent = 8.0f;
 
-    /// @brief The most texels a table may hold, rows × columns × resolution² (1 GiB of two floats per texel).
+    /// @brief The most texels a table may hold, rows × columns × resolution² (1 GiB of two
+    /// floats per texel).
     static constexpr std::uint64_t kMaxTexels = std::uint64_t{1} << 27;
 
     /// @brief Particles: the radius where the dot falls to half its brightness, in voxels of the
