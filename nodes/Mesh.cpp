@@ -18,7 +18,8 @@ std::shared_ptr<const TriangleMesh> Mesh::triangleMesh() const {
             if (fileName.value().empty()) {
                 throw DataError("fileName is empty; a Mesh reads a glTF file");
             }
-            return std::make_shared<const TriangleMesh>(detail::readGltf(resolvedPath(fileName.value())));
+            return std::make_shared<const TriangleMesh>(
+                detail::readGltf(resolvedPath(fileName.value())));
         });
     }
     return mMesh;

@@ -31,7 +31,8 @@ public:
     /// @brief The scene-file name.
     static constexpr const char* kTypeName = "Mesh";
 
-    sg::SFString fileName; ///< the glTF file (relative to the scene file's folder: sg::RelativeFileNames)
+    /// the glTF file (relative to the scene file's folder: sg::RelativeFileNames)
+    sg::SFString fileName;
 
     /// @brief The triangles of the file, read on first use.
     /// @throws IoError, ParseError or DataError (prefixed with the node) when reading fails.

@@ -161,8 +161,9 @@ void ScalarSplat::render(sg::RenderAction& action) {
     };
     // Upload at draw time, when a run of this list is first drawn: a node used twice in the
     // graph (DEF/USE) draws two lists with one batch.
-    work.drawRange = [&action, batch = mBatch, list = std::shared_ptr<const octree::SplatList>(splats),
-                      view, marks = markDrawing()](std::size_t begin, std::size_t end) {
+    work.drawRange = [&action, batch = mBatch,
+                      list = std::shared_ptr<const octree::SplatList>(splats), view,
+                      marks = markDrawing()](std::size_t begin, std::size_t end) {
         if (!batch->isUploaded(list)) {
             timed(action, sg::RenderPhase::Upload, [&] { batch->upload(list); });
         }

@@ -48,7 +48,8 @@ public:
     sg::SFEnum kernel;              ///< SplatKernel
     sg::SFInt32 textureResolution;  ///< footprint texels per side
 
-    /// @brief The footprint texture of `splatKernel` at `resolution`² texels over [−extent, extent]²
+    /// @brief The footprint texture of `splatKernel` at `resolution`² texels over
+    /// [−extent, extent]²
     /// (what TextureSplat and CombinedSplat carry).
     /// @throws DataError as kernel::FootprintTexture.
     static texsplat::kernel::FootprintTexture footprint(SplatKernel splatKernel, int resolution,

@@ -73,7 +73,8 @@ void VectorMarkSplat::checkFields() const {
                         tableColumns.valueText());
     }
     if (size.value() > kernel::VectorSplatTable::kMaxSplatExtent) {
-        throw DataError("size must be at most " + sg::formatFloat(kernel::VectorSplatTable::kMaxSplatExtent) +
+        throw DataError("size must be at most " +
+                        sg::formatFloat(kernel::VectorSplatTable::kMaxSplatExtent) +
                         " for vector splats, got " + size.valueText());
     }
     kernel::VectorSplatTable::checkParameters(tableParameters());

@@ -66,8 +66,8 @@ public:
 
     /// @brief Vector splats: squares of `table.extent()` voxels at size 1, turned to their
     /// projected vector, carrying the table (an RG8 texture array, bilinear, one layer per row
-    /// and column: 8 bits hold the marks' values to 0.002, and llvmpipe samples them about
-    /// twice as fast as floats) under the operator of the MarkDrawing passed to draw(). The splat list must
+    /// and column: 8 bits hold the marks' values to 0.002, and llvmpipe samples them faster
+    /// than floats) under the operator of the MarkDrawing passed to draw(). The splat list must
     /// carry vectors.
     /// @throws GlError as textured().
     static SplatBatch vectorMarks(const kernel::VectorSplatTable& table);
