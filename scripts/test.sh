@@ -20,5 +20,5 @@ ctest --preset asan -j "$jobs"
 stage "fuzz: bounded libFuzzer runs"
 cmake --preset fuzz
 cmake --build --preset fuzz -j "$jobs"
-bash scripts/fuzz.sh build/fuzz "${TEXSPLAT_FUZZ_SECONDS:-60}"
+bash scripts/fuzz.sh build/fuzz --ci
 stage "done"
