@@ -18,9 +18,10 @@ double secondsSince(Clock::time_point start) {
 }
 
 // Leaves the GL state as it found it for the next pass or the caller (a viewer may draw its
-// UI after the frame): blending and depth writes are the two things the passes change.
+// UI after the frame, a test its own quads): the depth test, blending and depth writes are
+// what the passes change.
 struct PassState {
-    PassState() {
+    PassState() : depthTest(glIsEnabled(GL_DEPTH_TEST) == GL_TRUE) {
         glEnable(GL_DEPTH_TEST);
         glDepthFunc(GL_LESS);
         glDisable(GL_CULL_FACE);
@@ -28,7 +29,11 @@ struct PassState {
     ~PassState() {
         glDisable(GL_BLEND);
         glDepthMask(GL_TRUE);
+        if (!depthTest) {
+            glDisable(GL_DEPTH_TEST);
+        }
     }
+    const bool depthTest;
     PassState(const PassState&) = delete;
     PassState& operator=(const PassState&) = delete;
 };
