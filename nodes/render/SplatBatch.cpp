@@ -18,25 +18,28 @@
 namespace texsplat::render {
 namespace {
 
-// The shading function first (both stages call it; it opens with the #version line), then
-// `defines`, then the stage.
-std::string stageSource(const char* stage, const char* defines = "") {
+// The shading function first (every stage calls it; it opens with the #version line), then
+// `defines`, then the splat frame for a vertex stage, then the stage.
+std::string fragmentSource(const char* stage, const char* defines = "") {
     return std::string(detail::kSplatShading) + defines + stage;
+}
+std::string vertexSource(const char* stage, const char* defines = "") {
+    return std::string(detail::kSplatShading) + defines + detail::kSplatFrame + stage;
 }
 
 gl::Program makeProgram(SplatShape shape) {
     if (shape == SplatShape::VectorSquare) {
-        return gl::Program("vector splat", stageSource(detail::kVectorSplatVertexShader),
-                           stageSource(detail::kVectorSplatFragmentShader));
+        return gl::Program("vector splat", vertexSource(detail::kVectorSplatVertexShader),
+                           fragmentSource(detail::kVectorSplatFragmentShader));
     }
     if (shape == SplatShape::CombinedSquare) {
         const char* combined = "#define COMBINED 1\n";
         return gl::Program("combined splat",
-                           stageSource(detail::kVectorSplatVertexShader, combined),
-                           stageSource(detail::kVectorSplatFragmentShader, combined));
+                           vertexSource(detail::kVectorSplatVertexShader, combined),
+                           fragmentSource(detail::kVectorSplatFragmentShader, combined));
     }
-    return gl::Program("splat", stageSource(detail::kSplatVertexShader),
-                       stageSource(detail::kSplatFragmentShader));
+    return gl::Program("splat", vertexSource(detail::kSplatVertexShader),
+                       fragmentSource(detail::kSplatFragmentShader));
 }
 
 // Two triangles of the square [-1, 1]², indexed like the polygon so one draw call serves both.
@@ -189,43 +192,39 @@ void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks, std::size
         setInstanceAttributes(first);
     }
     mProgram.use();
-    if (hasMarks()) {
-        mProgram.setUniform("localToClip", view.localToClip);
-        mProgram.setUniform("spacing", view.spacing);
-        mProgram.setUniform("perspective", view.isPerspective ? 1 : 0);
-        mProgram.setUniform("eye", view.eye);
-        mProgram.setUniform("direction", view.direction);
-        mProgram.setUniform("extent", mExtent);
-        mProgram.setUniform("stretch", marks.stretch);
-        mProgram.setUniform("rowShift", ((marks.rowShift % mRows) + mRows) % mRows);
-        mProgram.setUniform("rows", mRows);
-        mProgram.setUniform("columns", mColumns);
-        mProgram.setUniform("blend", marks.textureOperator == MarkOperator::Blend ? 1 : 0);
-        mProgram.setUniform("blendColor", marks.blendColor);
-        mTable->bind(0);
-        mProgram.setUniform("marks", 0);
-        if (mShape == SplatShape::CombinedSquare) {
-            mProgram.setUniform("footprintExtent", mFootprintExtent);
-            mProgram.setUniform("contrast", marks.contrast);
-            mFootprint->bind(1);
-            mProgram.setUniform("footprint", 1);
-        }
-        mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(count));
-        return;
-    }
-    const bool gouraud = mShape == SplatShape::GouraudPolygon;
     mProgram.setUniform("localToClip", view.localToClip);
     mProgram.setUniform("spacing", view.spacing);
     mProgram.setUniform("perspective", view.isPerspective ? 1 : 0);
     mProgram.setUniform("eye", view.eye);
     mProgram.setUniform("direction", view.direction);
     mProgram.setUniform("extent", mExtent);
-    mProgram.setUniform("gouraud", gouraud ? 1 : 0);
-    if (mFootprint) {
-        mFootprint->bind(0);
-        mProgram.setUniform("footprint", 0);
+    if (hasMarks()) {
+        setMarkUniforms(marks);
+    } else {
+        mProgram.setUniform("gouraud", mShape == SplatShape::GouraudPolygon ? 1 : 0);
+        if (mFootprint) {
+            mFootprint->bind(0);
+            mProgram.setUniform("footprint", 0);
+        }
     }
     mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(count));
+}
+
+void SplatBatch::setMarkUniforms(const MarkDrawing& marks) {
+    mProgram.setUniform("stretch", marks.stretch);
+    mProgram.setUniform("rowShift", ((marks.rowShift % mRows) + mRows) % mRows);
+    mProgram.setUniform("rows", mRows);
+    mProgram.setUniform("columns", mColumns);
+    mProgram.setUniform("blend", marks.textureOperator == MarkOperator::Blend ? 1 : 0);
+    mProgram.setUniform("blendColor", marks.blendColor);
+    mTable->bind(0);
+    mProgram.setUniform("marks", 0);
+    if (mShape == SplatShape::CombinedSquare) {
+        mProgram.setUniform("footprintExtent", mFootprintExtent);
+        mProgram.setUniform("contrast", marks.contrast);
+        mFootprint->bind(1);
+        mProgram.setUniform("footprint", 1);
+    }
 }
 
 } // namespace texsplat::render

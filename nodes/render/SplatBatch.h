@@ -116,6 +116,7 @@ private:
                const std::vector<unsigned>& templateIndices);
     static SplatBatch markSquares(SplatShape shape, const kernel::VectorSplatTable& table);
     void setInstanceAttributes(std::size_t first);
+    void setMarkUniforms(const MarkDrawing& marks);
     bool hasMarks() const {
         return mShape == SplatShape::VectorSquare || mShape == SplatShape::CombinedSquare;
     }

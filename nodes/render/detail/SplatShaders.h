@@ -34,18 +34,11 @@ out vec4 vertexColor;
 void main() {
     vec3 centre = positionSize.xyz;
     float size = positionSize.w;
-    vec3 d = direction;
-    if (perspective) {
-        vec3 toCentre = centre - eye;
-        float distance = length(toCentre);
-        if (distance > 0.0) d = toCentre / distance;
-    }
-    vec3 e = d / spacing;
-    float eLength = length(e);
-    vec3 axis = e / eLength;
-    // Any basis of the plane does for a radial kernel; switch helpers before they degenerate.
-    vec3 helper = abs(axis.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
-    vec3 u = normalize(cross(helper, axis));
+    SplatFrame frame = splatFrame(centre, perspective, eye, direction, spacing);
+    vec3 d = frame.sight;
+    float eLength = frame.eLength;
+    vec3 axis = frame.axis;
+    vec3 u = frame.u;
     vec3 v = cross(axis, u);
     vec3 offset = (corner.x * u + corner.y * v) * (extent * size);
     gl_Position = localToClip * vec4(centre + spacing * offset, 1.0);
@@ -55,6 +48,36 @@ void main() {
     vertexColor = gouraud ? shadeSplat(colorExtinction.rgb, colorExtinction.a,
                                        corner.z * lengthScale)
                           : vec4(0.0);
+}
+)";
+
+/// The facing frame of a splat, shared by the vertex shaders (put in front of them by
+/// SplatBatch): the unit line of sight `sight` to the centre (or the viewing direction), in the
+/// volume's local space; e = sight / spacing, its length `eLength` and direction `axis` (the
+/// normal of the splat's plane in voxel space); and a first unit axis `u` of that plane (any
+/// basis does for a radial kernel; the helper switches before it degenerates).
+constexpr const char* kSplatFrame = R"(
+struct SplatFrame {
+    vec3 sight;
+    float eLength;
+    vec3 axis;
+    vec3 u;
+};
+
+SplatFrame splatFrame(vec3 centre, bool perspective, vec3 eye, vec3 direction, vec3 spacing) {
+    SplatFrame frame;
+    frame.sight = direction;
+    if (perspective) {
+        vec3 toCentre = centre - eye;
+        float distance = length(toCentre);
+        if (distance > 0.0) frame.sight = toCentre / distance;
+    }
+    vec3 e = frame.sight / spacing;
+    frame.eLength = length(e);
+    frame.axis = e / frame.eLength;
+    vec3 helper = abs(frame.axis.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+    frame.u = normalize(cross(helper, frame.axis));
+    return frame;
 }
 )";
 
@@ -77,8 +100,8 @@ void main() {
 }
 )";
 
-/// Emission-absorption through one splat (put in front of both stages by `splatStageSource()`): a slab of length f (the
-/// footprint) with emission C and extinction tau has opacity alpha = 1 - exp(-tau f) and
+/// Emission-absorption through one splat (put in front of every stage by SplatBatch): a slab of
+/// length f (the footprint) with emission C and extinction tau has opacity alpha = 1 - exp(-tau f) and
 /// premultiplied color C f phi(tau f), phi(x) = (1 - exp(-x)) / x. For tau f < 1/8 the series
 /// of phi is used (1 - exp(-x) cancels in float); above, C (1 - exp(-x)) / tau, which never
 /// forms 0/0 or inf*0: tau -> 0 leaves pure emission C f, tau f >> 1 saturates to C / tau,

@@ -47,17 +47,11 @@ flat out float polygonAlpha; // vector splats: the opacity A of one voxel's dept
 void main() {
     vec3 centre = positionSize.xyz;
     float size = positionSize.w;
-    vec3 d = direction;
-    if (perspective) {
-        vec3 toCentre = centre - eye;
-        float distance = length(toCentre);
-        if (distance > 0.0) d = toCentre / distance;
-    }
-    vec3 e = d / spacing;
-    float eLength = length(e);
-    vec3 axis = e / eLength;
-    vec3 helper = abs(axis.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
-    vec3 u = normalize(cross(helper, axis));
+    SplatFrame frame = splatFrame(centre, perspective, eye, direction, spacing);
+    vec3 d = frame.sight;
+    float eLength = frame.eLength;
+    vec3 axis = frame.axis;
+    vec3 u = frame.u;
     vec3 scalarU = u; // the scalar splats' basis: combined splats sample their footprint in it
     hasMarks = 0;
     // Scaled by the largest component first: a huge vector's length overflows, a tiny one's
