@@ -102,10 +102,10 @@ void main() {
 
 /// Emission-absorption through one splat (put in front of every stage by SplatBatch): a slab of
 /// length f (the footprint) with emission C and extinction tau has opacity
-/// alpha = 1 - exp(-tau f) and premultiplied color C f phi(tau f), phi(x) = (1 - exp(-x)) / x. For tau f < 1/8 the series
-/// of phi is used (1 - exp(-x) cancels in float); above, C (1 - exp(-x)) / tau, which never
-/// forms 0/0 or inf*0: tau -> 0 leaves pure emission C f, tau f >> 1 saturates to C / tau,
-/// alpha = 1.
+/// alpha = 1 - exp(-tau f) and premultiplied color C f phi(tau f), phi(x) = (1 - exp(-x)) / x.
+/// For tau f < 1/8 the series of phi is used (1 - exp(-x) cancels in float); above,
+/// C (1 - exp(-x)) / tau, which never forms 0/0 or inf*0: tau -> 0 leaves pure emission C f,
+/// tau f >> 1 saturates to C / tau, alpha = 1.
 constexpr const char* kSplatShading = R"(#version 330 core
 vec4 shadeSplat(vec3 emission, float tau, float footprint) {
     float f = max(footprint, 0.0);
