@@ -1,5 +1,6 @@
 #include "nodes/volume/NpyVolume.h"
 
+#include "SceneNodesTestSupport.h"
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/RawVolume.h"
 #include "scenegraph/Error.h"
@@ -14,12 +15,7 @@
 namespace texsplat::volume {
 namespace {
 
-std::string testPath(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return (std::filesystem::path(::testing::TempDir()) /
-            (std::string("NpyVolumeTest_") + info->name() + "_" + name))
-        .string();
-}
+using texsplat::nodes::test::testPath;
 
 // The Python that has numpy: the one on PATH, else the system's (a Python of a version manager
 // may come first on PATH without it); empty when none has.

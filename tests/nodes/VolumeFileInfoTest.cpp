@@ -1,5 +1,6 @@
 #include "nodes/volume/VolumeFileInfo.h"
 
+#include "SceneNodesTestSupport.h"
 #include "scenegraph/Error.h"
 
 #include <gtest/gtest.h>
@@ -15,12 +16,7 @@
 namespace texsplat::volume {
 namespace {
 
-std::string testPath(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return (std::filesystem::path(::testing::TempDir()) /
-            (std::string("VolumeFileInfoTest_") + info->name() + "_" + name))
-        .string();
-}
+using texsplat::nodes::test::testPath;
 
 TEST(VolumeFileInfo, detectsTheFormatByItsFirstBytesThenItsExtension) {
     const auto write = [](const std::string& path, const std::string& bytes) {
