@@ -5,6 +5,8 @@
 
 #include "nodes/bench/BenchReport.h"
 #include "nodes/bench/BenchRunner.h"
+#include "nodes/render/BackendChoice.h"
+#include "nodes/render/cpu/CpuRenderer.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
 #include "scenegraph/gl/EglContext.h"
@@ -32,6 +34,7 @@ struct BenchArguments {
     int repeat = 5;
     int warmup = 1;
     int threads = 0;
+    std::string backends = "auto";
     bool noReference = false;
     std::string csv;
     std::string plot;
@@ -76,6 +79,30 @@ private:
     Clock::time_point mStart;
 };
 
+std::vector<std::string> splitList(const std::string& text) {
+    std::vector<std::string> items;
+    std::istringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ',')) {
+        items.push_back(item);
+    }
+    return items;
+}
+
+// The devices of the run, for the header line and the plot: the GL context, the CPU backend.
+std::string deviceSummary(const bench::BenchOptions& options, const gl::EglContext* context) {
+    std::string text;
+    for (const render::Backend backend : options.backends) {
+        text += text.empty() ? "" : "; ";
+        if (backend == render::Backend::Gl) {
+            text += "GL " + context->info().summary() + " (" + context->info().platform + ")";
+        } else {
+            text += render::cpu::CpuRenderer(options.cpuThreads).description();
+        }
+    }
+    return text;
+}
+
 void runBench(const BenchArguments& arguments) {
     bench::BenchOptions options;
     options.datasets =
@@ -99,7 +126,33 @@ void runBench(const BenchArguments& arguments) {
         requireFileExtension(arguments.plot, {".svg"}, "plot"); // before the long run
     }
 
-    gl::EglContext context;
+    // Each backend asked for once, in the order given; auto resolves as `render` does.
+    std::unique_ptr<gl::EglContext> context;
+    options.backends.clear();
+    for (const std::string& name : splitList(arguments.backends)) {
+        render::BackendChoice choice =
+            render::BackendChoice::resolve(render::parseBackendRequest(name));
+        if (std::find(options.backends.begin(), options.backends.end(), choice.backend) !=
+            options.backends.end()) {
+            continue;
+        }
+        options.backends.push_back(choice.backend);
+        if (choice.context && !context) {
+            context = std::move(choice.context);
+        }
+    }
+    if (options.backends.empty()) {
+        throw DataError("--backend: expected cpu, gl or auto (or a list, e.g. cpu,gl), got ''");
+    }
+    options.cpuThreads = arguments.threads;
+    for (const bench::BenchMethod& method : options.methods) {
+        if (method.needsVectors() && std::find(options.backends.begin(), options.backends.end(),
+                                               render::Backend::Cpu) != options.backends.end()) {
+            throw Error("--method: " + method.name() + " draws vector marks, which the CPU "
+                        "backend does not draw yet (use --backend gl)");
+        }
+    }
+    const std::string devices = deviceSummary(options, context.get());
     bench::BenchRunner runner(options);
     auto progress = std::make_shared<ProgressPrinter>();
     runner.setProgress([progress](const std::string& stage, double fraction) {
@@ -108,21 +161,21 @@ void runBench(const BenchArguments& arguments) {
     const std::vector<bench::BenchResult> results = runner.run();
 
     const unsigned cores = std::thread::hardware_concurrency();
-    std::printf("texsplat bench: %s (%s), %u CPU threads; median of %d frames after %d warm-up\n",
-                context.info().summary().c_str(), context.info().platform.c_str(), cores,
-                arguments.repeat, arguments.warmup);
+    std::printf("texsplat bench: %s, %u CPU threads; median of %d frames after %d warm-up\n",
+                devices.c_str(), cores, arguments.repeat, arguments.warmup);
     std::printf("%s", bench::benchTable(results).c_str());
     std::printf("frame/c, draw/c: frame and draw time over the fill-rate ceiling (same quads, "
-                "trivial shader, same blending); fragments: GL_SAMPLES_PASSED; errors: RGB of "
-                "premultiplied floats, PSNR peak 1\n");
+                "trivial shader, same blending; GL); fragments: GL_SAMPLES_PASSED; errors: RGB "
+                "of premultiplied floats, PSNR peak 1; frame/tex: frame time over the "
+                "full-quality texture splats' on the same backend; vs gl: frame time over the "
+                "same method's on GL\n");
     if (!arguments.csv.empty()) {
         bench::writeBenchCsv(results, arguments.csv);
     }
     if (!arguments.plot.empty()) {
         bench::writeBenchPlot(results,
-                              "texsplat bench: error against frame time (" +
-                                  context.info().renderer + ", " + std::to_string(cores) +
-                                  " threads)",
+                              "texsplat bench: error against frame time (" + devices + ", " +
+                                  std::to_string(cores) + " threads)",
                               arguments.plot);
     }
 }
@@ -154,8 +207,13 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::Range(1, 1000))
         ->capture_default_str();
     command->add_option("--threads", arguments->threads,
-                        "Ray-caster threads (0: all cores)")
+                        "Threads of the ray caster and the CPU backend (0: all cores)")
         ->check(CLI::Range(0, 1024));
+    command
+        ->add_option("--backend", arguments->backends,
+                     "Comma-separated backends each method runs on: cpu, gl, auto (as render "
+                     "picks), e.g. cpu,gl to compare them in one run")
+        ->capture_default_str();
     command->add_flag("--no-reference", arguments->noReference,
                       "Skip the ray-cast reference (no error against it)");
     command->add_option("--csv", arguments->csv, "Also write the results as CSV to this file");

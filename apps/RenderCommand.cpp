@@ -2,8 +2,11 @@
 #include "apps/SceneSetup.h"
 
 #include "nodes/image/ImageIo.h"
+#include "nodes/render/BackendChoice.h"
+#include "nodes/render/FrameAction.h"
 #include "nodes/render/RayCastImage.h"
 #include "nodes/render/RenderedImage.h"
+#include "nodes/render/cpu/CpuRenderer.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/actions/RenderAction.h"
@@ -37,6 +40,7 @@ double secondsSince(Clock::time_point start) {
 }
 
 constexpr int kMaxFrames = 1000000;
+constexpr int kMaxThreads = 1024;
 
 struct RenderArguments {
     std::string scene;
@@ -49,6 +53,8 @@ struct RenderArguments {
     bool timeReport = false;
     bool rayCast = false;
     float rayCastStep = sg::RayCastAction::kDefaultStepSize;
+    std::string backend = "auto";
+    int threads = 0;
 };
 
 // The output name of each frame. A name with one printf-style integer conversion is a pattern:
@@ -282,13 +288,20 @@ void printAnimateTime(const FrameClock& clock, const Animation& animation) {
     }
 }
 
-void printTimes(const sg::RenderStatistics& statistics, const SetupTimes& setup, double context,
-                const gl::ContextInfo& contextInfo, double write, const FrameClock& clock,
+// The backend a render used, for the time report: what it is and why it was chosen.
+struct BackendReport {
+    std::string name;      // "GL (EGL surfaceless: 4.5 ... | llvmpipe ...)" or "CPU (AVX2, 2 threads)"
+    std::string reason;    // "asked for", "auto: ..."
+    double contextSeconds; // making or trying a GL context
+};
+
+void printTimes(const sg::RenderStatistics& statistics, const SetupTimes& setup,
+                const BackendReport& backend, double write, const FrameClock& clock,
                 const Animation& animation) {
     const int frames = animation.frames;
     printReportHeader(setup, animation);
-    std::printf("  %-10s %9.4f  (%s: %s)\n", "context", context, contextInfo.platform.c_str(),
-                contextInfo.summary().c_str());
+    std::printf("  backend    %s (%s)\n", backend.name.c_str(), backend.reason.c_str());
+    std::printf("  %-10s %9.4f\n", "context", backend.contextSeconds);
     printAnimateTime(clock, animation);
     for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
         const auto name = std::string(sg::toString(static_cast<sg::RenderPhase>(phase)));
@@ -378,6 +391,12 @@ void runRender(const RenderArguments& arguments) {
     if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
         throw DataError("--raycast-step: only with --raycast");
     }
+    const render::BackendRequest request = render::parseBackendRequest(arguments.backend);
+    if (arguments.threads < 0 || arguments.threads > kMaxThreads) {
+        throw DataError("--threads: expected 0 (one per hardware thread) to " +
+                        std::to_string(kMaxThreads) + ", got " +
+                        std::to_string(arguments.threads));
+    }
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -393,36 +412,70 @@ void runRender(const RenderArguments& arguments) {
         runRayCast(arguments, animation, *root, size, format, setup);
         return;
     }
-    start = Clock::now();
-    gl::EglContext context;
-    const double contextTime = secondsSince(start);
-    sg::RenderAction action(size.x, size.y);
+    render::BackendChoice backend = render::BackendChoice::resolve(request);
     // PNG stores straight alpha, which cannot hold light from a transparent medium (alpha 0,
     // color > 0): composite over opaque black. EXR keeps the premultiplied layer with its alpha.
-    action.setBackground(format == image::ImageFormat::Png ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
-                                                           : glm::vec4(0.0f));
+    const glm::vec4 background = format == image::ImageFormat::Png
+                                     ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
+                                     : glm::vec4(0.0f);
+    const bool withDepth = format == image::ImageFormat::Exr;
     FrameClock clock(animation, *root);
     sg::RenderStatistics total;
     double write = 0.0;
-    for (int frame = 0; frame < animation.frames; ++frame) {
-        clock.moveTo(frame);
-        action.render(*root);
-        const image::Image image = render::renderedImage(
-            action, format == image::ImageFormat::Exr ? render::DepthReadback::With
-                                                      : render::DepthReadback::Without);
-        const sg::RenderStatistics& statistics = action.statistics();
-        for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
-            total.seconds[phase] += statistics.seconds[phase];
-        }
-        total.splats += statistics.splats;
-        total.triangles += statistics.triangles;
-        start = Clock::now();
+    const auto writeFrame = [&](const image::Image& image, int frame) {
+        const Clock::time_point writeStart = Clock::now();
         image::writeImage(image, animation.output.name(frame));
-        write += secondsSince(start);
+        write += secondsSince(writeStart);
         clock.reportWritten(frame);
+    };
+    int frame = 0;
+    bool clockAtFrame = false; // the CPU loop moved the clock to `frame` before handing over
+    std::optional<render::cpu::CpuRenderer> cpu;
+    if (backend.backend == render::Backend::Cpu) {
+        cpu.emplace(arguments.threads);
+        render::FrameAction action(size.x, size.y, background);
+        for (; frame < animation.frames; ++frame) {
+            clock.moveTo(frame);
+            const render::Frame& collected = action.collect(*root);
+            if (!render::cpu::CpuRenderer::draws(collected)) {
+                if (request == render::BackendRequest::Cpu) {
+                    throw DataError("--backend cpu: the scene has vector or combined splats, "
+                                    "which the CPU backend does not draw yet; use --backend gl "
+                                    "or auto");
+                }
+                backend.switchToGl("the scene has vector or combined splats (GL only)");
+                cpu.reset();
+                clockAtFrame = true;
+                break;
+            }
+            const image::Image image = cpu->draw(collected, action.statistics(), withDepth);
+            total += action.statistics();
+            writeFrame(image, frame);
+        }
+    }
+    if (backend.backend == render::Backend::Gl) {
+        sg::RenderAction action(size.x, size.y);
+        action.setBackground(background);
+        for (; frame < animation.frames; ++frame) {
+            if (!clockAtFrame) {
+                clock.moveTo(frame);
+            }
+            clockAtFrame = false;
+            action.render(*root);
+            const image::Image image = render::renderedImage(
+                action, withDepth ? render::DepthReadback::With : render::DepthReadback::Without);
+            total += action.statistics();
+            writeFrame(image, frame);
+        }
     }
     if (arguments.timeReport) {
-        printTimes(total, setup, contextTime, context.info(), write, clock, animation);
+        BackendReport report{cpu ? cpu->description() : "", backend.reason,
+                             backend.contextSeconds};
+        if (!cpu) {
+            const gl::ContextInfo& info = backend.context->info();
+            report.name = "GL (" + info.platform + ": " + info.summary() + ")";
+        }
+        printTimes(total, setup, report, write, clock, animation);
     }
 }
 
@@ -457,6 +510,15 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     command->add_flag("--time-report", arguments->timeReport,
                       "Print where the time went (read, context, load, classify, order, upload, "
                       "draw, read back, write; with --frames the totals and the mean per frame)");
+    command->add_option("--backend", arguments->backend,
+                        "cpu|gl|auto: what draws the splats. cpu: the SIMD splat rasterizer, no "
+                        "GL; gl: instanced quads through OpenGL; auto: GL on a GPU, the CPU when "
+                        "GL is a software rasterizer (llvmpipe) or unavailable")
+        ->capture_default_str();
+    command->add_option("--threads", arguments->threads,
+                        "Threads of the CPU backend (0: one per hardware thread); the image is "
+                        "the same for any count")
+        ->capture_default_str();
     command->add_flag("--raycast", arguments->rayCast,
                       "Render the reference with the CPU ray caster (exact emission-absorption of "
                       "the same reconstructed field, no GL context; progress on stderr)");

@@ -3,6 +3,10 @@
 find_package(PkgConfig REQUIRED)
 find_package(Threads REQUIRED)
 find_package(glm REQUIRED)
+# The CPU splat backend: Highway for SIMD with run-time dispatch (one binary uses AVX2 or
+# AVX-512 where present), oneTBB for its threads (OpenVDB already depends on it).
+find_package(hwy REQUIRED)
+find_package(TBB REQUIRED)
 pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET GLOBAL epoxy)
 pkg_check_modules(egl REQUIRED IMPORTED_TARGET GLOBAL egl)
 

@@ -4,7 +4,7 @@
 #include "nodes/VolumeData.h"
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/VectorSplatTable.h"
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/SplatFootprint.h"
 #include "nodes/render/detail/ClassificationCache.h"
 #include "scenegraph/Error.h"
 
@@ -29,11 +29,15 @@ void CombinedSplat::checkFields() const {
     }
 }
 
-std::shared_ptr<render::SplatBatch> CombinedSplat::makeBatch() const {
-    return std::make_shared<render::SplatBatch>(render::SplatBatch::combinedMarks(
-        *table(),
+render::SplatFootprint CombinedSplat::makeFootprint() const {
+    render::SplatFootprint result;
+    result.shape = render::SplatShape::CombinedSquare;
+    result.table = table();
+    result.extent = result.table->extent();
+    result.texture = std::make_shared<const texsplat::kernel::FootprintTexture>(
         TextureSplat::footprint(kernel.as<SplatKernel>(), textureResolution.value(),
-                                size.value())));
+                                size.value()));
+    return result;
 }
 
 std::shared_ptr<const octree::ClassifiedGrid>

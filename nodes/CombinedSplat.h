@@ -40,7 +40,7 @@ public:
 protected:
     CombinedSplat();
 
-    std::shared_ptr<render::SplatBatch> makeBatch() const override;
+    render::SplatFootprint makeFootprint() const override;
     std::shared_ptr<const octree::ClassifiedGrid>
     classify(render::detail::ClassificationCache& cache, sg::State& state,
              const VolumeData& volume, const TransferFunction& transfer,

@@ -2,7 +2,8 @@
 
 #include "nodes/kernel/CubicKernel.h"
 #include "nodes/kernel/KernelOptimizer.h"
-#include "nodes/render/SplatBatch.h"
+#include "nodes/kernel/FootprintTexture.h"
+#include "nodes/render/SplatFootprint.h"
 
 namespace texsplat::nodes {
 
@@ -11,11 +12,21 @@ GaussianSplat::GaussianSplat() {
     addField(azimuthSamples, "azimuthSamples", 7);
 }
 
-std::shared_ptr<render::SplatBatch> GaussianSplat::makeBatch() const {
-    const kernel::GaussianKernel gaussian =
-        kernel::KernelOptimizer().fitGaussian(kernel::CubicKernel::paper().support()).kernel;
-    return std::make_shared<render::SplatBatch>(render::SplatBatch::polygonal(
-        gaussian, size.value(), radialSamples.value(), azimuthSamples.value()));
+render::SplatFootprint GaussianSplat::makeFootprint() const {
+    // The fan's edges, where its interpolation bends, to 1/128 of the extent for the CPU backend.
+    constexpr int kFanTextureResolution = 256;
+    auto gaussian = std::make_shared<const kernel::GaussianKernel>(
+        kernel::KernelOptimizer().fitGaussian(kernel::CubicKernel::paper().support()).kernel);
+    render::SplatFootprint result;
+    result.shape = render::SplatShape::GouraudPolygon;
+    result.extent = size.value();
+    result.radialSamples = radialSamples.value();
+    result.azimuthSamples = azimuthSamples.value();
+    result.texture = std::make_shared<const kernel::FootprintTexture>(
+        kernel::FootprintTexture::gouraudFan(*gaussian, result.extent, result.radialSamples,
+                                             result.azimuthSamples, kFanTextureResolution));
+    result.kernel = std::move(gaussian);
+    return result;
 }
 
 } // namespace texsplat::nodes

@@ -33,7 +33,7 @@ public:
 protected:
     GaussianSplat();
 
-    std::shared_ptr<render::SplatBatch> makeBatch() const override;
+    render::SplatFootprint makeFootprint() const override;
 };
 
 } // namespace texsplat::nodes

@@ -18,6 +18,7 @@
 #include "nodes/VectorMarkSplat.h"
 #include "nodes/VectorSplat.h"
 #include "nodes/VolumeData.h"
+#include "nodes/render/FrameMethods.h"
 #include "nodes/render/RayCastMethods.h"
 #include "nodes/render/RenderMethods.h"
 #include "scenegraph/NodeRegistry.h"
@@ -49,6 +50,7 @@ void registerNodeTypes() {
     // What RenderAction does with these types; a scene that can be read can also be drawn.
     render::registerRenderMethods();
     render::registerRayCastMethods();
+    render::registerFrameMethods();
 }
 
 } // namespace texsplat::nodes

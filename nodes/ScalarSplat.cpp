@@ -6,6 +6,8 @@
 #include "nodes/elements/TransferFunctionElement.h"
 #include "nodes/elements/VolumeElement.h"
 #include "nodes/render/CameraView.h"
+#include "nodes/render/Frame.h"
+#include "nodes/render/FrameAction.h"
 #include "nodes/render/KernelVolumeMedium.h"
 #include "nodes/render/SplatBatch.h"
 #include "nodes/render/SplatView.h"
@@ -33,32 +35,19 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// Runs `step` and adds its wall time to `phase`.
-template <class Step> auto timed(sg::RenderAction& action, sg::RenderPhase phase, Step&& step) {
+// Runs `step` and adds its wall time to `phase` of `statistics`.
+template <class Step>
+auto timed(sg::RenderStatistics& statistics, sg::RenderPhase phase, Step&& step) {
     const Clock::time_point start = Clock::now();
     struct AddTime {
-        sg::RenderAction& action;
+        sg::RenderStatistics& statistics;
         sg::RenderPhase phase;
         Clock::time_point start;
         ~AddTime() {
-            action.addTime(phase, std::chrono::duration<double>(Clock::now() - start).count());
+            statistics.addTime(phase, std::chrono::duration<double>(Clock::now() - start).count());
         }
-    } addTime{action, phase, start};
+    } addTime{statistics, phase, start};
     return step();
-}
-
-// How far each splat is from the eye, what RenderAction merges the batches of several nodes
-// by: the depth along the view (camera space looks down -z) for an orthographic camera, the
-// distance from the eye for a perspective one.
-std::vector<float> cameraDepths(const octree::SplatList& splats, const glm::mat4& localToCamera,
-                                bool isPerspective) {
-    std::vector<float> depths;
-    depths.reserve(splats.size());
-    for (const octree::Splat& splat : splats.splats()) {
-        const glm::vec3 camera(localToCamera * glm::vec4(splat.position, 1.0f));
-        depths.push_back(isPerspective ? glm::length(camera) : -camera.z);
-    }
-    return depths;
 }
 
 } // namespace
@@ -98,19 +87,18 @@ ScalarSplat::renderInputs(sg::State& state) const {
     return {*volume, *transfer};
 }
 
-void ScalarSplat::render(sg::RenderAction& action) {
-    const auto inputs = renderInputs(action.state());
+render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::CameraView& camera,
+                                             sg::RenderStatistics& statistics) {
+    const auto inputs = renderInputs(state);
     const VolumeData& volume = inputs.first;
     const TransferFunction& transfer = inputs.second;
-    const render::CameraView camera = render::CameraView::current(action, *this);
     // Loading counts as such, not as classification.
-    timed(action, sg::RenderPhase::Load, [&volume] { volume.bounds(); });
-    const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
+    timed(statistics, sg::RenderPhase::Load, [&volume] { volume.bounds(); });
+    const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
-        timed(action, sg::RenderPhase::Classify, [&] {
-            return detail::withNodeContext(*this, [&] {
-                return classify(*mCache, action.state(), volume, transfer, model);
-            });
+        timed(statistics, sg::RenderPhase::Classify, [&] {
+            return detail::withNodeContext(
+                *this, [&] { return classify(*mCache, state, volume, transfer, model); });
         });
     std::optional<octree::VectorEmission> vectors = vectorEmission();
     if (vectors) {
@@ -118,16 +106,20 @@ void ScalarSplat::render(sg::RenderAction& action) {
         vectors->isPerspective = camera.projection[3][3] == 0.0f;
     }
     const octree::VectorEmission* emission = vectors ? &*vectors : nullptr;
-    const render::SplatView view = render::SplatView::fromMatrices(
-        model, camera.view, camera.projection, glm::vec3(classified->spacing()));
+    render::FrameSplats result;
+    result.view = render::SplatView::fromMatrices(model, camera.view, camera.projection,
+                                                  glm::vec3(classified->spacing()));
+    result.localToCamera = camera.view * model;
+    result.marks = markDrawing();
+    result.footprint = timed(statistics, sg::RenderPhase::Classify, [this] { return footprint(); });
     auto splats = std::make_shared<octree::SplatList>();
     const bool fullResolution = errorThreshold.value() == 0.0f && maxSplats.value() == 0;
     if (!fullResolution) {
         // The octree is part of the cached classification; build it outside the ordering time.
-        timed(action, sg::RenderPhase::Classify, [this] { mCache->octree(); });
+        timed(statistics, sg::RenderPhase::Classify, [this] { mCache->octree(); });
     }
-    timed(action, sg::RenderPhase::Order, [&] {
-        const octree::View order = view.octreeView();
+    timed(statistics, sg::RenderPhase::Order, [&] {
+        const octree::View order = result.view.octreeView();
         if (fullResolution) {
             octree::emitVoxelSplats(*classified, order, *splats, emission);
             return;
@@ -144,32 +136,52 @@ void ScalarSplat::render(sg::RenderAction& action) {
         }
         octree::emitSplats(cut, order, *splats, emission);
     });
+    statistics.splats += splats->size();
+    result.splats = std::move(splats);
+    return result;
+}
 
+std::shared_ptr<const render::SplatFootprint> ScalarSplat::footprint() {
+    if (!mFootprint) {
+        mFootprint = std::make_shared<const render::SplatFootprint>(
+            detail::withNodeContext(*this, [this] { return makeFootprint(); }));
+    }
+    return mFootprint;
+}
+
+void ScalarSplat::render(sg::RenderAction& action) {
+    const render::CameraView camera = render::CameraView::current(action, *this);
+    const render::FrameSplats splats = frameSplats(action.state(), camera, action.statistics());
     TEXSPLAT_ASSERT(gl::Context::current(), "ScalarSplat::render(): no current GL context");
     const std::uint64_t context = gl::Context::current()->serial();
     if (!mBatch || mBatchContext != context) {
-        mBatch = timed(action, sg::RenderPhase::Upload,
-                       [this] { return detail::withNodeContext(*this, [this] { return makeBatch(); }); });
+        mBatch = timed(action.statistics(), sg::RenderPhase::Upload, [&] {
+            return detail::withNodeContext(*this, [&] {
+                return std::make_shared<render::SplatBatch>(
+                    render::SplatBatch::create(*splats.footprint));
+            });
+        });
         mBatchContext = context;
     }
-    action.statistics().splats += splats->size();
     sg::RenderAction::SplatWork work;
-    work.count = splats->size();
-    work.depths = [splats, localToCamera = camera.view * model,
-                   isPerspective = camera.projection[3][3] == 0.0f] {
-        return cameraDepths(*splats, localToCamera, isPerspective);
-    };
+    work.count = splats.splats->size();
+    work.depths = [splats] { return splats.cameraDepths(); };
     // Upload at draw time, when a run of this list is first drawn: a node used twice in the
     // graph (DEF/USE) draws two lists with one batch.
-    work.drawRange = [&action, batch = mBatch,
-                      list = std::shared_ptr<const octree::SplatList>(splats), view,
-                      marks = markDrawing()](std::size_t begin, std::size_t end) {
-        if (!batch->isUploaded(list)) {
-            timed(action, sg::RenderPhase::Upload, [&] { batch->upload(list); });
+    work.drawRange = [&action, batch = mBatch, splats](std::size_t begin, std::size_t end) {
+        if (!batch->isUploaded(splats.splats)) {
+            timed(action.statistics(), sg::RenderPhase::Upload,
+                  [&] { batch->upload(splats.splats); });
         }
-        batch->draw(view, marks, begin, end - begin);
+        batch->draw(splats.view, splats.marks, begin, end - begin);
     };
     action.addSplats(std::move(work));
+}
+
+void ScalarSplat::collectFrame(render::FrameAction& action) {
+    const render::CameraView camera =
+        render::CameraView::current(action.state(), *this, action.aspectRatio());
+    action.frame().splats.push_back(frameSplats(action.state(), camera, action.statistics()));
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {
@@ -213,6 +225,7 @@ void ScalarSplat::getBoundingBox(sg::BoundingBoxAction& action) {
 
 void ScalarSplat::notify(const sg::Field* source) {
     if (!isDrawingField(source)) {
+        mFootprint.reset();
         mBatch.reset();
     }
     if (isClassificationField(source)) {

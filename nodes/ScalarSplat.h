@@ -17,10 +17,15 @@
 namespace texsplat::sg {
 class RayCastAction;
 class RenderAction;
+struct RenderStatistics;
 } // namespace texsplat::sg
 
 namespace texsplat::render {
+class FrameAction;
 class SplatBatch;
+struct CameraView;
+struct FrameSplats;
+struct SplatFootprint;
 namespace detail {
 class ClassificationCache;
 } // namespace detail
@@ -36,7 +41,8 @@ namespace texsplat::nodes {
 /// Per frame: the scalar grid of the VolumeData (loaded on first use), classified into emission
 /// C and extinction τ per unit length (cached with its octree until the volume's grid or the
 /// transfer function changes; voxels that classify to zero make no splat), ordered for the view
-/// (see below), uploaded and drawn as instanced splats (render::SplatBatch) facing the eye.
+/// (see below), and drawn facing the eye: by RenderAction as instanced GL quads
+/// (render::SplatBatch), by FrameAction's frame on the CPU backend (render::cpu::CpuRenderer).
 /// Optical properties are per unit length of the volume's local space; a Transform above the
 /// node places the volume. Anisotropic spacing uses the ellipsoidal kernel h(S⁻¹x).
 ///
@@ -69,6 +75,11 @@ public:
     /// TransferFunction before it, or a field is out of range; what loading the volume throws.
     void render(sg::RenderAction& action);
 
+    /// @brief FrameAction: adds this frame's splats to the action's frame, for a backend without
+    /// GL (registered by registerNodeTypes()).
+    /// @throws as render(), except that no GL context is needed.
+    void collectFrame(render::FrameAction& action);
+
     /// @brief RayCastAction: queues the continuous medium these splats approximate (the same
     /// classified grid, reconstructed with the paper's kernel: render::KernelVolumeMedium) and
     /// the camera (registered by registerNodeTypes()).
@@ -86,9 +97,9 @@ public:
 protected:
     ScalarSplat();
 
-    /// @brief The batch this node draws with, for the current field values (called with a
-    /// context current, again after a field changed).
-    virtual std::shared_ptr<render::SplatBatch> makeBatch() const = 0;
+    /// @brief What this node's splats look like for the current field values (called again
+    /// after a field that shapes them changed): the backends' description of a splat.
+    virtual render::SplatFootprint makeFootprint() const = 0;
 
     /// @brief The grid this node splats, classified through `cache` (which keeps it while its
     /// inputs stay the same): by default the VolumeData's scalar grid through the transfer
@@ -126,7 +137,16 @@ private:
     /// throws DataError naming this node when a field is out of range or one of them is missing.
     std::pair<const VolumeData&, const TransferFunction&> renderInputs(sg::State& state) const;
 
+    /// @brief This frame's splats for `camera`: classified (cached), ordered and emitted as the
+    /// fields say, the times added to `statistics`. What every backend draws.
+    render::FrameSplats frameSplats(sg::State& state, const render::CameraView& camera,
+                                    sg::RenderStatistics& statistics);
+
+    /// @brief The footprint for the current fields, made once until a shaping field changes.
+    std::shared_ptr<const render::SplatFootprint> footprint();
+
     std::unique_ptr<render::detail::ClassificationCache> mCache;
+    std::shared_ptr<const render::SplatFootprint> mFootprint;
     std::shared_ptr<render::SplatBatch> mBatch;
     std::uint64_t mBatchContext = 0;
 };

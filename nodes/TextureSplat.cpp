@@ -3,7 +3,7 @@
 #include "nodes/kernel/CubicKernel.h"
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/KernelOptimizer.h"
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/SplatFootprint.h"
 
 namespace texsplat::nodes {
 
@@ -12,20 +12,29 @@ TextureSplat::TextureSplat() {
     addField(textureResolution, "textureResolution", 64);
 }
 
-texsplat::kernel::FootprintTexture TextureSplat::footprint(SplatKernel splatKernel, int resolution,
-                                                           double extent) {
+std::shared_ptr<const texsplat::kernel::RadialKernel>
+TextureSplat::radialKernel(SplatKernel splatKernel) {
     const texsplat::kernel::CubicKernel paper = texsplat::kernel::CubicKernel::paper();
     if (splatKernel == SplatKernel::Gaussian) {
-        const texsplat::kernel::GaussianKernel gaussian =
-            texsplat::kernel::KernelOptimizer().fitGaussian(paper.support()).kernel;
-        return texsplat::kernel::FootprintTexture(gaussian, resolution, extent);
+        return std::make_shared<const texsplat::kernel::GaussianKernel>(
+            texsplat::kernel::KernelOptimizer().fitGaussian(paper.support()).kernel);
     }
-    return texsplat::kernel::FootprintTexture(paper, resolution, extent);
+    return std::make_shared<const texsplat::kernel::CubicKernel>(paper);
 }
 
-std::shared_ptr<render::SplatBatch> TextureSplat::makeBatch() const {
-    return std::make_shared<render::SplatBatch>(render::SplatBatch::textured(
-        footprint(kernel.as<SplatKernel>(), textureResolution.value(), size.value())));
+texsplat::kernel::FootprintTexture TextureSplat::footprint(SplatKernel splatKernel, int resolution,
+                                                           double extent) {
+    return texsplat::kernel::FootprintTexture(*radialKernel(splatKernel), resolution, extent);
+}
+
+render::SplatFootprint TextureSplat::makeFootprint() const {
+    render::SplatFootprint result;
+    result.shape = render::SplatShape::TexturedSquare;
+    result.extent = size.value();
+    result.kernel = radialKernel(kernel.as<SplatKernel>());
+    result.texture = std::make_shared<const texsplat::kernel::FootprintTexture>(
+        *result.kernel, textureResolution.value(), size.value());
+    return result;
 }
 
 } // namespace texsplat::nodes

@@ -4,8 +4,11 @@
 #include "scenegraph/EnumNames.h"
 #include "scenegraph/fields/SFEnum.h"
 
+#include <memory>
+
 namespace texsplat::kernel {
 class FootprintTexture;
+class RadialKernel;
 } // namespace texsplat::kernel
 
 namespace texsplat::nodes {
@@ -48,6 +51,11 @@ public:
     sg::SFEnum kernel;              ///< SplatKernel
     sg::SFInt32 textureResolution;  ///< footprint texels per side
 
+    /// @brief The kernel `splatKernel` names: the paper's cubic, or the Gaussian fitted to its
+    /// support.
+    static std::shared_ptr<const texsplat::kernel::RadialKernel> radialKernel(
+        SplatKernel splatKernel);
+
     /// @brief The footprint texture of `splatKernel` at `resolution`² texels over
     /// [−extent, extent]²
     /// (what TextureSplat and CombinedSplat carry).
@@ -58,7 +66,7 @@ public:
 protected:
     TextureSplat();
 
-    std::shared_ptr<render::SplatBatch> makeBatch() const override;
+    render::SplatFootprint makeFootprint() const override;
 };
 
 } // namespace texsplat::nodes

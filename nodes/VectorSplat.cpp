@@ -4,7 +4,7 @@
 #include "nodes/VolumeData.h"
 #include "nodes/detail/ColorText.h"
 #include "nodes/kernel/VectorSplatTable.h"
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/SplatFootprint.h"
 #include "nodes/render/detail/ClassificationCache.h"
 #include "scenegraph/Error.h"
 
@@ -42,9 +42,12 @@ void VectorSplat::checkFields() const {
     }
 }
 
-std::shared_ptr<render::SplatBatch> VectorSplat::makeBatch() const {
-    return std::make_shared<render::SplatBatch>(
-        render::SplatBatch::vectorMarks(*table()));
+render::SplatFootprint VectorSplat::makeFootprint() const {
+    render::SplatFootprint result;
+    result.shape = render::SplatShape::VectorSquare;
+    result.table = table();
+    result.extent = result.table->extent();
+    return result;
 }
 
 std::shared_ptr<const octree::ClassifiedGrid>

@@ -5,7 +5,7 @@ set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 packages=(
     cmake ninja-build g++ pkg-config
-    libglm-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0
+    libglm-dev libhwy-dev libtbb-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0
     libopenvdb-dev libboost-iostreams-dev libtinygltf-dev libopenexr-dev libstb-dev
     libcli11-dev libglfw3-dev libimgui-dev
     libgtest-dev libbenchmark-dev libcoin-dev

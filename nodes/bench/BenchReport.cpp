@@ -115,22 +115,26 @@ std::string benchTable(const std::vector<BenchResult>& results) {
     std::string text;
     char line[512];
     std::snprintf(line, sizeof line,
-                  "%-11s %-9s %-18s %9s %11s %11s %9s %9s %9s %7s %7s %10s %8s %10s %8s %9s\n",
-                  "dataset", "size", "method", "splats", "fragments", "ceil frags", "frame ms",
-                  "draw ms", "ceil ms", "frame/c", "draw/c", "ref RMSE", "ref PSNR",
-                  "full RMSE", "full PSNR", "frame/tex");
+                  "%-11s %-9s %-18s %-7s %9s %11s %11s %9s %9s %9s %7s %7s %10s %8s %10s %8s "
+                  "%9s %7s\n",
+                  "dataset", "size", "method", "backend", "splats", "fragments", "ceil frags",
+                  "frame ms", "draw ms", "ceil ms", "frame/c", "draw/c", "ref RMSE", "ref PSNR",
+                  "full RMSE", "full PSNR", "frame/tex", "vs gl");
     text += line;
     for (const BenchResult& r : results) {
-        std::snprintf(line, sizeof line,
-                      "%-11s %-9s %-18s %9zu %11llu %11llu %9.2f %9.2f %9.2f %7.3f %7.3f %10s "
-                      "%8s %10s %8s %9s\n",
-                      r.dataset.c_str(), sizeText(r).c_str(), r.method.c_str(), r.splats,
-                      static_cast<unsigned long long>(r.fragments),
-                      static_cast<unsigned long long>(r.ceilingFragments), 1e3 * r.frameSeconds,
-                      1e3 * r.drawSeconds(), 1e3 * r.ceilingSeconds, r.frameRatio,
-                      r.drawRatio, cell("%.3e", r.referenceRmse).c_str(),
-                      cell("%.2f", r.referencePsnr).c_str(), cell("%.3e", r.fullRmse).c_str(),
-                      cell("%.2f", r.fullPsnr).c_str(), cell("%.3f", r.fullFrameRatio).c_str());
+        const bool counted = r.backend == "gl"; // fragments and the ceiling are GL's
+        std::snprintf(
+            line, sizeof line,
+            "%-11s %-9s %-18s %-7s %9zu %11s %11s %9.2f %9.2f %9s %7s %7s %10s %8s %10s %8s %9s "
+            "%7s\n",
+            r.dataset.c_str(), sizeText(r).c_str(), r.method.c_str(), r.backend.c_str(), r.splats,
+            counted ? std::to_string(r.fragments).c_str() : "-",
+            counted ? std::to_string(r.ceilingFragments).c_str() : "-", 1e3 * r.frameSeconds,
+            1e3 * r.drawSeconds(), cell("%.2f", 1e3 * r.ceilingSeconds).c_str(),
+            cell("%.3f", r.frameRatio).c_str(), cell("%.3f", r.drawRatio).c_str(),
+            cell("%.3e", r.referenceRmse).c_str(), cell("%.2f", r.referencePsnr).c_str(),
+            cell("%.3e", r.fullRmse).c_str(), cell("%.2f", r.fullPsnr).c_str(),
+            cell("%.3f", r.fullFrameRatio).c_str(), cell("%.4f", r.glFrameRatio).c_str());
         text += line;
     }
     return text;
@@ -140,7 +144,7 @@ std::string benchCsv(const std::vector<BenchResult>& results) {
     std::string text = "dataset,width,height,method,full_quality,splats,fragments,"
                        "ceiling_fragments,frame_ms,load_ms,classify_ms,order_ms,upload_ms,"
                        "draw_ms,read_back_ms,ceiling_ms,frame_ratio,draw_ratio,reference_rmse,"
-                       "reference_psnr,full_rmse,full_psnr,full_frame_ratio\n";
+                       "reference_psnr,full_rmse,full_psnr,full_frame_ratio,backend,gl_frame_ratio\n";
     for (const BenchResult& r : results) {
         text += r.dataset + "," + std::to_string(r.width) + "," + std::to_string(r.height) + "," +
                 r.method + "," + (r.isFullQuality ? "1" : "0") + "," + std::to_string(r.splats) +
@@ -154,7 +158,8 @@ std::string benchCsv(const std::vector<BenchResult>& results) {
         text += "," + csvNumber(1e3 * r.ceilingSeconds) + "," + csvNumber(r.frameRatio) + "," +
                 csvNumber(r.drawRatio) + "," + csvNumber(r.referenceRmse) + "," +
                 csvNumber(r.referencePsnr) + "," + csvNumber(r.fullRmse) + "," +
-                csvNumber(r.fullPsnr) + "," + csvNumber(r.fullFrameRatio) + "\n";
+                csvNumber(r.fullPsnr) + "," + csvNumber(r.fullFrameRatio) + "," + r.backend +
+                "," + csvNumber(r.glFrameRatio) + "\n";
     }
     return text;
 }
@@ -266,7 +271,8 @@ std::string benchPlotSvg(const std::vector<BenchResult>& results, const std::str
         svg << marker(p.result->method, x(p.ms), y(p.error), colorOf(*p.result)) << "\n"
             << "<text x=\"" << x(p.ms) + 8 << "\" y=\"" << y(p.error) - 6
             << "\" font-size=\"10\" fill=\"" << colorOf(*p.result) << "\">"
-            << escapeXml(p.result->method) << "</text>\n";
+            << escapeXml(p.result->method + (p.result->backend == "cpu" ? " (cpu)" : ""))
+            << "</text>\n";
     }
     const double legendX = kLeft + plotWidth + 16;
     double legendY = kTop + 10;

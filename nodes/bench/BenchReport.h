@@ -16,7 +16,8 @@ std::string benchTable(const std::vector<BenchResult>& results);
 /// @brief The results as CSV with a header row: `dataset,width,height,method,full_quality,
 /// splats,fragments,ceiling_fragments,frame_ms,load_ms,classify_ms,order_ms,upload_ms,draw_ms,
 /// read_back_ms,ceiling_ms,frame_ratio,draw_ratio,reference_rmse,reference_psnr,full_rmse,
-/// full_psnr`; a value not measured is empty, an infinite PSNR is `inf`.
+/// full_psnr,full_frame_ratio,backend,gl_frame_ratio`; a value not measured is empty, an
+/// infinite PSNR is `inf`.
 std::string benchCsv(const std::vector<BenchResult>& results);
 
 /// @brief An SVG plot of error against frame time, both on log scales: one colour per dataset

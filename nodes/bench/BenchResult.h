@@ -1,6 +1,6 @@
 #pragma once
 
-#include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/actions/RenderStatistics.h"
 
 #include <array>
 #include <cstddef>
@@ -12,8 +12,9 @@ namespace texsplat::bench {
 
 /// @brief What `texsplat bench` measured for one method on one dataset at one image size.
 ///
-/// Times are medians over the repeated frames after warm-up, in wall seconds; a frame is
-/// RenderAction::render() from traversal to glFinish (classification is cached after the
+/// Times are medians over the repeated frames after warm-up, in wall seconds; a frame is, on GL,
+/// RenderAction::render() from traversal to glFinish, on the CPU FrameAction::collect() and
+/// CpuRenderer::draw() to the finished image (classification is cached after the
 /// warm-up, as in an interactive viewer). Errors are over R, G, B pooled, on the premultiplied
 /// float images (image::ImageComparison, PSNR peak 1); NaN where there was nothing to compare
 /// against (no reference, or no full-quality method in the run), +infinity PSNR for identical
@@ -23,13 +24,15 @@ struct BenchResult {
     int width = 0;           ///< image width in pixels
     int height = 0;          ///< image height in pixels
     std::string method;      ///< BenchMethod::name()
+    std::string backend;     ///< "gl" or "cpu"
     bool isFullQuality = false; ///< the texture splat with the paper's kernel at full resolution
     std::size_t splats = 0;  ///< splats drawn per frame
     std::uint64_t fragments = 0;        ///< fragments per frame (GL_SAMPLES_PASSED query)
     std::uint64_t ceilingFragments = 0; ///< fragments of the fill-rate ceiling's quads
     double frameSeconds = 0.0;   ///< median frame time
     std::array<double, sg::kRenderPhaseCount> phaseSeconds{}; ///< median per RenderPhase
-    double ceilingSeconds = 0.0; ///< median time of the fill-rate ceiling (FillRateCeiling)
+    /// @brief Median time of the fill-rate ceiling (FillRateCeiling); GL only, NaN on the CPU.
+    double ceilingSeconds = std::numeric_limits<double>::quiet_NaN();
     double referenceRmse = std::numeric_limits<double>::quiet_NaN(); ///< against RayCastAction
     double referencePsnr = std::numeric_limits<double>::quiet_NaN(); ///< dB
     double fullRmse = std::numeric_limits<double>::quiet_NaN(); ///< against the full-quality image
@@ -51,6 +54,9 @@ struct BenchResult {
     /// the run has no full-quality method): what a method costs against the paper's texture
     /// splats, e.g. vector splats (the paper paid +50 %).
     double fullFrameRatio = std::numeric_limits<double>::quiet_NaN();
+    /// Frame time over the same method's frame time on GL in the same run (1 for GL itself,
+    /// NaN without a GL row): the CPU backend's speed-up is its inverse.
+    double glFrameRatio = std::numeric_limits<double>::quiet_NaN();
 };
 
 } // namespace texsplat::bench

@@ -10,8 +10,10 @@
 #include "nodes/bench/detail/SamplesPassed.h"
 #include "nodes/image/Image.h"
 #include "nodes/image/ImageComparison.h"
+#include "nodes/render/FrameAction.h"
 #include "nodes/render/RenderedImage.h"
 #include "nodes/render/SplatView.h"
+#include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/Cut.h"
 #include "octree/Octree.h"
@@ -43,6 +45,10 @@ double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());
     const std::size_t n = values.size();
     return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+std::string backendName(render::Backend backend) {
+    return backend == render::Backend::Gl ? "gl" : "cpu";
 }
 
 std::string sizeText(const glm::ivec2& size) {
@@ -107,7 +113,9 @@ void BenchRunner::report(const std::string& stage, double fractionDone) const {
 }
 
 std::vector<BenchResult> BenchRunner::run() {
-    if (!gl::Context::current()) {
+    const bool withGl = std::find(mOptions.backends.begin(), mOptions.backends.end(),
+                                  render::Backend::Gl) != mOptions.backends.end();
+    if (withGl && !gl::Context::current()) {
         throw GlError("bench: no current GL context");
     }
     nodes::registerNodeTypes();
@@ -153,94 +161,151 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
         reference = imageFromRgba(rayCast.readColor(), size);
     }
 
-    FillRateCeiling ceiling(size.x, size.y);
+    const bool withGl = std::find(mOptions.backends.begin(), mOptions.backends.end(),
+                                  render::Backend::Gl) != mOptions.backends.end();
+    std::optional<FillRateCeiling> ceiling;
+    if (withGl) {
+        ceiling.emplace(size.x, size.y);
+    }
     std::vector<image::Image> images;
     const std::size_t first = results.size();
     for (const BenchMethod& method : mOptions.methods) {
-        const std::string stage = where + ": " + method.name();
         const sg::Node::Ptr node = method.makeNode(fullList.size());
         const auto& splatNode = static_cast<const nodes::ScalarSplat&>(*node);
         root->replaceChild(3, node);
-
-        // The ceiling draws the very list this method draws (the full list, or its octree cut),
-        // with quads as large as the method's (vector marks reach past the scalar splat).
-        const auto* marks = dynamic_cast<const nodes::VectorMarkSplat*>(node.get());
-        const float extent = splatNode.size.value() * (marks ? marks->windowScale.value() : 1.0f);
-        octree::SplatList cutList;
-        if (method.budget > 0.0) {
-            emitFor(source, static_cast<std::size_t>(splatNode.maxSplats.value()), cutList);
-        }
-        const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
-        ceiling.upload(drawn);
-
-        // Frames and ceiling draws alternate, so that load from other processes on a shared
-        // machine hits both alike; each ratio pairs a frame with the ceiling draw after it.
-        sg::RenderAction action(size.x, size.y);
-        const int frames = mOptions.warmup + mOptions.repeat;
-        for (int i = 0; i < mOptions.warmup; ++i) {
-            report(stage, static_cast<double>(i) / frames);
-            action.render(*root);
-            ceiling.draw(source.view, extent);
-        }
-        std::vector<double> frameTimes;
-        std::vector<double> ceilingTimes;
-        std::vector<double> frameRatios;
-        std::vector<double> drawRatios;
-        std::vector<std::vector<double>> phaseTimes(sg::kRenderPhaseCount);
-        for (int i = 0; i < mOptions.repeat; ++i) {
-            report(stage, static_cast<double>(mOptions.warmup + i) / frames);
-            const Clock::time_point start = Clock::now();
-            action.render(*root);
-            frameTimes.push_back(secondsSince(start));
-            for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
-                phaseTimes[phase].push_back(action.statistics().seconds[phase]);
+        for (const render::Backend backend : mOptions.backends) {
+            const std::string stage = where + ": " + method.name() +
+                                      (mOptions.backends.size() > 1 ? " " + backendName(backend)
+                                                                    : std::string());
+            BenchResult result;
+            result.dataset = dataset.name();
+            result.width = size.x;
+            result.height = size.y;
+            result.method = method.name();
+            result.backend = backendName(backend);
+            result.isFullQuality = method.isFullQuality();
+            if (backend == render::Backend::Gl) {
+                // The ceiling draws the very list this method draws (the full list, or its
+                // octree cut), with quads as large as the method's (vector marks reach past the
+                // scalar splat).
+                const auto* marks = dynamic_cast<const nodes::VectorMarkSplat*>(node.get());
+                const float extent =
+                    splatNode.size.value() * (marks ? marks->windowScale.value() : 1.0f);
+                octree::SplatList cutList;
+                if (method.budget > 0.0) {
+                    emitFor(source, static_cast<std::size_t>(splatNode.maxSplats.value()),
+                            cutList);
+                }
+                const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
+                images.push_back(measureGl(*root, size, *ceiling, source.view, extent, drawn,
+                                           stage, result));
+            } else {
+                images.push_back(measureCpu(*root, size, stage, result));
             }
-            ceilingTimes.push_back(ceiling.draw(source.view, extent));
-            frameRatios.push_back(frameTimes.back() / ceilingTimes.back());
-            drawRatios.push_back(action.statistics().time(sg::RenderPhase::Draw) /
-                                 ceilingTimes.back());
+            report(stage, 1.0);
+            if (reference) {
+                compare(*reference, images.back(), result.referenceRmse, result.referencePsnr);
+            }
+            results.push_back(std::move(result));
         }
-        BenchResult result;
-        result.dataset = dataset.name();
-        result.width = size.x;
-        result.height = size.y;
-        result.method = method.name();
-        result.isFullQuality = method.isFullQuality();
-        result.splats = action.statistics().splats;
-        result.frameSeconds = median(frameTimes);
-        for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
-            result.phaseSeconds[phase] = median(phaseTimes[phase]);
-        }
-        result.ceilingSeconds = median(ceilingTimes);
-        result.frameRatio = median(frameRatios);
-        result.drawRatio = median(drawRatios);
-        if (drawn.size() != result.splats) {
-            log(LogLevel::Warning, stage + ": the fill-rate ceiling draws " +
-                                       std::to_string(drawn.size()) + " quads, the method " +
-                                       std::to_string(result.splats) + " splats");
-        }
-        result.ceilingFragments = ceiling.fragments(source.view, extent);
-        result.fragments = detail::countSamplesPassed([&] { action.render(*root); });
-        images.push_back(render::renderedImage(action));
-        report(stage, 1.0);
-        if (reference) {
-            compare(*reference, images.back(), result.referenceRmse, result.referencePsnr);
-        }
-        results.push_back(std::move(result));
     }
+    compareWithinRun(images, results, first);
+}
 
-    const auto full = std::find_if(mOptions.methods.begin(), mOptions.methods.end(),
-                                   [](const BenchMethod& m) { return m.isFullQuality(); });
-    if (full != mOptions.methods.end()) {
-        const image::Image& fullImage =
-            images[static_cast<std::size_t>(full - mOptions.methods.begin())];
-        for (std::size_t i = 0; i < images.size(); ++i) {
-            BenchResult& result = results[first + i];
-            compare(fullImage, images[i], result.fullRmse, result.fullPsnr);
-            result.fullFrameRatio =
-                result.frameSeconds /
-                results[first + static_cast<std::size_t>(full - mOptions.methods.begin())]
-                    .frameSeconds;
+image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
+                                    FillRateCeiling& ceiling, const render::SplatView& view,
+                                    float extent, const octree::SplatList& drawn,
+                                    const std::string& stage, BenchResult& result) const {
+    ceiling.upload(drawn);
+    // Frames and ceiling draws alternate, so that load from other processes on a shared
+    // machine hits both alike; each ratio pairs a frame with the ceiling draw after it.
+    sg::RenderAction action(size.x, size.y);
+    const int frames = mOptions.warmup + mOptions.repeat;
+    for (int i = 0; i < mOptions.warmup; ++i) {
+        report(stage, static_cast<double>(i) / frames);
+        action.render(root);
+        ceiling.draw(view, extent);
+    }
+    std::vector<double> frameTimes;
+    std::vector<double> ceilingTimes;
+    std::vector<double> frameRatios;
+    std::vector<double> drawRatios;
+    std::vector<std::vector<double>> phaseTimes(sg::kRenderPhaseCount);
+    for (int i = 0; i < mOptions.repeat; ++i) {
+        report(stage, static_cast<double>(mOptions.warmup + i) / frames);
+        const Clock::time_point start = Clock::now();
+        action.render(root);
+        frameTimes.push_back(secondsSince(start));
+        for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
+            phaseTimes[phase].push_back(action.statistics().seconds[phase]);
+        }
+        ceilingTimes.push_back(ceiling.draw(view, extent));
+        frameRatios.push_back(frameTimes.back() / ceilingTimes.back());
+        drawRatios.push_back(action.statistics().time(sg::RenderPhase::Draw) /
+                             ceilingTimes.back());
+    }
+    result.splats = action.statistics().splats;
+    result.frameSeconds = median(frameTimes);
+    for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
+        result.phaseSeconds[phase] = median(phaseTimes[phase]);
+    }
+    result.ceilingSeconds = median(ceilingTimes);
+    result.frameRatio = median(frameRatios);
+    result.drawRatio = median(drawRatios);
+    if (drawn.size() != result.splats) {
+        log(LogLevel::Warning, stage + ": the fill-rate ceiling draws " +
+                                   std::to_string(drawn.size()) + " quads, the method " +
+                                   std::to_string(result.splats) + " splats");
+    }
+    result.ceilingFragments = ceiling.fragments(view, extent);
+    result.fragments = detail::countSamplesPassed([&] { action.render(root); });
+    return render::renderedImage(action);
+}
+
+image::Image BenchRunner::measureCpu(sg::Node& root, const glm::ivec2& size,
+                                     const std::string& stage, BenchResult& result) const {
+    render::FrameAction action(size.x, size.y);
+    const render::cpu::CpuRenderer renderer(mOptions.cpuThreads);
+    const int frames = mOptions.warmup + mOptions.repeat;
+    std::optional<image::Image> image;
+    std::vector<double> frameTimes;
+    std::vector<std::vector<double>> phaseTimes(sg::kRenderPhaseCount);
+    for (int i = 0; i < frames; ++i) {
+        report(stage, static_cast<double>(i) / frames);
+        const Clock::time_point start = Clock::now();
+        image = renderer.draw(action.collect(root), action.statistics());
+        if (i < mOptions.warmup) {
+            continue;
+        }
+        frameTimes.push_back(secondsSince(start));
+        for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
+            phaseTimes[phase].push_back(action.statistics().seconds[phase]);
+        }
+    }
+    result.splats = action.statistics().splats;
+    result.frameSeconds = median(frameTimes);
+    for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
+        result.phaseSeconds[phase] = median(phaseTimes[phase]);
+    }
+    return std::move(*image);
+}
+
+// Per backend, every image against that backend's full-quality image and every frame time
+// against its frame time; every frame time against the same method's on GL.
+void BenchRunner::compareWithinRun(const std::vector<image::Image>& images,
+                                   std::vector<BenchResult>& results, std::size_t first) const {
+    const std::size_t count = images.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        BenchResult& result = results[first + i];
+        for (std::size_t j = 0; j < count; ++j) {
+            const BenchResult& other = results[first + j];
+            if (other.backend == result.backend && other.isFullQuality) {
+                compare(images[j], images[i], result.fullRmse, result.fullPsnr);
+                result.fullFrameRatio = result.frameSeconds / other.frameSeconds;
+            }
+            if (other.method == result.method && other.backend == backendName(render::Backend::Gl)) {
+                result.glFrameRatio = result.frameSeconds / other.frameSeconds;
+            }
         }
     }
 }

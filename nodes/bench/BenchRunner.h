@@ -3,6 +3,11 @@
 #include "nodes/bench/BenchDataset.h"
 #include "nodes/bench/BenchMethod.h"
 #include "nodes/bench/BenchResult.h"
+#include "nodes/image/Image.h"
+#include "nodes/render/BackendChoice.h"
+#include "nodes/render/SplatView.h"
+#include "octree/Fwd.h"
+#include "scenegraph/Fwd.h"
 
 #include <glm/vec2.hpp>
 
@@ -11,6 +16,8 @@
 #include <vector>
 
 namespace texsplat::bench {
+
+class FillRateCeiling;
 
 /// @brief What BenchRunner measures and how often.
 struct BenchOptions {
@@ -21,16 +28,21 @@ struct BenchOptions {
     int repeat = 5;  ///< timed frames; the median is reported, >= 1
     bool reference = true;  ///< ray cast the reference image (RayCastAction) per dataset and size
     int threads = 0;        ///< RayCastAction threads (0: all cores)
+    /// @brief Backends measured, each method on each in this order; GL needs a current context.
+    std::vector<render::Backend> backends{render::Backend::Gl};
+    int cpuThreads = 0; ///< CPU backend threads (0: all cores)
 };
 
 /// @brief Runs `texsplat bench`: for every dataset and image size, renders the RayCastAction
-/// reference once, then each method: warm-up, then `repeat` timed frames, each followed by one
-/// timed draw of the fill-rate ceiling (FillRateCeiling) of the same splat list, so that load
-/// from other processes hits both alike; then one more frame counted with a GL_SAMPLES_PASSED
-/// query. Every image is compared with the reference and with the full-quality texture-splat
-/// image.
+/// reference once, then each method on each backend: warm-up, then `repeat` timed frames. On
+/// GL each frame is followed by one timed draw of the fill-rate ceiling (FillRateCeiling) of
+/// the same splat list, so that load from other processes hits both alike, then one more frame
+/// is counted with a GL_SAMPLES_PASSED query. Every image is compared with the reference and
+/// with the full-quality texture-splat image of its backend; every frame time with the same
+/// method's on GL.
 ///
-/// Needs a current GL context for run(); registers the node types itself.
+/// Needs a current GL context for run() when the backends include GL; registers the node types
+/// itself.
 class BenchRunner {
 public:
     /// @brief Called with what is being done ("ml128 512x512: reference") and the fraction of
@@ -53,6 +65,14 @@ private:
     void runOne(const BenchDataset& dataset, const glm::ivec2& size,
                 std::vector<BenchResult>& results);
     void report(const std::string& stage, double fractionDone) const;
+    image::Image measureGl(sg::Node& root, const glm::ivec2& size, FillRateCeiling& ceiling,
+                           const render::SplatView& view, float extent,
+                           const octree::SplatList& drawn, const std::string& stage,
+                           BenchResult& result) const;
+    image::Image measureCpu(sg::Node& root, const glm::ivec2& size, const std::string& stage,
+                            BenchResult& result) const;
+    void compareWithinRun(const std::vector<image::Image>& images,
+                          std::vector<BenchResult>& results, std::size_t first) const;
 
     BenchOptions mOptions;
     Progress mProgress;

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace texsplat::kernel {
@@ -52,6 +53,70 @@ FootprintTexture::FootprintTexture(const RadialKernel& kernel, int resolution, d
             mTexels[static_cast<size_t>(row) * resolution + column] = static_cast<float>(
                 kernel.footprint(std::hypot(-extent + (column + 0.5) * texel,
                                             -extent + (row + 0.5) * texel)));
+}
+
+FootprintTexture FootprintTexture::gouraudFan(const RadialKernel& kernel, double extent,
+                                              int radialSamples, int azimuthSamples,
+                                              int resolution) {
+    if (radialSamples < 2 || azimuthSamples < 3) {
+        throw DataError("polygonal splat: needs at least 2 radial and 3 azimuth samples, got " +
+                        std::to_string(radialSamples) + " and " + std::to_string(azimuthSamples));
+    }
+    // Start from the exact footprint texture: it checks the resolution and extent.
+    FootprintTexture result(kernel, resolution, extent);
+    const int rings = radialSamples - 1;
+    std::vector<double> ringValue(static_cast<std::size_t>(rings) + 1);
+    for (int ring = 0; ring <= rings; ++ring) {
+        ringValue[static_cast<std::size_t>(ring)] =
+            kernel.footprint(extent * static_cast<double>(ring) / rings);
+    }
+    const double sector = 2.0 * std::acos(-1.0) / azimuthSamples;
+    // Vertex (ring, spoke) of the fan in units of the extent, with its footprint.
+    struct Vertex {
+        double x, y, value;
+    };
+    const auto vertex = [&](int ring, int spoke) {
+        const double radius = static_cast<double>(ring) / rings;
+        const double angle = sector * (spoke % azimuthSamples);
+        return Vertex{radius * std::cos(angle), radius * std::sin(angle),
+                      ringValue[static_cast<std::size_t>(ring)]};
+    };
+    // The linear interpolation over triangle abc at (x, y), when (x, y) lies in it.
+    const auto interpolate = [](const Vertex& a, const Vertex& b, const Vertex& c, double x,
+                                double y) -> std::optional<double> {
+        const double area = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+        const double u = ((b.x - x) * (c.y - y) - (c.x - x) * (b.y - y)) / area;
+        const double v = ((c.x - x) * (a.y - y) - (a.x - x) * (c.y - y)) / area;
+        const double w = 1.0 - u - v;
+        constexpr double kEdge = -1e-12;
+        if (u < kEdge || v < kEdge || w < kEdge) {
+            return std::nullopt;
+        }
+        return u * a.value + v * b.value + w * c.value;
+    };
+    const double texel = 2.0 / resolution;
+    for (int row = 0; row < resolution; ++row) {
+        for (int column = 0; column < resolution; ++column) {
+            const double x = -1.0 + (column + 0.5) * texel;
+            const double y = -1.0 + (row + 0.5) * texel;
+            double angle = std::atan2(y, x);
+            angle += angle < 0.0 ? 2.0 * std::acos(-1.0) : 0.0;
+            const int spoke = std::min(static_cast<int>(angle / sector), azimuthSamples - 1);
+            std::optional<double> value =
+                interpolate(vertex(0, 0), vertex(1, spoke), vertex(1, spoke + 1), x, y);
+            for (int ring = 1; ring < rings && !value; ++ring) {
+                value = interpolate(vertex(ring, spoke), vertex(ring + 1, spoke),
+                                    vertex(ring + 1, spoke + 1), x, y);
+                if (!value) {
+                    value = interpolate(vertex(ring, spoke), vertex(ring + 1, spoke + 1),
+                                        vertex(ring, spoke + 1), x, y);
+                }
+            }
+            result.mTexels[static_cast<std::size_t>(row) * resolution + column] =
+                static_cast<float>(value.value_or(0.0));
+        }
+    }
+    return result;
 }
 
 FootprintTexture FootprintTexture::quantizedTo8Bits() const {

@@ -52,6 +52,16 @@ public:
     /// passes.
     FootprintTexture(const RadialKernel& kernel, int resolution, double extent = kPaperExtent);
 
+    /// @brief The footprint of the polygonal Gaussian splat (Crawfis & Max 1993, figure 4a) as a
+    /// texture: the fan of a centre and `radialSamples − 1` rings of `azimuthSamples` vertices out
+    /// to `extent`, each vertex carrying kernel.footprint there, interpolated linearly over its
+    /// triangles (0 outside the fan), tabulated at texel centres over [−extent, extent]². What
+    /// a backend without polygons draws for the fan: it interpolates the footprint where
+    /// Gouraud shading interpolates the shaded colour, the same to first order in the opacity.
+    /// Throws DataError as the constructor, or when radialSamples < 2 or azimuthSamples < 3.
+    static FootprintTexture gouraudFan(const RadialKernel& kernel, double extent,
+                                       int radialSamples, int azimuthSamples, int resolution);
+
     /// @brief Texels per side.
     int resolution() const { return mResolution; }
 

@@ -86,11 +86,8 @@ void MeshBatch::draw(const MeshLighting& lighting) {
     mProgram.setUniform("localToClip", lighting.localToClip);
     mProgram.setUniform("normalToRoot", glm::inverseTranspose(glm::mat3(lighting.model)));
     mProgram.setUniform("emissiveColor", lighting.emissiveColor);
-    std::vector<nodes::DirectionalLightSource> lights = lighting.lights;
-    if (lights.empty()) {
-        lights.push_back({lighting.viewDirection, glm::vec3(1.0f)});
-    }
-    const int count = std::min(static_cast<int>(lights.size()), kMaxLights);
+    const std::vector<nodes::DirectionalLightSource> lights = lighting.effectiveLights();
+    const auto count = static_cast<int>(lights.size());
     mProgram.setUniform("lightCount", count);
     for (int i = 0; i < count; ++i) {
         const std::string index = "[" + std::to_string(i) + "]";

@@ -20,19 +20,12 @@ constexpr std::uint32_t kLeafSize = 4;
 
 } // namespace
 
-MeshSurface::MeshSurface(const nodes::TriangleMesh& mesh, const glm::mat4& model,
-                         std::vector<nodes::DirectionalLightSource> lights,
-                         const glm::vec3& viewDirection, const glm::vec3& emissiveColor)
-    : mLights(std::move(lights)), mEmissive(emissiveColor) {
+MeshSurface::MeshSurface(const nodes::TriangleMesh& mesh, const MeshLighting& lighting)
+    : mLights(lighting.effectiveLights()), mEmissive(lighting.emissiveColor) {
     TEXSPLAT_ASSERT(mesh.normals.size() == mesh.positions.size() &&
                         mesh.colors.size() == mesh.positions.size(),
                     "MeshSurface: positions, normals and colors must be parallel");
-    if (mLights.empty()) {
-        mLights.push_back({viewDirection, glm::vec3(1.0f)});
-    }
-    if (mLights.size() > static_cast<std::size_t>(kMaxLights)) {
-        mLights.resize(static_cast<std::size_t>(kMaxLights));
-    }
+    const glm::mat4& model = lighting.model;
     const glm::mat3 normalToRoot = glm::inverseTranspose(glm::mat3(model));
     mPositions.reserve(mesh.positions.size());
     mNormals.reserve(mesh.normals.size());

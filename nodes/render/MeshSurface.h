@@ -1,6 +1,6 @@
 #pragma once
 
-#include "nodes/elements/LightElement.h"
+#include "nodes/render/MeshLighting.h"
 #include "scenegraph/actions/RayCastAction.h"
 
 #include <glm/mat4x4.hpp>
@@ -26,17 +26,12 @@ namespace texsplat::render {
 /// triangles a leaf), so a ray costs O(log n) box tests.
 class MeshSurface final : public sg::RayCastSurface {
 public:
-    /// @brief The surface of `mesh` placed by `model`, lit by `lights` (root space; empty: a
-    /// white headlight along `viewDirection`) plus `emissiveColor`.
-    MeshSurface(const nodes::TriangleMesh& mesh, const glm::mat4& model,
-                std::vector<nodes::DirectionalLightSource> lights, const glm::vec3& viewDirection,
-                const glm::vec3& emissiveColor);
+    /// @brief The surface of `mesh` placed and lit by `lighting` (its clip matrix is unused:
+    /// rays are in root space).
+    MeshSurface(const nodes::TriangleMesh& mesh, const MeshLighting& lighting);
 
     bool intersect(const sg::RayCastRay& ray, float tMin, float tMax, float& t,
                    glm::vec4& color) const override;
-
-    /// @brief The most directional lights a mesh takes (MeshBatch::kMaxLights); more are ignored.
-    static constexpr int kMaxLights = 8;
 
 private:
     struct BoxNode {

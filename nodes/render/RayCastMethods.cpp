@@ -5,11 +5,9 @@
 #include "nodes/Mesh.h"
 #include "nodes/ScalarSplat.h"
 #include "nodes/TriangleMesh.h"
-#include "nodes/elements/LightElement.h"
-#include "nodes/elements/MaterialElement.h"
 #include "nodes/render/CameraView.h"
+#include "nodes/render/MeshLighting.h"
 #include "nodes/render/MeshSurface.h"
-#include "scenegraph/actions/ModelMatrixElement.h"
 #include "scenegraph/actions/RayCastAction.h"
 
 #include <memory>
@@ -26,11 +24,9 @@ void queueSurface(sg::RayCastAction& action, const sg::Node& node,
         return;
     }
     const CameraView camera = CameraView::current(action.state(), node, action.aspectRatio());
-    sg::State& state = action.state();
     action.setCamera(camera.view, camera.projection);
-    action.addSurface(std::make_shared<MeshSurface>(
-        mesh, state.get<sg::ModelMatrixElement>().matrix, state.get<nodes::LightElement>().lights,
-        camera.viewDirection, state.get<nodes::MaterialElement>().emissiveColor));
+    action.addSurface(
+        std::make_shared<MeshSurface>(mesh, MeshLighting::current(action.state(), camera)));
 }
 
 template <class N> void rayCastStateMesh(sg::Action& action, sg::Node& node) {

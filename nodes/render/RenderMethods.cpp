@@ -5,12 +5,9 @@
 #include "nodes/Mesh.h"
 #include "nodes/ScalarSplat.h"
 #include "nodes/TriangleMesh.h"
-#include "nodes/detail/NodeContext.h"
-#include "nodes/elements/LightElement.h"
-#include "nodes/elements/MaterialElement.h"
 #include "nodes/render/CameraView.h"
 #include "nodes/render/MeshBatch.h"
-#include "scenegraph/actions/ModelMatrixElement.h"
+#include "nodes/render/MeshLighting.h"
 #include "scenegraph/actions/RenderAction.h"
 
 #include <chrono>
@@ -33,13 +30,8 @@ void queueMesh(sg::RenderAction& action, const sg::Node& node, const nodes::Tria
     if (mesh.isEmpty()) {
         return;
     }
-    const CameraView camera = CameraView::current(action, node);
-    MeshLighting lighting;
-    lighting.model = action.state().get<sg::ModelMatrixElement>().matrix;
-    lighting.localToClip = camera.projection * camera.view * lighting.model;
-    lighting.lights = action.state().get<nodes::LightElement>().lights;
-    lighting.viewDirection = camera.viewDirection;
-    lighting.emissiveColor = action.state().get<nodes::MaterialElement>().emissiveColor;
+    const MeshLighting lighting =
+        MeshLighting::current(action.state(), CameraView::current(action, node));
     const Clock::time_point start = Clock::now();
     auto batch = std::make_shared<MeshBatch>(mesh);
     action.addTime(sg::RenderPhase::Upload, secondsSince(start));

@@ -158,6 +158,18 @@ SplatBatch SplatBatch::polygonal(const kernel::RadialKernel& kernel, double exte
     return SplatBatch(SplatShape::GouraudPolygon, extent, vertices, indices);
 }
 
+SplatBatch SplatBatch::create(const SplatFootprint& footprint) {
+    switch (footprint.shape) {
+    case SplatShape::TexturedSquare: return textured(*footprint.texture);
+    case SplatShape::GouraudPolygon:
+        return polygonal(*footprint.kernel, footprint.extent, footprint.radialSamples,
+                         footprint.azimuthSamples);
+    case SplatShape::VectorSquare: return vectorMarks(*footprint.table);
+    case SplatShape::CombinedSquare: return combinedMarks(*footprint.table, *footprint.texture);
+    }
+    throw DataError("splat batch: unknown splat shape");
+}
+
 void SplatBatch::upload(const octree::SplatList& splats) {
     TEXSPLAT_ASSERT(splats.size() <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
                     "SplatBatch::upload(): more splats than one instanced draw can take");

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/render/MarkDrawing.h"
+#include "nodes/render/SplatFootprint.h"
 #include "nodes/render/SplatView.h"
 #include "octree/Fwd.h"
 #include "scenegraph/gl/Buffer.h"
@@ -20,22 +21,6 @@ class VectorSplatTable;
 } // namespace texsplat::kernel
 
 namespace texsplat::render {
-
-/// @brief What each splat of a batch is drawn as.
-enum class SplatShape {
-    /// One square carrying the footprint as a texture (Crawfis & Max 1993, section 3: "we can
-    /// replace these many polygons with a single texture mapped square").
-    TexturedSquare,
-    /// A polygonal fan with the footprint sampled at its vertices and Gouraud shaded: the
-    /// baseline of the paper's figure 4a (Explorer's Gaussian splats, after Laur & Hanrahan).
-    GouraudPolygon,
-    /// One square turned to the splat's projected vector, carrying a texture of the vector
-    /// splat table (Crawfis & Max 1993, "Combined Vector and Scalar Textures"): marks only.
-    VectorSquare,
-    /// The same square carrying the scalar footprint too: the scalar splat's reconstruction with
-    /// the marks in its colour, one pass.
-    CombinedSquare,
-};
 
 /// @brief A splat list on the GPU, drawn as instanced copies of one small template that turns
 /// to face the eye (never one polygon set per voxel).
@@ -78,6 +63,11 @@ public:
     /// @throws GlError as textured().
     static SplatBatch combinedMarks(const kernel::VectorSplatTable& table,
                                     const kernel::FootprintTexture& footprint);
+
+    /// @brief The batch that draws splats looking like `footprint`: textured(), polygonal(),
+    /// vectorMarks() or combinedMarks() by its shape.
+    /// @throws as those.
+    static SplatBatch create(const SplatFootprint& footprint);
 
     /// @brief Replaces the instance data by `splats` (back to front, as drawn); vector and
     /// combined batches need the list's vectors.

@@ -40,18 +40,6 @@ struct PassState {
 
 } // namespace
 
-std::string_view toString(RenderPhase phase) {
-    switch (phase) {
-    case RenderPhase::Load: return "load";
-    case RenderPhase::Classify: return "classify";
-    case RenderPhase::Order: return "order";
-    case RenderPhase::Upload: return "upload";
-    case RenderPhase::Draw: return "draw";
-    case RenderPhase::ReadBack: return "read back";
-    }
-    return "unknown";
-}
-
 RenderAction::RenderAction(int width, int height, gl::FramebufferColor color)
     : Action(methods()),
       mFramebuffer(width, height, color, gl::FramebufferDepth::Depth32F) {}
@@ -130,7 +118,7 @@ float RenderAction::aspectRatio() const {
 }
 
 void RenderAction::addTime(RenderPhase phase, double seconds) {
-    mStatistics.seconds[static_cast<std::size_t>(phase)] += seconds;
+    mStatistics.addTime(phase, seconds);
 }
 
 std::vector<float> RenderAction::readColor() {

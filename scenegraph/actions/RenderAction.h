@@ -1,43 +1,16 @@
 #pragma once
 
 #include "scenegraph/actions/Action.h"
+#include "scenegraph/actions/RenderStatistics.h"
 #include "scenegraph/gl/Framebuffer.h"
 
 #include <glm/vec4.hpp>
 
-#include <array>
 #include <cstddef>
 #include <functional>
-#include <string_view>
 #include <vector>
 
 namespace texsplat::sg {
-
-/// @brief The steps a frame spends its time in, as `texsplat render --time-report` lists them.
-enum class RenderPhase {
-    Load,       ///< reading or generating volume data and meshes
-    Classify,   ///< transfer function over the grid, octree build
-    Order,      ///< back-to-front splat list for the view (slice order or octree cut)
-    Upload,     ///< buffers and textures to GL
-    Draw,       ///< both passes, until the GL finished them (glFinish)
-    ReadBack,   ///< framebuffer to CPU memory
-};
-
-/// @brief Number of RenderPhase values.
-inline constexpr std::size_t kRenderPhaseCount = 6;
-
-/// @brief Lower-case name of a phase ("read back"), for reports.
-std::string_view toString(RenderPhase phase);
-
-/// @brief Where one frame's time went and how much it drew.
-struct RenderStatistics {
-    std::array<double, kRenderPhaseCount> seconds{}; ///< wall seconds per RenderPhase
-    std::size_t splats = 0;    ///< splats drawn (instances)
-    std::size_t triangles = 0; ///< opaque triangles drawn (splat quads not counted)
-
-    /// @brief Seconds spent in `phase`.
-    double time(RenderPhase phase) const { return seconds[static_cast<std::size_t>(phase)]; }
-};
 
 /// @brief Draws a scene with OpenGL into an off-screen float framebuffer (DESIGN.md, "Data flow
 /// of one frame").

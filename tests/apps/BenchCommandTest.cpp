@@ -32,31 +32,36 @@ protected:
 
 TEST_F(BenchCommandTest, printsTheTableAndWritesCsvAndPlot) {
     const auto output =
-        runTexsplat("bench --dataset ml8 --size 32x24 --repeat 1 --method "
+        runTexsplat("bench --dataset ml8 --size 32x24 --repeat 1 --backend gl --method "
                     "texture,texture-gaussian,polygon,texture@0.5 --csv " +
                     path("bench.csv") + " --plot " + path("bench.svg"));
     ASSERT_EQ(output.exitCode, 0) << output.standardError;
     const std::string& text = output.standardOutput;
-    EXPECT_NE(text.find("dataset     size      method                splats   fragments  "
+    EXPECT_NE(text.find("dataset     size      method             backend    splats   fragments  "
                         "ceil frags  frame ms   draw ms   ceil ms frame/c  draw/c   ref RMSE "
-                        "ref PSNR  full RMSE full PSNR frame/tex\n"),
+                        "ref PSNR  full RMSE full PSNR frame/tex   vs gl\n"),
               std::string::npos)
         << text;
-    EXPECT_NE(text.find("ml8         32x24     texture "), std::string::npos) << text;
-    EXPECT_NE(text.find("ml8         32x24     polygon "), std::string::npos) << text;
+    EXPECT_NE(text.find("ml8         32x24     texture            gl "), std::string::npos)
+        << text;
+    EXPECT_NE(text.find("ml8         32x24     polygon            gl "), std::string::npos)
+        << text;
 
     const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
     ASSERT_EQ(lines.size(), 5u) << read(path("bench.csv"));
     EXPECT_EQ(lines[0], "dataset,width,height,method,full_quality,splats,fragments,"
                         "ceiling_fragments,frame_ms,load_ms,classify_ms,order_ms,upload_ms,"
                         "draw_ms,read_back_ms,ceiling_ms,frame_ratio,draw_ratio,reference_rmse,"
-                        "reference_psnr,full_rmse,full_psnr,full_frame_ratio");
+                        "reference_psnr,full_rmse,full_psnr,full_frame_ratio,backend,"
+                        "gl_frame_ratio");
     const std::vector<std::string> methods = {"texture", "texture-gaussian", "polygon",
                                               "texture@0.5"};
     for (std::size_t row = 1; row < lines.size(); ++row) {
         const std::vector<std::string> fields = split(lines[row], ',');
-        ASSERT_EQ(fields.size(), 23u) << lines[row];
+        ASSERT_EQ(fields.size(), 25u) << lines[row];
         EXPECT_EQ(fields[0], "ml8");
+        EXPECT_EQ(fields[23], "gl");
+        EXPECT_EQ(fields[24], "1");
         EXPECT_EQ(fields[1], "32");
         EXPECT_EQ(fields[2], "24");
         EXPECT_EQ(fields[3], methods[row - 1]);
@@ -89,7 +94,8 @@ TEST_F(BenchCommandTest, printsTheTableAndWritesCsvAndPlot) {
 
 TEST_F(BenchCommandTest, timesVectorAndCombinedSplatsAgainstTextureSplatsInTheSameRun) {
     const auto output = runTexsplat("bench --dataset tornado10 --size 32x32 --repeat 1 "
-                                    "--method texture,vector,combined --no-reference --csv " +
+                                    "--backend gl --method texture,vector,combined "
+                                    "--no-reference --csv " +
                                     path("bench.csv"));
     ASSERT_EQ(output.exitCode, 0) << output.standardError;
     const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
@@ -108,17 +114,48 @@ TEST_F(BenchCommandTest, timesVectorAndCombinedSplatsAgainstTextureSplatsInTheSa
 
 TEST_F(BenchCommandTest, skipsTheReferenceWhenAsked) {
     const auto output = runTexsplat("bench --dataset blob6 --size 16x16 --repeat 1 "
-                                    "--method texture,polygon --no-reference --csv " +
+                                    "--backend gl --method texture,polygon --no-reference --csv " +
                                     path("bench.csv"));
     ASSERT_EQ(output.exitCode, 0) << output.standardError;
     EXPECT_EQ(output.standardError.find("reference"), std::string::npos) << output.standardError;
     const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
     ASSERT_EQ(lines.size(), 3u);
     const std::vector<std::string> fields = split(lines[2], ',');
-    ASSERT_EQ(fields.size(), 23u) << lines[2];
+    ASSERT_EQ(fields.size(), 25u) << lines[2];
     EXPECT_EQ(fields[18], "") << "no reference RMSE";
     EXPECT_EQ(fields[19], "") << "no reference PSNR";
     EXPECT_GT(std::stod(fields[20]), 0.0) << "the polygon against the texture splats";
+}
+
+TEST_F(BenchCommandTest, timesBothBackendsInOneRunAgainstTheSameReference) {
+    const auto output = runTexsplat("bench --dataset ml12 --size 40x32 --repeat 1 --backend "
+                                    "cpu,gl --method texture,polygon --csv " +
+                                    path("bench.csv"));
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find("texsplat bench: CPU ("), std::string::npos)
+        << output.standardOutput;
+    const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
+    ASSERT_EQ(lines.size(), 5u) << read(path("bench.csv"));
+    // Rows: texture cpu, texture gl, polygon cpu, polygon gl.
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t row = 1; row < lines.size(); ++row) {
+        rows.push_back(split(lines[row], ','));
+        ASSERT_EQ(rows.back().size(), 25u) << lines[row];
+    }
+    for (const std::size_t row : {0u, 2u}) {
+        EXPECT_EQ(rows[row][23], "cpu");
+        EXPECT_EQ(rows[row + 1][23], "gl");
+        EXPECT_EQ(rows[row][5], rows[row + 1][5]) << "both backends draw the same splats";
+        EXPECT_EQ(rows[row][6], "0") << "no GL fragment query on the CPU";
+        EXPECT_EQ(rows[row][15], "") << "no fill-rate ceiling on the CPU";
+        const double ratio = std::stod(rows[row][24]);
+        EXPECT_TRUE(std::isfinite(ratio) && ratio > 0.0) << lines[row + 1];
+        // The same error against the reference, to well within 1 dB.
+        EXPECT_NEAR(std::stod(rows[row][19]), std::stod(rows[row + 1][19]), 1.0)
+            << lines[row + 1] << "\n" << lines[row + 2];
+    }
+    EXPECT_EQ(rows[0][21], "inf") << "each backend's full-quality image against itself";
+    EXPECT_EQ(rows[1][21], "inf");
 }
 
 TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
@@ -134,6 +171,15 @@ TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
               "texsplat: error: --method: unknown method 'texture@1.5' (expected texture, "
               "texture-gaussian, polygon, vector or combined, optionally with @FRACTION, e.g. "
               "texture@0.1)\n");
+    output = runTexsplat("bench --dataset ml8 --backend cpu,metal");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: --backend: expected cpu, gl or auto, got 'metal'\n");
+    output = runTexsplat("bench --dataset tornado8 --backend cpu --method texture,vector");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError, "texsplat: error: --method: vector draws vector marks, "
+                                    "which the CPU backend does not draw yet (use --backend "
+                                    "gl)\n");
     output = runTexsplat("bench --dataset tornado8,ml8 --method texture,vector");
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError, "texsplat: error: --method: vector draws vectors, but "

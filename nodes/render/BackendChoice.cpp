@@ -1,0 +1,80 @@
+#include "nodes/render/BackendChoice.h"
+
+#include "scenegraph/Error.h"
+
+#include <chrono>
+
+namespace texsplat::render {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+} // namespace
+
+BackendRequest parseBackendRequest(std::string_view text) {
+    if (text == "auto") {
+        return BackendRequest::Auto;
+    }
+    if (text == "cpu") {
+        return BackendRequest::Cpu;
+    }
+    if (text == "gl") {
+        return BackendRequest::Gl;
+    }
+    throw DataError("--backend: expected cpu, gl or auto, got '" + std::string(text) + "'");
+}
+
+bool isSoftwareRenderer(std::string_view renderer) {
+    for (const std::string_view name : {"llvmpipe", "softpipe", "swrast"}) {
+        if (renderer.find(name) != std::string_view::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+BackendChoice BackendChoice::resolve(BackendRequest request) {
+    BackendChoice choice;
+    if (request == BackendRequest::Cpu) {
+        choice.reason = "asked for";
+        return choice;
+    }
+    const Clock::time_point start = Clock::now();
+    if (request == BackendRequest::Gl) {
+        choice.context = std::make_unique<gl::EglContext>();
+        choice.contextSeconds = secondsSince(start);
+        choice.backend = Backend::Gl;
+        choice.reason = "asked for";
+        return choice;
+    }
+    try {
+        auto context = std::make_unique<gl::EglContext>();
+        choice.contextSeconds = secondsSince(start);
+        const std::string renderer = context->info().renderer;
+        if (isSoftwareRenderer(renderer)) {
+            choice.reason = "auto: GL is a software rasterizer (" + renderer + ")";
+            return choice;
+        }
+        choice.context = std::move(context);
+        choice.backend = Backend::Gl;
+        choice.reason = "auto: GL device " + renderer;
+    } catch (const GlError& error) {
+        choice.contextSeconds = secondsSince(start);
+        choice.reason = std::string("auto: no GL context (") + error.what() + ")";
+    }
+    return choice;
+}
+
+void BackendChoice::switchToGl(const std::string& why) {
+    const Clock::time_point start = Clock::now();
+    context = std::make_unique<gl::EglContext>();
+    contextSeconds += secondsSince(start);
+    backend = Backend::Gl;
+    reason = "auto: " + why;
+}
+
+} // namespace texsplat::render

@@ -1,0 +1,45 @@
+#pragma once
+
+#include "scenegraph/gl/EglContext.h"
+
+#include <memory>
+#include <string>
+#include <string_view>
+
+namespace texsplat::render {
+
+/// @brief What draws a frame (DESIGN.md, "Backends: one frame, several ways to draw it").
+enum class Backend {
+    Cpu, ///< render::cpu::CpuRenderer: no GL
+    Gl,  ///< sg::RenderAction: instanced quads through OpenGL
+};
+
+/// @brief The backend a user asks for: `--backend cpu|gl|auto`.
+enum class BackendRequest { Auto, Cpu, Gl };
+
+/// @brief "auto", "cpu" or "gl"; throws DataError("--backend: expected cpu, gl or auto, got
+/// '<text>'") otherwise.
+BackendRequest parseBackendRequest(std::string_view text);
+
+/// @brief Whether a GL renderer string names a software rasterizer (Mesa's llvmpipe, softpipe,
+/// swrast), on which the CPU backend is the faster way to draw splats.
+bool isSoftwareRenderer(std::string_view renderer);
+
+/// @brief The backend a request resolves to, with the GL context when it is GL.
+struct BackendChoice {
+    Backend backend = Backend::Cpu;
+    std::unique_ptr<gl::EglContext> context; ///< current on this thread when backend is Gl
+    double contextSeconds = 0.0;             ///< time spent making (or trying) a context
+    std::string reason; ///< for reports: why `auto` chose it, or "asked for"
+
+    /// @brief Resolves `request`: Cpu makes no context; Gl makes one (throws GlError when it
+    /// cannot); Auto makes one and keeps it unless it fails or its renderer is a software
+    /// rasterizer, then takes the CPU.
+    static BackendChoice resolve(BackendRequest request);
+
+    /// @brief Falls back from an `auto` CPU choice to GL (for frames the CPU backend does not
+    /// draw); throws GlError when no context can be made.
+    void switchToGl(const std::string& why);
+};
+
+} // namespace texsplat::render

@@ -1,0 +1,55 @@
+#pragma once
+
+#include "nodes/render/MarkDrawing.h"
+#include "nodes/render/MeshLighting.h"
+#include "nodes/render/SplatFootprint.h"
+#include "nodes/render/SplatView.h"
+#include "octree/Fwd.h"
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include <memory>
+#include <vector>
+
+namespace texsplat::nodes {
+struct TriangleMesh;
+} // namespace texsplat::nodes
+
+namespace texsplat::render {
+
+/// @brief An opaque mesh of a frame: its triangles in the producing node's local space and how
+/// they are placed and lit.
+struct FrameMesh {
+    std::shared_ptr<const nodes::TriangleMesh> mesh; ///< the triangles
+    MeshLighting lighting;                           ///< matrices, lights, emissive colour
+};
+
+/// @brief One splat node's contribution to a frame: its splats back to front for the view, and
+/// what each looks like.
+struct FrameSplats {
+    std::shared_ptr<const octree::SplatList> splats; ///< back to front
+    SplatView view;                                  ///< how the batch is seen (local space)
+    std::shared_ptr<const SplatFootprint> footprint; ///< shape, kernel texture, mark table
+    MarkDrawing marks;                               ///< vector and combined splats only
+    glm::mat4 localToCamera{1.0f};                   ///< view · model
+
+    /// @brief How far each splat is from the eye, what batches of several nodes are merged by:
+    /// the depth along the view (camera space looks down −z) for an orthographic camera, the
+    /// distance from the eye for a perspective one.
+    std::vector<float> cameraDepths() const;
+};
+
+/// @brief A frame as every backend draws it (DESIGN.md, "Data flow of one frame"): the size and
+/// background, the opaque meshes, and the splat batches of the splat nodes in traversal order.
+/// Splats are depth-tested against the meshes without writing depth and composited with
+/// premultiplied "over", batches of several nodes merged into one depth order.
+struct Frame {
+    int width = 1;                  ///< pixels
+    int height = 1;                 ///< pixels
+    glm::vec4 background{0.0f};     ///< premultiplied clear colour
+    std::vector<FrameMesh> meshes;  ///< opaque, in traversal order
+    std::vector<FrameSplats> splats; ///< one entry per splat node traversal
+};
+
+} // namespace texsplat::render

@@ -1,0 +1,155 @@
+#include "nodes/render/cpu/CpuRenderer.h"
+
+#include "nodes/render/cpu/ColorPlanes.h"
+#include "nodes/render/cpu/MeshRasterizer.h"
+#include "nodes/render/cpu/SplatRaster.h"
+#include "nodes/render/cpu/SplatSpans.h"
+#include "octree/Splat.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/actions/detail/DepthOrderedRuns.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <thread>
+
+namespace texsplat::render::cpu {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// Splats set up at a time: their rasters (about 90 bytes each) stay in the caches while the
+// bands composite them, and memory does not grow with the splat count.
+constexpr std::size_t kChunk = 16384;
+
+// Rows of the image split into bands, a few per thread so that the threads stay busy where
+// the volume covers only part of the image.
+struct Bands {
+    int rows;
+    int count;
+    Bands(int height, int threads)
+        : rows(std::max(4, (height + 4 * threads - 1) / (4 * threads))),
+          count((height + rows - 1) / rows) {}
+    int begin(int band) const { return band * rows; }
+    int end(int band, int height) const { return std::min(height, (band + 1) * rows); }
+};
+
+// One splat batch of the frame ready for the rasterizer.
+struct PreparedBatch {
+    const FrameSplats* splats;
+    std::unique_ptr<const SplatSetup> setup;
+    std::shared_ptr<const FootprintSampler> sampler;
+};
+
+std::vector<PreparedBatch> prepareBatches(const Frame& frame) {
+    std::vector<PreparedBatch> batches;
+    for (const FrameSplats& splats : frame.splats) {
+        const SplatFootprint& footprint = *splats.footprint;
+        if (!CpuRenderer::draws(footprint.shape)) {
+            throw DataError("CPU backend: vector and combined splats are drawn by the GL "
+                            "backend only; render with --backend gl");
+        }
+        PreparedBatch batch;
+        batch.splats = &splats;
+        batch.setup = std::make_unique<const SplatSetup>(
+            splats.view, static_cast<float>(footprint.extent), frame.width, frame.height);
+        // Batches of one node share the footprint; lay it out once.
+        for (const PreparedBatch& other : batches) {
+            if (other.splats->footprint == splats.footprint) {
+                batch.sampler = other.sampler;
+            }
+        }
+        if (!batch.sampler) {
+            batch.sampler = std::make_shared<const FootprintSampler>(footprint);
+        }
+        batches.push_back(std::move(batch));
+    }
+    return batches;
+}
+
+} // namespace
+
+CpuRenderer::CpuRenderer(int threads)
+    : mThreads(threads > 0 ? threads
+                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
+
+bool CpuRenderer::draws(SplatShape shape) {
+    return shape == SplatShape::TexturedSquare || shape == SplatShape::GouraudPolygon;
+}
+
+bool CpuRenderer::draws(const Frame& frame) {
+    return std::all_of(frame.splats.begin(), frame.splats.end(), [](const FrameSplats& splats) {
+        return draws(splats.footprint->shape);
+    });
+}
+
+std::string CpuRenderer::description() const {
+    return std::string("CPU (") + compositeTarget() + ", " + std::to_string(mThreads) +
+           (mThreads == 1 ? " thread)" : " threads)");
+}
+
+image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statistics,
+                               bool withDepth) const {
+    Clock::time_point start = Clock::now();
+    const std::vector<PreparedBatch> batches = prepareBatches(frame);
+    ColorPlanes planes(frame.width, frame.height, frame.background, !frame.meshes.empty());
+    const Bands bands(frame.height, mThreads);
+    // More threads than the hardware has would only wait for each other (and oneTBB warns);
+    // the bands still follow mThreads, which changes nothing in the image.
+    tbb::task_arena arena(
+        std::min(mThreads, static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))));
+    arena.execute([&] {
+        if (!frame.meshes.empty()) {
+            const MeshRasterizer meshes(frame.meshes, frame.width, frame.height);
+            tbb::parallel_for(0, bands.count, [&](int band) {
+                meshes.draw(planes, bands.begin(band), bands.end(band, frame.height));
+            });
+        }
+        // Several batches: one depth order across them (as RenderAction merges its batches).
+        std::vector<sg::detail::SplatRun> runs;
+        if (batches.size() == 1) {
+            runs.push_back({0, 0, batches.front().splats->splats->size()});
+        } else if (batches.size() > 1) {
+            const Clock::time_point orderStart = Clock::now();
+            std::vector<std::vector<float>> depths;
+            for (const PreparedBatch& batch : batches) {
+                depths.push_back(batch.splats->cameraDepths());
+            }
+            runs = sg::detail::depthOrderedRuns(depths);
+            statistics.addTime(sg::RenderPhase::Order, secondsSince(orderStart));
+        }
+        std::vector<SplatRaster> rasters(kChunk);
+        for (const sg::detail::SplatRun& run : runs) {
+            const PreparedBatch& batch = batches[run.batch];
+            const octree::Splat* splats = batch.splats->splats->splats().data();
+            for (std::size_t chunk = run.begin; chunk < run.end; chunk += kChunk) {
+                const std::size_t count = std::min(kChunk, run.end - chunk);
+                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
+                                  [&](const tbb::blocked_range<std::size_t>& range) {
+                                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                                          rasters[i] = (*batch.setup)(splats[chunk + i]);
+                                      }
+                                  });
+                tbb::parallel_for(0, bands.count, [&](int band) {
+                    compositeSplats(rasters.data(), count, *batch.sampler, planes,
+                                    bands.begin(band), bands.end(band, frame.height));
+                });
+            }
+        }
+    });
+    statistics.addTime(sg::RenderPhase::Draw, secondsSince(start));
+    start = Clock::now();
+    image::Image image = planes.toImage(withDepth);
+    statistics.addTime(sg::RenderPhase::ReadBack, secondsSince(start));
+    return image;
+}
+
+} // namespace texsplat::render::cpu

@@ -1,0 +1,205 @@
+// Compiled once per SIMD target by Highway's foreach_target; HWY_DYNAMIC_DISPATCH picks one.
+#undef HWY_TARGET_INCLUDE
+#define HWY_TARGET_INCLUDE "nodes/render/cpu/SplatSpans.cpp"
+#include <hwy/foreach_target.h> // IWYU pragma: keep
+
+#include <hwy/contrib/math/math-inl.h>
+#include <hwy/highway.h>
+
+#include "nodes/render/cpu/SplatSpans.h"
+
+#include <algorithm>
+#include <cfloat>
+
+HWY_BEFORE_NAMESPACE();
+namespace texsplat::render::cpu::HWY_NAMESPACE {
+namespace hn = hwy::HWY_NAMESPACE;
+
+// The footprint at square coordinates (a, b), before the length scale: the radial profile at
+// a² + b², or the padded texture's bilinear lookup (see FootprintSampler).
+template <bool kRadial, class D, class V>
+HWY_INLINE V Footprint(D d, const FootprintSampler& sampler, V a, V b) {
+    const hn::RebindToSigned<D> di;
+    const V zero = hn::Zero(d);
+    const float* values = sampler.values.data();
+    if constexpr (kRadial) {
+        constexpr float kSamples = static_cast<float>(FootprintSampler::kProfileSamples);
+        const V position = hn::Min(hn::Mul(hn::MulAdd(a, a, hn::Mul(b, b)),
+                                           hn::Set(d, 0.5f * kSamples)),
+                                   hn::Set(d, kSamples));
+        const V floor = hn::Floor(position);
+        const auto index = hn::ConvertTo(di, floor);
+        const V low = hn::GatherIndex(d, values, index);
+        const V high = hn::GatherIndex(d, values, hn::Add(index, hn::Set(di, 1)));
+        return hn::MulAdd(hn::Sub(position, floor), hn::Sub(high, low), low);
+    } else {
+        // a ∈ [−1, 1] → padded texel coordinate: GL's (a/2 + ½)·N − ½, plus the border texel;
+        // clamped so that lanes off the square still read inside the texture.
+        const float half = 0.5f * static_cast<float>(sampler.resolution);
+        const V scale = hn::Set(d, half);
+        const V offset = hn::Set(d, half + 0.5f);
+        const V high = hn::Set(d, static_cast<float>(sampler.resolution) + 0.5f);
+        const V s = hn::Min(hn::Max(hn::MulAdd(a, scale, offset), zero), high);
+        const V t = hn::Min(hn::Max(hn::MulAdd(b, scale, offset), zero), high);
+        const V s0 = hn::Floor(s);
+        const V t0 = hn::Floor(t);
+        const V fs = hn::Sub(s, s0);
+        const V ft = hn::Sub(t, t0);
+        const auto index =
+            hn::ConvertTo(di, hn::MulAdd(t0, hn::Set(d, static_cast<float>(sampler.stride)), s0));
+        const auto above = hn::Add(index, hn::Set(di, sampler.stride));
+        const auto next = hn::Set(di, 1);
+        const V f00 = hn::GatherIndex(d, values, index);
+        const V f10 = hn::GatherIndex(d, values, hn::Add(index, next));
+        const V f01 = hn::GatherIndex(d, values, above);
+        const V f11 = hn::GatherIndex(d, values, hn::Add(above, next));
+        const V bottom = hn::MulAdd(fs, hn::Sub(f10, f00), f00);
+        const V top = hn::MulAdd(fs, hn::Sub(f11, f01), f01);
+        return hn::MulAdd(ft, hn::Sub(top, bottom), bottom);
+    }
+}
+
+template <bool kRadial>
+void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
+                         const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
+                         int rowEnd) {
+    const hn::CappedTag<float, 8> d;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const auto lane = hn::Iota(d, 0.0f);
+    const auto one = hn::Set(d, 1.0f);
+    const auto zero = hn::Zero(d);
+    const auto largest = hn::Set(d, FLT_MAX);
+    const bool depthTest = planes.hasDepth();
+
+    for (std::size_t i = 0; i < count; ++i) {
+        const SplatRaster& splat = splats[i];
+        const int first = std::max(splat.rowBegin, rowBegin);
+        const int last = std::min(splat.rowEnd, rowEnd);
+        if (first >= last || splat.columnBegin >= splat.columnEnd) {
+            continue;
+        }
+        const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
+        const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
+        const auto red = hn::Set(d, splat.color[0]);
+        const auto green = hn::Set(d, splat.color[1]);
+        const auto blue = hn::Set(d, splat.color[2]);
+        const auto tau = hn::Set(d, splat.extinction);
+        // C·f·φ(τf) = C·α/τ; below 1e-30 the medium is pure emission, C·f (φ = 1 − τf/2 + …).
+        const bool absorbs = splat.extinction > 1e-30f;
+        const auto inverseTau = hn::Set(d, absorbs ? 1.0f / splat.extinction : 0.0f);
+        const auto lengthScale = hn::Set(d, splat.lengthScale);
+        // Thin splats (optical depth at most ½ anywhere) take φ's series, thick ones Expm1.
+        const bool thin = splat.extinction * splat.lengthScale * sampler.peak <= 0.5f;
+        const auto ax = hn::Set(d, splat.square[0]);
+        const auto bx = hn::Set(d, splat.square[3]);
+        const auto wx = hn::Set(d, splat.square[6]);
+        const auto zx = hn::Set(d, splat.depth[0]);
+        for (int row = first; row < last; ++row) {
+            const auto y = static_cast<float>(row);
+            const auto a0 = hn::Set(d, splat.square[1] * y + splat.square[2]);
+            const auto b0 = hn::Set(d, splat.square[4] * y + splat.square[5]);
+            const auto w0 = hn::Set(d, splat.square[7] * y + splat.square[8]);
+            const auto z0 = hn::Set(d, splat.depth[1] * y + splat.depth[2]);
+            float* redRow = planes.red(row);
+            float* greenRow = planes.green(row);
+            float* blueRow = planes.blue(row);
+            float* alphaRow = planes.alpha(row);
+            const float* depthRow = depthTest ? planes.depth(row) : nullptr;
+            for (int column = splat.columnBegin; column < splat.columnEnd; column += lanes) {
+                const auto x = hn::Add(hn::Set(d, static_cast<float>(column)), lane);
+                auto a = hn::MulAdd(ax, x, a0);
+                auto b = hn::MulAdd(bx, x, b0);
+                auto inside = hn::Gt(one, zero); // all true
+                if (projective) {
+                    const auto w = hn::MulAdd(wx, x, w0);
+                    inside = hn::Gt(w, zero);
+                    // 1/w: the estimate and one Newton step (relative error ~1e-7), cheaper
+                    // than a division.
+                    const auto estimate = hn::ApproximateReciprocal(w);
+                    const auto inverseW =
+                        hn::Mul(estimate, hn::NegMulAdd(w, estimate, hn::Set(d, 2.0f)));
+                    a = hn::Mul(a, inverseW);
+                    b = hn::Mul(b, inverseW);
+                }
+                inside = hn::And(inside,
+                                 hn::And(hn::Le(hn::Abs(a), one), hn::Le(hn::Abs(b), one)));
+                if (clipped || depthTest) {
+                    const auto z = hn::MulAdd(zx, x, z0);
+                    if (clipped) {
+                        inside = hn::And(inside,
+                                         hn::And(hn::Ge(z, hn::Neg(one)), hn::Le(z, one)));
+                    }
+                    if (depthTest) {
+                        const auto window = hn::MulAdd(z, hn::Set(d, 0.5f), hn::Set(d, 0.5f));
+                        inside = hn::And(inside, hn::Lt(window, hn::LoadU(d, depthRow + column)));
+                    }
+                }
+                if (hn::AllFalse(d, inside)) {
+                    continue;
+                }
+                const auto f = hn::IfThenElseZero(
+                    inside,
+                    hn::Mul(hn::Max(Footprint<kRadial>(d, sampler, a, b), zero), lengthScale));
+                const auto opticalDepth = hn::Mul(tau, f);
+                auto alpha = opticalDepth;
+                auto weight = f;
+                if (thin) {
+                    // φ(x) = (1 − e^(−x))/x = Σ (−x)^k/(k+1)!, k ≤ 7: below 1.2e-8 for x ≤ ½.
+                    auto phi = hn::Set(d, 1.0f / 362880.0f);
+                    for (const float coefficient :
+                         {-1.0f / 40320.0f, 1.0f / 5040.0f, -1.0f / 720.0f, 1.0f / 120.0f,
+                          -1.0f / 24.0f, 1.0f / 6.0f, -0.5f, 1.0f}) {
+                        phi = hn::MulAdd(phi, opticalDepth, hn::Set(d, coefficient));
+                    }
+                    alpha = hn::Mul(opticalDepth, phi);
+                    weight = hn::Mul(f, phi);
+                } else {
+                    alpha = hn::Neg(hn::Expm1(d, hn::Neg(opticalDepth)));
+                    weight = absorbs ? hn::Mul(alpha, inverseTau) : f;
+                }
+                const auto transmitted = hn::Sub(one, alpha);
+                const auto over = [&](float* plane, decltype(weight) source) {
+                    const auto destination = hn::LoadU(d, plane + column);
+                    hn::StoreU(hn::Min(hn::MulAdd(transmitted, destination, source), largest), d,
+                               plane + column);
+                };
+                over(redRow, hn::Min(hn::Mul(red, weight), largest));
+                over(greenRow, hn::Min(hn::Mul(green, weight), largest));
+                over(blueRow, hn::Min(hn::Mul(blue, weight), largest));
+                over(alphaRow, alpha);
+            }
+        }
+    }
+}
+
+void CompositeSplats(const SplatRaster* splats, std::size_t count,
+                     const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
+                     int rowEnd) {
+    if (sampler.isRadial) {
+        CompositeSplatsWith<true>(splats, count, sampler, planes, rowBegin, rowEnd);
+    } else {
+        CompositeSplatsWith<false>(splats, count, sampler, planes, rowBegin, rowEnd);
+    }
+}
+
+const char* CompositeTarget() { return hwy::TargetName(HWY_TARGET); }
+
+} // namespace texsplat::render::cpu::HWY_NAMESPACE
+HWY_AFTER_NAMESPACE();
+
+#if HWY_ONCE
+namespace texsplat::render::cpu {
+
+HWY_EXPORT(CompositeSplats);
+HWY_EXPORT(CompositeTarget);
+
+void compositeSplats(const SplatRaster* splats, std::size_t count,
+                     const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
+                     int rowEnd) {
+    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, count, sampler, planes, rowBegin, rowEnd);
+}
+
+const char* compositeTarget() { return HWY_DYNAMIC_DISPATCH(CompositeTarget)(); }
+
+} // namespace texsplat::render::cpu
+#endif

@@ -1,0 +1,29 @@
+#pragma once
+
+#include "nodes/render/cpu/ColorPlanes.h"
+#include "nodes/render/cpu/SplatRaster.h"
+
+#include <cstddef>
+
+namespace texsplat::render::cpu {
+
+/// @brief Composites `count` set-up splats, in their order (back to front), with premultiplied
+/// "over" into rows [rowBegin, rowEnd) of `planes`; the rest of each splat is left to the call
+/// that owns those rows. Per pixel, as the GL backend's splat pass: a pixel whose centre lies on
+/// the splat's square (and in front of the depth plane's opaque surface, between the near and
+/// far planes) gets footprint f = sampler(a, b)·lengthScale, α = 1 − e^(−τf) and colour
+/// C·f·φ(τf) = C·α/τ, φ(x) = (1 − e^(−x))/x (C·f for τ below 1e-30), then
+/// dst = src + (1 − α)·dst, clamped to FLT_MAX.
+///
+/// SIMD over adjacent pixels of a row through Highway, dispatched at run time to the best
+/// instruction set of the CPU (AVX-512, AVX2, SSE4 …); 1 − e^(−x) is Highway's Expm1 (a few
+/// ulp). A pixel's arithmetic does not depend on the row range or on which lane holds it, so
+/// the image is the same for any split of the rows among threads.
+void compositeSplats(const SplatRaster* splats, std::size_t count,
+                     const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
+                     int rowEnd);
+
+/// @brief The instruction set compositeSplats() runs with on this CPU ("AVX2", "AVX3" …).
+const char* compositeTarget();
+
+} // namespace texsplat::render::cpu

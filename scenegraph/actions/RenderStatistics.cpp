@@ -1,0 +1,30 @@
+#include "scenegraph/actions/RenderStatistics.h"
+
+namespace texsplat::sg {
+
+std::string_view toString(RenderPhase phase) {
+    switch (phase) {
+    case RenderPhase::Load: return "load";
+    case RenderPhase::Classify: return "classify";
+    case RenderPhase::Order: return "order";
+    case RenderPhase::Upload: return "upload";
+    case RenderPhase::Draw: return "draw";
+    case RenderPhase::ReadBack: return "read back";
+    }
+    return "unknown";
+}
+
+void RenderStatistics::addTime(RenderPhase phase, double wallSeconds) {
+    seconds[static_cast<std::size_t>(phase)] += wallSeconds;
+}
+
+RenderStatistics& RenderStatistics::operator+=(const RenderStatistics& other) {
+    for (std::size_t phase = 0; phase < kRenderPhaseCount; ++phase) {
+        seconds[phase] += other.seconds[phase];
+    }
+    splats += other.splats;
+    triangles += other.triangles;
+    return *this;
+}
+
+} // namespace texsplat::sg

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string_view>
+
+namespace texsplat::sg {
+
+/// @brief The steps a frame spends its time in, as `texsplat render --time-report` lists them.
+enum class RenderPhase {
+    Load,       ///< reading or generating volume data and meshes
+    Classify,   ///< transfer function over the grid, octree build
+    Order,      ///< back-to-front splat list for the view (slice order or octree cut)
+    Upload,     ///< buffers and textures to GL (GL backend)
+    Draw,       ///< both passes, until the GL finished them (glFinish) or the CPU rasterized them
+    ReadBack,   ///< framebuffer (or the CPU backend's colour planes) to an image
+};
+
+/// @brief Number of RenderPhase values.
+inline constexpr std::size_t kRenderPhaseCount = 6;
+
+/// @brief Lower-case name of a phase ("read back"), for reports.
+std::string_view toString(RenderPhase phase);
+
+/// @brief Where one frame's time went and how much it drew.
+struct RenderStatistics {
+    std::array<double, kRenderPhaseCount> seconds{}; ///< wall seconds per RenderPhase
+    std::size_t splats = 0;    ///< splats drawn (instances)
+    std::size_t triangles = 0; ///< opaque triangles drawn (splat quads not counted)
+
+    /// @brief Seconds spent in `phase`.
+    double time(RenderPhase phase) const { return seconds[static_cast<std::size_t>(phase)]; }
+
+    /// @brief Adds `wallSeconds` to `phase`.
+    void addTime(RenderPhase phase, double wallSeconds);
+
+    /// @brief Adds another frame's times and counts (totals over an animation).
+    RenderStatistics& operator+=(const RenderStatistics& other);
+};
+
+} // namespace texsplat::sg
