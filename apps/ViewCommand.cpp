@@ -14,6 +14,7 @@ namespace {
 struct ViewArguments {
     ViewerOptions options;
     std::string size = "960x720";
+    std::string backend = "auto";
 };
 
 } // namespace
@@ -40,6 +41,14 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                         "Close after this many frames (batch use and tests; 0: when closed)")
         ->capture_default_str()
         ->check(CLI::Range(0, 1 << 30));
+    command->add_option("--backend", arguments->backend,
+                        "cpu|gl|auto: what draws the frames (auto: the CPU when the window's GL "
+                        "is a software rasterizer such as llvmpipe, else GL)")
+        ->capture_default_str();
+    command->add_option("--threads", options.threads,
+                        "Threads of the CPU backend (0: one per hardware thread)")
+        ->capture_default_str()
+        ->check(CLI::Range(0, 1024));
     command->add_option("--screenshot", options.screenshot,
                         "At the end, write the last rendered view (without the panel) as PNG "
                         "or EXR");
@@ -47,6 +56,7 @@ void addViewCommand(CLI::App& app, int& exitCode) {
         ViewerOptions viewerOptions = arguments->options;
         viewerOptions.framing.sceneName = viewerOptions.scene;
         viewerOptions.size = parseSize(arguments->size);
+        viewerOptions.backend = render::parseBackendRequest(arguments->backend);
         Viewer(viewerOptions).run();
         exitCode = kExitOk;
     });

@@ -55,12 +55,17 @@ FramePresenter::FramePresenter() : mProgram("viewer present", kVertexShader, kFr
 
 void FramePresenter::present(const gl::Framebuffer& frame, const glm::vec3& background,
                              const glm::ivec2& windowSize) {
+    present(frame.colorTexture(), background, windowSize);
+}
+
+void FramePresenter::present(const gl::Texture2D& color, const glm::vec3& background,
+                             const glm::ivec2& windowSize) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, windowSize.x, windowSize.y);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     mProgram.use();
-    frame.colorTexture().bind(0);
+    color.bind(0);
     mProgram.setUniform("frame", 0);
     mProgram.setUniform("background", background);
     mEmpty.bind();

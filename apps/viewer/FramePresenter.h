@@ -9,11 +9,12 @@
 
 namespace texsplat::gl {
 class Framebuffer;
+class Texture2D;
 } // namespace texsplat::gl
 
 namespace texsplat::apps {
 
-/// @brief Shows a RenderAction's float framebuffer in the window: the premultiplied linear
+/// @brief Shows a RenderAction's float framebuffer (or the CPU backend's image) in the window: the premultiplied linear
 /// color composited over a background, encoded to sRGB, as `texsplat render` writes its PNGs,
 /// so the window and the files look alike. One full-screen triangle, no blending.
 ///
@@ -25,6 +26,11 @@ public:
     /// @brief Draws `frame` over `background` (linear RGB) into the default framebuffer of size
     /// `windowSize`, scaled to fill it.
     void present(const gl::Framebuffer& frame, const glm::vec3& background,
+                 const glm::ivec2& windowSize);
+
+    /// @brief Draws `color` (premultiplied RGBA, row 0 at the bottom, as a framebuffer's color
+    /// texture) the same way: the CPU backend's frames, uploaded as one texture.
+    void present(const gl::Texture2D& color, const glm::vec3& background,
                  const glm::ivec2& windowSize);
 
     /// @brief Reads back what the window's default framebuffer holds now (its back buffer, of

@@ -4,13 +4,13 @@
 #include "apps/viewer/GlfwWindow.h"
 #include "apps/viewer/OrbitController.h"
 #include "apps/viewer/ProgressiveRefinement.h"
+#include "apps/viewer/ViewerFrames.h"
 #include "apps/viewer/ViewerPanel.h"
 #include "nodes/Camera.h"
 #include "nodes/image/ImageIo.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
-#include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/engines/AnimationSpeed.h"
 #include "scenegraph/engines/TimeInputs.h"
@@ -127,9 +127,10 @@ void Viewer::run() {
 
     FramePresenter presenter;
     ViewerPanel panel(window.handle());
-    std::unique_ptr<sg::RenderAction> action;
+    ViewerFrames frames(mOptions.backend, window.info().summary(), mOptions.background,
+                        mOptions.threads);
     PanelReport report;
-    report.renderer = window.info().summary();
+    report.renderer = frames.description();
 
     for (int frame = 0; !window.shouldClose(); ++frame) {
         if (mOptions.frames > 0 && frame >= mOptions.frames) {
@@ -205,39 +206,35 @@ void Viewer::run() {
         if (size.x <= 0 || size.y <= 0) {
             continue; // minimized
         }
-        if (!action || action->framebuffer().width() != size.x ||
-            action->framebuffer().height() != size.y) {
-            action = std::make_unique<sg::RenderAction>(size.x, size.y);
-            action->setBackground(glm::vec4(mOptions.background, 1.0f));
-            needsRender = true;
-        }
+        needsRender = frames.resize(size) || needsRender;
         if (needsRender) {
             needsRender = false;
             const Clock::time_point start = Clock::now();
-            action->render(root);
+            const sg::RenderStatistics& statistics = frames.render(root);
             report.frameSeconds = std::chrono::duration<double>(Clock::now() - start).count();
-            lastSplats = action->statistics().splats;
+            report.renderer = frames.description();
+            lastSplats = statistics.splats;
             report.splats = lastSplats;
-            report.triangles = action->statistics().triangles;
+            report.triangles = statistics.triangles;
             if (!dragging && refinement.stage() != ProgressiveRefinement::Stage::FullQuality) {
                 refineStep.schedule(); // the next step once the queue is idle
             }
         }
         report.stage = refinement.stage();
         report.budget = refinement.budget();
-        presenter.present(action->framebuffer(), mOptions.background, size);
+        frames.present(presenter, mOptions.background, size);
         panel.draw(report, refinement, animation);
         window.swapBuffers();
     }
 
-    if (!mOptions.screenshot.empty() && action) {
+    if (!mOptions.screenshot.empty() && frames.hasFrame()) {
         // The window's last frame without the panel: drawn again into its back buffer (not
         // shown) and read back, so the file holds the bytes the window showed.
         const glm::ivec2 size = window.framebufferSize();
         if (size.x <= 0 || size.y <= 0) {
             throw GlError(mOptions.screenshot + ": the window is minimized, nothing to read back");
         }
-        presenter.present(action->framebuffer(), mOptions.background, size);
+        frames.present(presenter, mOptions.background, size);
         image::writeImage(FramePresenter::readBack(size), mOptions.screenshot);
     }
 }

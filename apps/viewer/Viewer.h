@@ -1,6 +1,7 @@
 #pragma once
 
 #include "apps/SceneSetup.h"
+#include "nodes/render/BackendChoice.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -19,9 +20,12 @@ struct ViewerOptions {
     std::string screenshot;             ///< write the last frame here (PNG or EXR) at the end
     std::int32_t interactiveBudget = 50000; ///< splats per node while the view moves
     glm::vec3 background{0.02f, 0.02f, 0.025f}; ///< linear RGB behind the scene
+    render::BackendRequest backend = render::BackendRequest::Auto; ///< what draws the frames
+    int threads = 0; ///< CPU backend threads (0: one per hardware thread)
 };
 
-/// @brief The interactive viewer: a GLFW window showing the scene as RenderAction draws it,
+/// @brief The interactive viewer: a GLFW window showing the scene as a backend draws it
+/// (ViewerFrames: GL, or the CPU where GL is a software rasterizer),
 /// with an examiner-style camera (OrbitController), Laur–Hanrahan progressive refinement
 /// (ProgressiveRefinement: coarse while the view moves, refined while idle), animation through
 /// a SensorQueue on the wall clock (the scene's engines follow its time), and an ImGui panel.

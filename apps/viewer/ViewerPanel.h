@@ -12,7 +12,7 @@ namespace texsplat::apps {
 
 /// @brief What the viewer's panel shows about the last frame.
 struct PanelReport {
-    std::string renderer;     ///< the GL context's summary
+    std::string renderer;     ///< what draws the frames: the CPU backend or the GL context
     double frameSeconds = 0.0; ///< time of the last scene render (traversal to glFinish)
     std::size_t splats = 0;    ///< splats of the last render
     std::size_t triangles = 0; ///< opaque triangles of the last render

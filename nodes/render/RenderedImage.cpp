@@ -2,13 +2,20 @@
 
 #include <algorithm>
 #include <cstring>
+#include <limits>
 
 namespace texsplat::render {
 
 image::Image renderedImage(sg::RenderAction& action, DepthReadback depth) {
     const gl::Framebuffer& framebuffer = action.framebuffer();
     image::Image result(framebuffer.width(), framebuffer.height());
-    const std::vector<float> rgba = action.readColor();
+    std::vector<float> rgba = action.readColor();
+    // GL's float blending overflows to ±Inf where light near FLT_MAX adds up; clamp as the CPU
+    // backend and the ray caster do.
+    for (float& value : rgba) {
+        value = std::clamp(value, -std::numeric_limits<float>::max(),
+                           std::numeric_limits<float>::max());
+    }
     std::memcpy(result.data(), rgba.data(), rgba.size() * sizeof(float));
     if (depth == DepthReadback::With) {
         result.addDepth();

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <glm/common.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -354,6 +356,74 @@ TEST_F(RenderCommandTest, reportsBadFrameOptionsBeforeAnyWork) {
     expectError(scene + " --frames 2 -o " + tif,
                 tif + ": unknown image extension '.tif' (supported: .png, .exr)",
                 path("out0000.tif"));
+}
+
+TEST_F(RenderCommandTest, rendersWithEitherBackendAndNamesItInTheTimeReport) {
+    const std::string scene = writeScene();
+    const std::string options = " --size 40x30 --time-report";
+    const auto cpu = runTexsplat("render " + scene + " -o " + path("cpu.png") + options +
+                                 " --backend cpu --threads 3");
+    ASSERT_EQ(cpu.exitCode, 0) << cpu.standardError;
+    EXPECT_NE(cpu.standardOutput.find("  backend    CPU ("), std::string::npos) << cpu.standardOutput;
+    EXPECT_NE(cpu.standardOutput.find(", 3 threads) (asked for)"), std::string::npos)
+        << cpu.standardOutput;
+    EXPECT_NE(cpu.standardOutput.find("  context       0.0000\n"), std::string::npos)
+        << "no GL context for the CPU backend\n"
+        << cpu.standardOutput;
+    const auto gl =
+        runTexsplat("render " + scene + " -o " + path("gl.png") + options + " --backend gl");
+    ASSERT_EQ(gl.exitCode, 0) << gl.standardError;
+    EXPECT_NE(gl.standardOutput.find("  backend    GL (EGL "), std::string::npos)
+        << gl.standardOutput;
+    // The same image to the PNG's 8 bits, but for rounding.
+    const Image a = texsplat::image::readImage(path("cpu.png"));
+    const Image b = texsplat::image::readImage(path("gl.png"));
+    float largest = 0.0f;
+    for (int y = 0; y < 30; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            const glm::vec4 difference = glm::abs(a.pixel(x, y) - b.pixel(x, y));
+            largest = std::max({largest, difference.r, difference.g, difference.b});
+        }
+    }
+    EXPECT_LE(largest, 1.0f / 255.0f + 1e-6f);
+    EXPECT_GT(a.statistics().maximum.r, 0.1);
+    // auto: the CPU on a software rasterizer or without GL, GL on a GPU, and the report says
+    // which and why.
+    const auto automatic =
+        runTexsplat("render " + scene + " -o " + path("auto.png") + options);
+    ASSERT_EQ(automatic.exitCode, 0) << automatic.standardError;
+    const std::string& report = automatic.standardOutput;
+    const bool software = report.find("(auto: GL is a software rasterizer (") != std::string::npos;
+    const bool noGl = report.find("(auto: no GL context (") != std::string::npos;
+    const bool device = report.find("(auto: GL device ") != std::string::npos;
+    EXPECT_EQ(software + noGl + device, 1) << report;
+    EXPECT_EQ(report.find("  backend    CPU (") != std::string::npos, software || noGl) << report;
+}
+
+TEST_F(RenderCommandTest, autoFallsBackToGlForVectorSplatsAndCpuRefusesThem) {
+    const std::string scene = write(
+        "winds.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                    "TransferFunction { range 0 0.32 opacities [ 0, 60 ] }\n"
+                    "VolumeData { source TORNADO resolution 8 8 8 }\n"
+                    "VectorSplat { }\n}\n");
+    const auto automatic =
+        runTexsplat("render " + scene + " -o " + path("auto.png") + " --size 16x16 --time-report");
+    ASSERT_EQ(automatic.exitCode, 0) << automatic.standardError;
+    EXPECT_NE(automatic.standardOutput.find("  backend    GL ("), std::string::npos)
+        << automatic.standardOutput;
+    expectError(scene + " -o " + path("cpu.png") + " --backend cpu",
+                "--backend cpu: the scene has vector or combined splats, which the CPU backend "
+                "does not draw yet; use --backend gl or auto",
+                path("cpu.png"));
+}
+
+TEST_F(RenderCommandTest, reportsBadBackendOptionsBeforeAnyWork) {
+    const std::string scene = writeScene();
+    const std::string output = path("out.png");
+    expectError(scene + " -o " + output + " --backend vulkan",
+                "--backend: expected cpu, gl or auto, got 'vulkan'", output);
+    expectError(scene + " -o " + output + " --threads -1",
+                "--threads: expected 0 (one per hardware thread) to 1024, got -1", output);
 }
 
 } // namespace

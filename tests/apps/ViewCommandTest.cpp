@@ -69,6 +69,32 @@ TEST_F(ViewCommandTest, showsTheDefaultSceneInAWindowAndWritesItsLastFrame) {
     EXPECT_LT(largest, 0.035f);
 }
 
+TEST_F(ViewCommandTest, showsTheSameFramesWithEitherBackend) {
+    if (!hasXvfbRun()) {
+        GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb)";
+    }
+    std::vector<texsplat::image::Image> images;
+    for (const char* backend : {"cpu", "gl"}) {
+        const std::string screenshot = path(std::string("view-") + backend + ".png");
+        const auto output = runTexsplat("view --frames 2 --size 64x48 --backend " +
+                                            std::string(backend) + " --screenshot " + screenshot,
+                                        "xvfb-run -a");
+        ASSERT_EQ(output.exitCode, 0) << backend << ": " << output.standardError;
+        images.push_back(texsplat::image::readImage(screenshot));
+    }
+    float largest = 0.0f;
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            const glm::vec4 difference = images[0].pixel(x, y) - images[1].pixel(x, y);
+            for (int c = 0; c < 3; ++c) {
+                largest = std::max(largest, std::abs(difference[c]));
+            }
+        }
+    }
+    EXPECT_GT(images[0].pixel(32, 24).r, 0.1f) << "the tornado in the middle";
+    EXPECT_LE(largest, 2.0f / 255.0f) << "the PNGs' 8 bits, but for rounding";
+}
+
 TEST_F(ViewCommandTest, withoutADisplayItSaysSoAndWritesNothing) {
     const std::string screenshot = path("view.png");
     const auto output =

@@ -283,7 +283,8 @@ TEST(CpuBackend, aOneVoxelGridDrawsOneSplat) {
     test::expectFiniteAndNotEmpty(frame.image, "one voxel");
 }
 
-TEST(CpuBackend, extremeMediaGiveNoNanOrInfinitePixel) {
+TEST(CpuBackend, extremeMediaGiveNoNanOrInfinitePixelOnEitherBackend) {
+    test::sharedContext();
     registerNodeTypes();
     VolumeData::Ptr volume = VolumeData::create();
     volume->source.setValue(VolumeSource::MarschnerLobb);
@@ -295,11 +296,15 @@ TEST(CpuBackend, extremeMediaGiveNoNanOrInfinitePixel) {
             const sg::Separator::Ptr root = test::framedScene(
                 camera(true, glm::vec3(-0.3f, -0.2f, -1.0f)),
                 {transfer, volume, TextureSplat::create()});
-            const image::Image image = renderCpu(*root, 40, 40).image;
-            const image::Image::Statistics statistics = image.statistics();
-            EXPECT_EQ(statistics.nonFinitePixels, 0u)
-                << "opacity " << opacity << ", emission " << emission;
-            EXPECT_LE(statistics.maximum.a, 1.0);
+            // Both backends clamp light near FLT_MAX as the ray caster does (GL's blending
+            // overflows to +Inf, clamped when read back).
+            for (const image::Image& image :
+                 {renderCpu(*root, 40, 40).image, test::renderScene(*root, 40, 40)}) {
+                const image::Image::Statistics statistics = image.statistics();
+                EXPECT_EQ(statistics.nonFinitePixels, 0u)
+                    << "opacity " << opacity << ", emission " << emission;
+                EXPECT_LE(statistics.maximum.a, 1.0);
+            }
         }
     }
 }

@@ -14,27 +14,6 @@
 namespace texsplat::render::cpu {
 namespace {
 
-using Matrix3 = std::array<std::array<double, 3>, 3>; // row major
-
-// The inverse of `m`, or nothing when it is singular or not finite.
-bool invert(const Matrix3& m, Matrix3& inverse) {
-    const double c00 = m[1][1] * m[2][2] - m[1][2] * m[2][1];
-    const double c01 = m[1][2] * m[2][0] - m[1][0] * m[2][2];
-    const double c02 = m[1][0] * m[2][1] - m[1][1] * m[2][0];
-    const double determinant = m[0][0] * c00 + m[0][1] * c01 + m[0][2] * c02;
-    if (!std::isfinite(determinant) || determinant == 0.0) {
-        return false;
-    }
-    const double s = 1.0 / determinant;
-    inverse = {{{c00 * s, (m[0][2] * m[2][1] - m[0][1] * m[2][2]) * s,
-                 (m[0][1] * m[1][2] - m[0][2] * m[1][1]) * s},
-                {c01 * s, (m[0][0] * m[2][2] - m[0][2] * m[2][0]) * s,
-                 (m[0][2] * m[1][0] - m[0][0] * m[1][2]) * s},
-                {c02 * s, (m[0][1] * m[2][0] - m[0][0] * m[2][1]) * s,
-                 (m[0][0] * m[1][1] - m[0][1] * m[1][0]) * s}}};
-    return true;
-}
-
 // Clamps a pixel coordinate to [low, high] before it becomes an int (it may be huge or NaN).
 std::int32_t toPixel(double value, int low, int high) {
     if (!(value > low)) {
@@ -94,6 +73,21 @@ FootprintSampler::FootprintSampler(const SplatFootprint& footprint) {
 SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int height)
     : mView(view), mExtent(extent), mWidth(width), mHeight(height) {
     const glm::mat4& m = view.localToClip;
+    // Clip space → homogeneous pixel (x·W, y·W, W, z), rows top first: x = (X/W + 1)·width/2,
+    // y = (1 − Y/W)·height/2.
+    const float halfWidthF = 0.5f * static_cast<float>(width);
+    const float halfHeightF = 0.5f * static_cast<float>(height);
+    for (int column = 0; column < 4; ++column) {
+        const glm::vec4 clip = m[column];
+        const float rows[4] = {halfWidthF * (clip.x + clip.w), halfHeightF * (clip.w - clip.y),
+                               clip.w, clip.z};
+        for (int row = 0; row < 4; ++row) {
+            mPixelFromLocal[row][column] = rows[row];
+            if (column < 3) {
+                mPixelFromVoxel[row][column] = rows[row] * view.spacing[column];
+            }
+        }
+    }
     mIsAffine = !view.isPerspective && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f &&
                 m[3][3] == 1.0f;
     if (!mIsAffine) {
@@ -179,69 +173,72 @@ SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
 
 SplatRaster SplatSetup::general(const octree::Splat& splat) const {
     SplatRaster raster{};
-    const SplatView& view = mView;
-    glm::vec3 sight = view.direction;
-    if (view.isPerspective) {
-        const glm::vec3 toCentre = splat.position - view.eye;
+    const glm::vec3& c = splat.position;
+    glm::vec3 sight = mView.direction;
+    if (mView.isPerspective) {
+        const glm::vec3 toCentre = c - mView.eye;
         const float distance = glm::length(toCentre);
         if (distance > 0.0f) {
             sight = toCentre / distance;
         }
     }
-    const SquareFrame frame = squareFrame(view, sight);
-    const glm::vec3& u = frame.u;
-    const glm::vec3& v = frame.v;
-    const float eLength = frame.eLength;
+    const SquareFrame frame = squareFrame(mView, sight);
     const float reach = mExtent * splat.size;
-    const glm::vec4 c0 = view.localToClip * glm::vec4(splat.position, 1.0f);
-    const glm::vec4 cu = view.localToClip * glm::vec4(view.spacing * u * reach, 0.0f);
-    const glm::vec4 cv = view.localToClip * glm::vec4(view.spacing * v * reach, 0.0f);
-
-    // Square (a, b, 1) → homogeneous pixel (x·W, y·W, W), rows top first.
-    const double halfWidth = 0.5 * mWidth;
-    const double halfHeight = 0.5 * mHeight;
-    const Matrix3 toPixel3{{{halfWidth * (cu.x + cu.w), halfWidth * (cv.x + cv.w),
-                             halfWidth * (c0.x + c0.w)},
-                            {halfHeight * (cu.w - cu.y), halfHeight * (cv.w - cv.y),
-                             halfHeight * (c0.w - c0.y)},
-                            {cu.w, cv.w, c0.w}}};
-    Matrix3 inverse;
-    if (!invert(toPixel3, inverse)) {
+    // Rows of the homogeneous pixel (x·W, y·W, W) and z_clip: of the centre, and per unit of the
+    // square's a and b.
+    float h0[4], hu[4], hv[4];
+    for (int row = 0; row < 4; ++row) {
+        const float* p = mPixelFromLocal[row];
+        const float* q = mPixelFromVoxel[row];
+        h0[row] = p[0] * c.x + p[1] * c.y + p[2] * c.z + p[3];
+        hu[row] = reach * (q[0] * frame.u.x + q[1] * frame.u.y + q[2] * frame.u.z);
+        hv[row] = reach * (q[0] * frame.v.x + q[1] * frame.v.y + q[2] * frame.v.z);
+    }
+    // Square (a, b, 1) → (x·W, y·W, W) is the matrix [hu hv h0]; its inverse by the adjugate.
+    const float c00 = hv[1] * h0[2] - h0[1] * hv[2];
+    const float c01 = h0[1] * hu[2] - hu[1] * h0[2];
+    const float c02 = hu[1] * hv[2] - hv[1] * hu[2];
+    const float determinant = hu[0] * c00 + hv[0] * c01 + h0[0] * c02;
+    if (!std::isfinite(determinant) || determinant == 0.0f) {
         return raster; // edge-on or degenerate: no pixel
     }
+    const float s = 1.0f / determinant;
+    float inverse[3][3] = {
+        {c00 * s, (h0[0] * hv[2] - hv[0] * h0[2]) * s, (hv[0] * h0[1] - h0[0] * hv[1]) * s},
+        {c01 * s, (hu[0] * h0[2] - h0[0] * hu[2]) * s, (h0[0] * hu[1] - hu[0] * h0[1]) * s},
+        {c02 * s, (hv[0] * hu[2] - hu[0] * hv[2]) * s, (hu[0] * hv[1] - hv[0] * hu[1]) * s}};
     // Evaluated at pixel centres (x + ½, y + ½): fold the half into the constant column.
-    for (std::array<double, 3>& row : inverse) {
-        row[2] += 0.5 * (row[0] + row[1]);
+    for (float(&row)[3] : inverse) {
+        row[2] += 0.5f * (row[0] + row[1]);
     }
-    const std::array<double, 3> depthOfSquare{cu.z, cv.z, c0.z}; // z_clip = this · (a, b, 1)
     for (int column = 0; column < 3; ++column) {
-        double depth = 0.0;
-        for (int row = 0; row < 3; ++row) {
-            raster.square[3 * row + column] = static_cast<float>(inverse[row][column]);
-            depth += depthOfSquare[static_cast<std::size_t>(row)] * inverse[row][column];
-        }
-        raster.depth[column] = static_cast<float>(depth);
+        raster.square[column] = inverse[0][column];
+        raster.square[3 + column] = inverse[1][column];
+        raster.square[6 + column] = inverse[2][column];
+        // z_clip = (hu, hv, h0)_z · (a, b, 1), and (a, b, 1)/W = inverse · pixel.
+        raster.depth[column] =
+            hu[3] * inverse[0][column] + hv[3] * inverse[1][column] + h0[3] * inverse[2][column];
     }
 
     // The pixels the square may cover, from its corners; GL clips it at the near and far planes.
-    double low[2] = {static_cast<double>(mWidth), static_cast<double>(mHeight)};
-    double high[2] = {0.0, 0.0};
+    float low[2] = {static_cast<float>(mWidth), static_cast<float>(mHeight)};
+    float high[2] = {0.0f, 0.0f};
     bool behindEye = false;
     int beforeNear = 0;
     int beyondFar = 0;
-    bool crossesPlanes = false;
     for (const float a : {-1.0f, 1.0f}) {
         for (const float b : {-1.0f, 1.0f}) {
-            const glm::vec4 corner = c0 + a * cu + b * cv;
-            beforeNear += corner.z < -corner.w ? 1 : 0;
-            beyondFar += corner.z > corner.w ? 1 : 0;
-            crossesPlanes = crossesPlanes || corner.z < -corner.w || corner.z > corner.w;
-            if (!(corner.w > 0.0f)) {
+            const float w = h0[2] + a * hu[2] + b * hv[2];
+            const float z = h0[3] + a * hu[3] + b * hv[3];
+            beforeNear += z < -w ? 1 : 0;
+            beyondFar += z > w ? 1 : 0;
+            if (!(w > 0.0f)) {
                 behindEye = true;
                 continue;
             }
-            const double x = halfWidth * (corner.x / corner.w + 1.0);
-            const double y = halfHeight * (1.0 - corner.y / corner.w);
+            const float inverseW = 1.0f / w;
+            const float x = (h0[0] + a * hu[0] + b * hv[0]) * inverseW;
+            const float y = (h0[1] + a * hu[1] + b * hv[1]) * inverseW;
             low[0] = std::min(low[0], x);
             low[1] = std::min(low[1], y);
             high[0] = std::max(high[0], x);
@@ -253,9 +250,9 @@ SplatRaster SplatSetup::general(const octree::Splat& splat) const {
     }
     if (behindEye) {
         // Part of the square is behind the eye: its visible part may reach any pixel.
-        low[0] = low[1] = 0.0;
-        high[0] = mWidth;
-        high[1] = mHeight;
+        low[0] = low[1] = 0.0f;
+        high[0] = static_cast<float>(mWidth);
+        high[1] = static_cast<float>(mHeight);
     }
     raster.columnBegin = toPixel(std::floor(low[0]), 0, mWidth);
     raster.columnEnd = toPixel(std::ceil(high[0]) + 1.0, 0, mWidth);
@@ -265,9 +262,9 @@ SplatRaster SplatSetup::general(const octree::Splat& splat) const {
     raster.color[1] = splat.color.g;
     raster.color[2] = splat.color.b;
     raster.extinction = splat.extinction;
-    raster.lengthScale = splat.size / eLength;
-    raster.flags = (view.isPerspective ? SplatRaster::kProjective : 0) |
-                   (crossesPlanes || behindEye ? SplatRaster::kClipped : 0);
+    raster.lengthScale = splat.size / frame.eLength;
+    raster.flags = (mView.isPerspective ? SplatRaster::kProjective : 0) |
+                   (beforeNear > 0 || beyondFar > 0 || behindEye ? SplatRaster::kClipped : 0);
     return raster;
 }
 

@@ -83,6 +83,8 @@ private:
 
     SplatView mView;
     float mExtent;
+    float mPixelFromLocal[4][4]{}; // local point → (x·W, y·W, W, z_clip), row major
+    float mPixelFromVoxel[4][3]{}; // voxel-space offset (before the spacing) → the same
     int mWidth;
     int mHeight;
     // Orthographic views: the square at size 1 and the centre's pixel.

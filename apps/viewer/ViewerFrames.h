@@ -1,0 +1,67 @@
+#pragma once
+
+#include "apps/viewer/FramePresenter.h"
+#include "nodes/render/BackendChoice.h"
+#include "nodes/render/FrameAction.h"
+#include "nodes/render/cpu/CpuRenderer.h"
+#include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/gl/Texture2D.h"
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace texsplat::apps {
+
+/// @brief The viewer's frames, drawn by the backend the user asked for: GL (a RenderAction's
+/// framebuffer, shown as it is) or the CPU (CpuRenderer's image, uploaded as one float texture
+/// per frame), so progressive viewing is interactive on a machine whose GL is a software
+/// rasterizer too. `auto` takes the CPU when the window's GL renderer is llvmpipe, softpipe or
+/// swrast, and falls back to GL for a scene the CPU backend does not draw (vector splats).
+///
+/// Created and used with the window's context current.
+class ViewerFrames {
+public:
+    /// @brief Frames for `request` in a window whose GL renderer is `renderer`, cleared to the
+    /// opaque `background`; the CPU backend uses `threads` threads (0: all).
+    ViewerFrames(render::BackendRequest request, const std::string& renderer,
+                 const glm::vec3& background, int threads);
+
+    /// @brief Makes the render target `size` pixels; answers whether it changed (then the
+    /// scene must be drawn again).
+    bool resize(const glm::ivec2& size);
+
+    /// @brief Draws `root` into the target; answers the frame's statistics.
+    /// @throws DataError for a scene the CPU backend does not draw when it was asked for.
+    const sg::RenderStatistics& render(sg::Node& root);
+
+    /// @brief Whether a frame was drawn since the last resize().
+    bool hasFrame() const { return mHasFrame; }
+
+    /// @brief Shows the last frame through `presenter` in a window of `windowSize`.
+    void present(FramePresenter& presenter, const glm::vec3& background,
+                 const glm::ivec2& windowSize) const;
+
+    /// @brief What draws the frames, for the panel: "CPU (AVX2, 2 threads)" or the GL summary.
+    std::string description() const;
+
+private:
+    void useGl();
+
+    render::BackendRequest mRequest;
+    std::string mRenderer;
+    glm::vec4 mBackground;
+    glm::ivec2 mSize{0, 0};
+    bool mHasFrame = false;
+    // GL backend.
+    std::unique_ptr<sg::RenderAction> mAction;
+    // CPU backend.
+    std::optional<render::cpu::CpuRenderer> mCpu;
+    std::unique_ptr<render::FrameAction> mFrameAction;
+    std::unique_ptr<gl::Texture2D> mTexture;
+};
+
+} // namespace texsplat::apps
