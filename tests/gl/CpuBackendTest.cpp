@@ -177,41 +177,11 @@ TEST(CpuBackend, drawsEveryGlSceneAsGlDoesAndAsCloseToTheReference) {
 }
 
 TEST(CpuBackend, figure2LayerIsAsFlatAsThePaperReports) {
-    // As TextureSplat's figure-2 test: a 16 x 16 layer of glowing voxels, orthographic, pixel
-    // centres on the lattice k/8.
-    volume::DenseGrid<float> layer{
-        volume::GridGeometry(glm::i64vec3(test::kLayerVoxels, test::kLayerVoxels, 1))};
-    for (int j = 0; j < test::kLayerVoxels; ++j) {
-        for (int i = 0; i < test::kLayerVoxels; ++i) {
-            layer.setValue({i, j, 0}, 1.0f);
-        }
-    }
-    TransferFunction::Ptr glow = TransferFunction::create();
-    glow->colorValues.setValue({0.0f, 1.0f});
-    glow->colors.setValue({glm::vec3(1.0f), glm::vec3(1.0f)});
-    glow->opacities.setValue({0.0f, 0.0f});
-    glow->emission.setValue(1.0f);
-    const float pixel = 1.0f / test::kPixelsPerVoxel;
-    const float half = 0.5f * static_cast<float>(test::kLayerVoxels);
-    OrthographicCamera::Ptr view = OrthographicCamera::create();
-    view->position.setValue(glm::vec3(half - 0.5f * pixel, half - 0.5f * pixel, 10.0f));
-    view->height.setValue(static_cast<float>(test::kLayerVoxels));
-    view->nearDistance.setValue(1.0f);
-    view->farDistance.setValue(20.0f);
-    sg::Separator::Ptr root = sg::Separator::create();
-    root->addChild(view);
-    root->addChild(glow);
-    root->addChild(test::fileVolume(VolumeSource::FileRaw,
-                                    test::writeTestVolume("cpu_figure2_layer", layer)));
-    root->addChild(TextureSplat::create());
+    // As TextureSplat's figure-2 test.
+    const sg::Separator::Ptr root = test::figure2LayerScene("cpu_figure2_layer");
     const test::RenderedFrame frame =
         renderCpu(*root, test::kLayerImageSize, test::kLayerImageSize);
-    std::vector<float> red;
-    for (const glm::vec4& color : frame.image.pixels()) {
-        red.push_back(color.r);
-    }
-    const test::LayerStatistics statistics =
-        test::layerInteriorStatistics(red, test::kLayerImageSize);
+    const test::LayerStatistics statistics = test::redLayerStatistics(frame.image);
     test::reportLayer("CPU backend", statistics);
     EXPECT_NEAR(statistics.relativeMax(), test::kPaperLayerMax, 1e-3 * test::kPaperLayerMax);
     EXPECT_NEAR(statistics.relativeMin(), test::kPaperLayerMin, 1e-3 * test::kPaperLayerMin);

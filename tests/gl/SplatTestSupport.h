@@ -3,8 +3,12 @@
 #include "GlTestSupport.h"
 #include "nodes/Camera.h"
 #include "nodes/NodeTypes.h"
+#include "nodes/OrthographicCamera.h"
+#include "nodes/TextureSplat.h"
+#include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 #include "nodes/image/Image.h"
+#include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/Grid.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/render/RenderedImage.h"
@@ -218,6 +222,49 @@ inline LayerStatistics layerInteriorStatistics(const std::vector<float>& red, in
 inline void reportLayer(const char* what, const LayerStatistics& statistics) {
     std::printf("figure2 %s: mean %.6f max/mean %.6f min/mean %.6f\n", what, statistics.mean,
                 statistics.relativeMax(), statistics.relativeMin());
+}
+
+/// @brief The layer statistics of the red channel of `image` (a kLayerImageSize² image).
+inline LayerStatistics redLayerStatistics(const image::Image& image) {
+    std::vector<float> red;
+    for (const glm::vec4& color : image.pixels()) {
+        red.push_back(color.r);
+    }
+    return layerInteriorStatistics(red, kLayerImageSize);
+}
+
+/// @brief The paper's figure 2 as a scene: a raw file (named after `name`) of one
+/// kLayerVoxels² layer of value 1, classified to emission 1 and no opacity, drawn by TextureSplat
+/// (paper kernel, default texture) through an orthographic camera looking down z whose pixel
+/// centres lie on the lattice k/kPixelsPerVoxel (the view's left edge half a pixel left of voxel
+/// 0's centre), for a kLayerImageSize² image.
+inline sg::Separator::Ptr figure2LayerScene(const std::string& name) {
+    volume::DenseGrid<float> layer{
+        volume::GridGeometry(glm::i64vec3(kLayerVoxels, kLayerVoxels, 1))};
+    for (int j = 0; j < kLayerVoxels; ++j) {
+        for (int i = 0; i < kLayerVoxels; ++i) {
+            layer.setValue({i, j, 0}, 1.0f);
+        }
+    }
+    nodes::TransferFunction::Ptr glow = nodes::TransferFunction::create();
+    glow->colorValues.setValue({0.0f, 1.0f});
+    glow->colors.setValue({glm::vec3(1.0f), glm::vec3(1.0f)});
+    glow->opacities.setValue({0.0f, 0.0f});
+    glow->emission.setValue(1.0f);
+    const float pixel = 1.0f / kPixelsPerVoxel;
+    const float half = 0.5f * static_cast<float>(kLayerVoxels);
+    nodes::OrthographicCamera::Ptr camera = nodes::OrthographicCamera::create();
+    camera->position.setValue(glm::vec3(half - 0.5f * pixel, half - 0.5f * pixel, 10.0f));
+    camera->height.setValue(static_cast<float>(kLayerVoxels));
+    camera->nearDistance.setValue(1.0f);
+    camera->farDistance.setValue(20.0f);
+    sg::Separator::Ptr root = sg::Separator::create();
+    root->addChild(camera);
+    root->addChild(glow);
+    root->addChild(
+        fileVolume(nodes::VolumeSource::FileRaw, writeTestVolume(name, layer)));
+    root->addChild(nodes::TextureSplat::create());
+    return root;
 }
 
 } // namespace texsplat::test

@@ -214,44 +214,13 @@ TEST(TextureSplat, eyeInsideTheVolumeCullsTheSplatsBehindIt) {
 // texture) through an orthographic camera looking down z into the float framebuffer.
 TEST(TextureSplat, figure2LayerThroughTheNodesIsAsFlatAsThePaperReports) {
     test::sharedContext();
-    volume::DenseGrid<float> layer{
-        volume::GridGeometry(glm::i64vec3(test::kLayerVoxels, test::kLayerVoxels, 1))};
-    for (int j = 0; j < test::kLayerVoxels; ++j) {
-        for (int i = 0; i < test::kLayerVoxels; ++i) {
-            layer.setValue({i, j, 0}, 1.0f);
-        }
-    }
-    TransferFunction::Ptr glow = TransferFunction::create();
-    glow->colorValues.setValue({0.0f, 1.0f});
-    glow->colors.setValue({glm::vec3(1.0f), glm::vec3(1.0f)});
-    glow->opacities.setValue({0.0f, 0.0f});
-    glow->emission.setValue(1.0f);
-    // Pixel centres on the lattice k/8 (as SplatBatch's figure-2 test): the view's left edge is
-    // half a pixel left of voxel 0's centre.
-    const float pixel = 1.0f / test::kPixelsPerVoxel;
-    const float half = 0.5f * static_cast<float>(test::kLayerVoxels);
-    OrthographicCamera::Ptr camera = OrthographicCamera::create();
-    camera->position.setValue(glm::vec3(half - 0.5f * pixel, half - 0.5f * pixel, 10.0f));
-    camera->height.setValue(static_cast<float>(test::kLayerVoxels));
-    camera->nearDistance.setValue(1.0f);
-    camera->farDistance.setValue(20.0f);
-    sg::Separator::Ptr root = sg::Separator::create();
-    root->addChild(camera);
-    root->addChild(glow);
-    root->addChild(
-        test::fileVolume(VolumeSource::FileRaw, test::writeTestVolume("figure2_layer", layer)));
-    root->addChild(TextureSplat::create());
+    const sg::Separator::Ptr root = test::figure2LayerScene("figure2_layer");
     const test::RenderedFrame frame =
         test::renderFrame(*root, test::kLayerImageSize, test::kLayerImageSize);
     EXPECT_EQ(frame.statistics.splats,
               static_cast<std::size_t>(test::kLayerVoxels * test::kLayerVoxels));
-    std::vector<float> red;
-    for (const glm::vec4& color : frame.image.pixels()) {
-        red.push_back(color.r);
-    }
     EXPECT_EQ(frame.image.statistics().maximum.a, 0.0) << "transparent splats must leave alpha 0";
-    const test::LayerStatistics statistics =
-        test::layerInteriorStatistics(red, test::kLayerImageSize);
+    const test::LayerStatistics statistics = test::redLayerStatistics(frame.image);
     test::reportLayer("scene nodes: raw file, TransferFunction, TextureSplat", statistics);
     EXPECT_NEAR(statistics.mean, 1.0, 2e-3);
     EXPECT_NEAR(statistics.relativeMax(), test::kPaperLayerMax, 1e-3 * test::kPaperLayerMax);
