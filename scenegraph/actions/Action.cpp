@@ -1,6 +1,7 @@
 #include "scenegraph/actions/Action.h"
 
 #include "scenegraph/Error.h"
+#include "scenegraph/actions/detail/VisitCount.h"
 
 #include <string>
 
@@ -12,6 +13,17 @@ void Action::apply(Node& root) {
     mState.reset();
     mPath.clear();
     mHasTerminated = false;
+    if (!visitsSharedNodesOnce()) {
+        const detail::VisitCount count = detail::countVisits(root, kMaxVisits);
+        if (count.overLimit != nullptr) {
+            throw DataError("scene graph is too large to traverse: " +
+                            count.overLimit->describe() + " and the nodes under it would be " +
+                            "visited " + std::to_string(count.visits) +
+                            " times (a node shared with DEF/USE is visited once per use), more "
+                            "than the limit of " + std::to_string(kMaxVisits) + " (in the graph "
+                            "under " + root.describe() + ")");
+        }
+    }
     beginTraversal(root);
     traverse(root);
 }

@@ -5,6 +5,7 @@
 #include "scenegraph/actions/State.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace texsplat::sg {
@@ -15,7 +16,10 @@ namespace texsplat::sg {
 /// `traverse(node)` dispatches on the node's type through the action's MethodTable (nearest
 /// registered ancestor type), falling back to `Node::doAction()`; groups call `traverse()` on
 /// their children. Traversal deeper than kMaxDepth throws DataError, so a pathological graph
-/// cannot exhaust the stack.
+/// cannot exhaust the stack; so does a graph whose traversal would visit more than kMaxVisits
+/// nodes (nodes shared with DEF/USE are visited once per use, so 64 groups that each USE the
+/// previous one twice would take 2^64 visits), checked by counting before traversing, so such a
+/// graph fails at once instead of hanging.
 ///
 /// A new action: derive, give it `static MethodTable& methods()` (entries for the node types
 /// it treats specially, e.g. `Node` → a virtual on Node, or per-class render methods), pass
@@ -24,6 +28,9 @@ class Action {
 public:
     /// @brief Deepest path a traversal may reach.
     static constexpr std::size_t kMaxDepth = 4096;
+
+    /// @brief Most node visits one traversal may make (about a second of traversal).
+    static constexpr std::uint64_t kMaxVisits = 10'000'000;
 
     Action(const Action&) = delete;
     Action& operator=(const Action&) = delete;
@@ -56,6 +63,10 @@ protected:
 
     /// @brief Called by apply() after the reset, before traversing: clear per-apply results.
     virtual void beginTraversal(Node& root);
+
+    /// @brief Whether this action visits a shared node once however often it is used (as the
+    /// writer does, writing USE); such an action is not bound by kMaxVisits.
+    virtual bool visitsSharedNodesOnce() const { return false; }
 
 private:
     const MethodTable* mMethods;

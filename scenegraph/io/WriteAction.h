@@ -49,6 +49,9 @@ protected:
     /// @brief Counts references (for DEF names) and writes the header.
     void beginTraversal(Node& root) override;
 
+    /// @brief True: a shared node is written once, then referred to with USE.
+    bool visitsSharedNodesOnce() const override { return true; }
+
 private:
     void writeNodeMethod(Node& node);
     void writeContainer(FieldContainer& container);

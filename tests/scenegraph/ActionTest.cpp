@@ -4,6 +4,9 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/actions/detail/VisitCount.h"
+#include "scenegraph/io/SceneReader.h"
+#include "scenegraph/io/WriteAction.h"
 
 #include <gtest/gtest.h>
 
@@ -96,6 +99,74 @@ TEST(Action, aPathologicalChainFailsCleanly) {
     Group::Ptr root = chain(100000);
     BoundingBoxAction action;
     EXPECT_THROW(action.apply(*root), DataError);
+}
+
+// 0: an empty group; i: a group that holds group i-1 twice, so it takes 2^(i+1) - 1 visits.
+Group::Ptr doublingDag(int levels) {
+    Group::Ptr level = Group::create();
+    level->setName("a0");
+    for (int i = 1; i < levels; ++i) {
+        Group::Ptr next = Group::create();
+        next->setName("a" + std::to_string(i));
+        next->addChild(level);
+        next->addChild(level);
+        level = next;
+    }
+    return level;
+}
+
+TEST(Action, anExponentialDagIsRefusedBeforeTraversing) {
+    Group::Ptr root = Group::create();
+    root->addChild(doublingDag(64));
+    BoundingBoxAction action;
+    try {
+        action.apply(*root);
+        FAIL() << "no error";
+    } catch (const DataError& error) {
+        // a22 takes 8388607 visits, a23 the first more than 10^7.
+        EXPECT_STREQ(error.what(),
+                     "scene graph is too large to traverse: Group(a23) and the nodes under it "
+                     "would be visited 16777215 times (a node shared with DEF/USE is visited "
+                     "once per use), more than the limit of 10000000 (in the graph under Group)");
+    }
+    EXPECT_TRUE(action.pathNodes().empty());
+    // Within the limit, shared nodes are traversed once per use, as counted.
+    VisitAction visits;
+    visits.apply(*doublingDag(10));
+    EXPECT_EQ(visits.visits.size(), 1023u);
+    const detail::VisitCount largest = detail::countVisits(*doublingDag(23), Action::kMaxVisits);
+    EXPECT_EQ(largest.visits, (std::uint64_t{1} << 23) - 1);
+    EXPECT_EQ(largest.overLimit, nullptr);
+}
+
+TEST(Action, anExponentialDagReadFromAFileIsRefused) {
+    std::string text = "#Inventor V2.1 ascii\nDEF a0 Group { }\n";
+    for (int i = 1; i < 64; ++i) {
+        text += "DEF a" + std::to_string(i) + " Group { USE a" + std::to_string(i - 1) +
+                " USE a" + std::to_string(i - 1) + " }\n";
+    }
+    text += "USE a63\n";
+    const Node::Ptr root = SceneReader::readString(text, "dag.iv");
+    BoundingBoxAction action;
+    try {
+        action.apply(*root);
+        FAIL() << "no error";
+    } catch (const DataError& error) {
+        EXPECT_STREQ(error.what(),
+                     "scene graph is too large to traverse: Group(a23) and the nodes under it "
+                     "would be visited 16777215 times (a node shared with DEF/USE is visited "
+                     "once per use), more than the limit of 10000000 (in the graph under "
+                     "Separator)");
+    }
+}
+
+TEST(Action, theWriterIsNotBoundByTheVisitLimit) {
+    Group::Ptr root = doublingDag(64);
+    // Each level is written once (DEF) and used once more (USE): 64 levels, about 20 KB.
+    const std::string text = WriteAction::writeString(*root);
+    EXPECT_NE(text.find("DEF a63 Group {"), std::string::npos);
+    EXPECT_NE(text.find("USE a62"), std::string::npos);
+    EXPECT_LT(text.size(), 30000u);
 }
 
 TEST(Action, terminationStopsGroups) {
