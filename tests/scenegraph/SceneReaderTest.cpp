@@ -9,7 +9,12 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <clocale>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
 #include <locale>
 #include <string>
 #include <vector>
@@ -285,6 +290,52 @@ TEST_F(SceneReaderTest, reportsAMissingFile) {
         EXPECT_STREQ(error.what(),
                      "/nonexistent/scene.iv: cannot open scene file: No such file or directory");
     }
+}
+
+// The message of the IoError or ParseError that reading the file at `path` throws.
+std::string fileError(const std::string& path) {
+    try {
+        SceneReader::readFile(path);
+    } catch (const texsplat::Error& error) {
+        return error.what();
+    }
+    return "no error";
+}
+
+std::string scratchPath(const std::string& name) {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const std::string path = ::testing::TempDir() + "SceneReaderTest_" + info->name() + "_" + name;
+    std::filesystem::remove(path);
+    return path;
+}
+
+TEST_F(SceneReaderTest, refusesFilesThatAreNotRegularBeforeOpeningThem) {
+    // Reading a device never ends; opening a FIFO blocks until something writes to it.
+    EXPECT_EQ(fileError("/dev/zero"),
+              "/dev/zero: cannot read scene file: it is a character device, not a regular file");
+    const std::string fifo = scratchPath("scene.iv");
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(fileError(fifo), fifo + ": cannot read scene file: it is a FIFO, not a regular file");
+    std::filesystem::remove(fifo);
+}
+
+TEST_F(SceneReaderTest, checksTheHeaderBeforeReadingAHugeFile) {
+    // A sparse 64 GiB file that starts like a PNG: refused from its first bytes, not read whole.
+    const std::string path = scratchPath("huge.iv");
+    std::ofstream(path, std::ios::binary) << "\x89PNG\r\n\x1a\n";
+    std::filesystem::resize_file(path, std::uintmax_t{64} << 30);
+    EXPECT_EQ(fileError(path),
+              path + ":1:1: not an Inventor file: expected '#Inventor V2.1 ascii' on the first "
+                     "line, got '\\x89PNG'");
+    // A first line longer than the bytes checked is quoted the same way as from the whole text.
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << std::string(100000, 'x');
+    EXPECT_EQ(fileError(path),
+              path + ":1:1: not an Inventor file: expected '#Inventor V2.1 ascii' on the first "
+                     "line, got '" + std::string(40, 'x') + "...'");
+    std::ofstream(path, std::ios::binary | std::ios::trunc)
+        << "#Inventor V2.1 ascii" << std::string(1000, ' ') << "\nGroup { }";
+    EXPECT_EQ(fileError(path), "no error");
+    std::filesystem::remove(path);
 }
 
 TEST_F(SceneReaderTest, reportsEveryMalformedInputByLocationAndExpectation) {
