@@ -2,6 +2,8 @@
 
 #include "scenegraph/Assert.h"
 
+#include <limits>
+
 namespace texsplat::volume {
 
 template <typename T>
@@ -90,12 +92,25 @@ void SparseGrid<T>::forEachStored(const typename Grid<T>::VoxelVisitor& visit) c
     }
 }
 
+namespace {
+// Each hash entry costs about a node (key, value, next pointer, cached hash) plus a bucket.
+constexpr std::size_t kEntryBytes = 4 * sizeof(void*) + sizeof(std::int64_t);
+} // namespace
+
 template <typename T>
 std::size_t SparseGrid<T>::memoryBytes() const {
-    // Each hash entry costs about a node (key, value, next pointer, cached hash) plus a bucket.
-    constexpr std::size_t kEntryBytes = 4 * sizeof(void*) + sizeof(std::int64_t);
     return mBlocks.size() * (sizeof(Block) + sizeof(std::unique_ptr<Block>) + kEntryBytes) +
            mBlockByKey.bucket_count() * sizeof(void*);
+}
+
+template <typename T>
+std::uint64_t SparseGrid<T>::memoryBytesForBlocks(std::uint64_t blocks) {
+    // As memoryBytes(), with about one bucket per block.
+    constexpr std::uint64_t kPerBlock =
+        sizeof(Block) + sizeof(std::unique_ptr<Block>) + kEntryBytes + sizeof(void*);
+    return blocks > std::numeric_limits<std::uint64_t>::max() / kPerBlock
+               ? std::numeric_limits<std::uint64_t>::max()
+               : blocks * kPerBlock;
 }
 
 template class SparseGrid<float>;

@@ -46,6 +46,10 @@ public:
     /// @copydoc Grid::memoryBytes
     std::size_t memoryBytes() const override;
 
+    /// @brief What a grid of `blocks` allocated blocks costs (its memoryBytes()), saturating at
+    /// the largest uint64: a loader checks it against memory before building the grid.
+    static std::uint64_t memoryBytesForBlocks(std::uint64_t blocks);
+
 private:
     static constexpr std::size_t kBlockVoxels = 512;
     struct Block {

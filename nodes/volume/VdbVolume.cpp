@@ -4,11 +4,14 @@
 
 #ifdef TEXSPLAT_WITH_OPENVDB
 #include "nodes/volume/SparseGrid.h"
+#include "nodes/volume/detail/Printable.h"
 #include "nodes/volume/detail/SourceSupport.h"
 
 #include <openvdb/openvdb.h>
 
+#include <exception>
 #include <memory>
+#include <new>
 #endif
 
 namespace texsplat::volume {
@@ -21,23 +24,47 @@ constexpr std::int64_t kProgressInterval = std::int64_t{1} << 16;
 glm::vec3 toGlm(const openvdb::Vec3f& v) { return {v.x(), v.y(), v.z()}; }
 float toGlm(float v) { return v; }
 
+// Runs a call into OpenVDB's reader. A damaged file makes it throw its own exceptions
+// ("KeyError: Map is not registered"), std::bad_alloc for sizes it believes, or other standard
+// exceptions; each becomes IoError(failure(reason)), so the message names the file. OpenVDB's
+// reason quotes what it read, from a damaged file any bytes and up to kilobytes of them: it is
+// escaped and cut.
+template <typename Call, typename Failure>
+auto callOpenVdb(Call&& call, Failure&& failure) {
+    try {
+        return call();
+    } catch (const Error&) {
+        throw;
+    } catch (const std::bad_alloc&) {
+        throw IoError(failure("it declares more data than fits in memory (std::bad_alloc)"));
+    } catch (const std::exception& error) {
+        constexpr std::size_t kMaxReasonLength = 160;
+        throw IoError(failure(detail::printable(error.what(), kMaxReasonLength)));
+    }
+}
+
+std::string corrupt(const std::string& path, const std::string& reason) {
+    return path + ": truncated or corrupt VDB file: " + reason;
+}
+
 // Opens with OpenVDB after checking the path ourselves, so a missing file gets the same message
 // as from the raw reader instead of OpenVDB's wording.
 std::unique_ptr<openvdb::io::File> openVdb(const std::string& path) {
     openvdb::initialize();
     detail::openForReading(path);
     auto file = std::make_unique<openvdb::io::File>(path);
-    try {
-        file->open(false);
-    } catch (const openvdb::Exception& error) {
-        throw IoError(path + ": cannot read OpenVDB file (" + error.what() + ")");
-    }
+    callOpenVdb([&] { return file->open(false); },
+                [&](const std::string& reason) {
+                    return path + ": cannot read OpenVDB file (" + reason + ")";
+                });
     return file;
 }
 
-std::vector<VdbGridInfo> gridInfos(openvdb::io::File& file) {
+std::vector<VdbGridInfo> gridInfos(openvdb::io::File& file, const std::string& path) {
     std::vector<VdbGridInfo> infos;
-    const openvdb::GridPtrVecPtr grids = file.readAllGridMetadata();
+    const openvdb::GridPtrVecPtr grids = callOpenVdb(
+        [&] { return file.readAllGridMetadata(); },
+        [&](const std::string& reason) { return corrupt(path, reason); });
     for (const openvdb::GridBase::Ptr& grid : *grids)
         infos.push_back({grid->getName(), grid->valueType()});
     return infos;
@@ -85,7 +112,16 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
     const glm::i64vec3 blockOffset = ((low % kBlock) + kBlock) % kBlock;
     auto grid = std::make_shared<SparseGrid<Value>>(geometry, toGlm(source.background()),
                                                     blockOffset);
-    const auto total = static_cast<double>(source.activeVoxelCount());
+    // Active tiles become voxels: a 594-byte file may hold one tile of 4096^3. Each OpenVDB leaf
+    // becomes one block, and tiles (multiples of 8^3, on leaf boundaries) whole blocks.
+    const std::uint64_t active = source.activeVoxelCount();
+    const std::uint64_t blocks =
+        source.tree().leafCount() +
+        (active - source.tree().activeLeafVoxelCount()) / std::uint64_t(kBlock * kBlock * kBlock);
+    detail::checkFitsInMemory(where + ": copying its " + std::to_string(active) +
+                                  " active voxels (tiles included)",
+                              SparseGrid<Value>::memoryBytesForBlocks(blocks));
+    const auto total = static_cast<double>(active);
     const std::string message = "copying grid '" + gridName + "'";
     std::int64_t copied = 0;
     reportProgress(progress, path, 0.0, message);
@@ -110,14 +146,17 @@ bool isOpenVdbAvailable() { return true; }
 
 std::vector<VdbGridInfo> listVdbGrids(const std::string& path) {
     auto file = openVdb(path);
-    return gridInfos(*file);
+    return gridInfos(*file, path);
 }
 
 AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
                     const ProgressCallback& progress) {
     auto file = openVdb(path);
-    if (!file->hasGrid(gridName)) {
-        const std::vector<VdbGridInfo> infos = gridInfos(*file);
+    const bool hasGrid =
+        callOpenVdb([&] { return file->hasGrid(gridName); },
+                    [&](const std::string& reason) { return corrupt(path, reason); });
+    if (!hasGrid) {
+        const std::vector<VdbGridInfo> infos = gridInfos(*file, path);
         std::string available;
         for (const VdbGridInfo& info : infos)
             available += (available.empty() ? "" : ", ") + info.name + " (" + info.valueType + ")";
@@ -127,12 +166,9 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
     const std::string where = path + ": grid '" + gridName + "'";
     // OpenVDB reads and decompresses the whole grid in this one call, often the longest step.
     reportProgress(progress, path, 0.0, "reading grid '" + gridName + "'");
-    openvdb::GridBase::Ptr base;
-    try {
-        base = file->readGrid(gridName);
-    } catch (const openvdb::Exception& error) {
-        throw IoError(where + " cannot be read (" + error.what() + ")");
-    }
+    const openvdb::GridBase::Ptr base =
+        callOpenVdb([&] { return file->readGrid(gridName); },
+                    [&](const std::string& reason) { return where + " cannot be read (" + reason + ")"; });
     if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
         return ScalarGridPtr(convert(*scalar, path, gridName, progress));
     if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -137,6 +139,20 @@ TEST(NpyVolume, aFileThatIsNotNpyGetsTheFormatNamed) {
                   path + ": not a NumPy .npy file: expected it to start with the bytes \\x93NUMPY "
                          "and a format version");
     }
+}
+
+TEST(NpyVolume, refusesAFifoBeforeOpeningIt) {
+    const std::string fifo = testPath("data.npy");
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    try {
+        readNpyVolume(fifo);
+        ADD_FAILURE() << "no error";
+    } catch (const IoError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  fifo + ": cannot read file: it is a FIFO, not a regular file");
+    }
+    std::filesystem::remove(fifo);
 }
 
 } // namespace

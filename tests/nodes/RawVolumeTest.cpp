@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -198,6 +200,25 @@ TEST(RawVolume, reportsMissingFolderTruncatedAndOversizedFiles) {
     EXPECT_EQ(errorOf<DataError>(oversized),
               oversized + ": data size mismatch: the header asks for 2 x 2 x 2 voxels x 3 "
                           "components x 2 bytes (uint16) = 48 bytes, but 50 bytes follow it");
+}
+
+TEST(RawVolume, refusesFifosAndDevicesBeforeOpeningThem) {
+    EXPECT_EQ(errorOf<IoError>("/dev/zero"),
+              "/dev/zero: cannot read file: it is a character device, not a regular file");
+    const std::string fifo = testPath("data.raw");
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(errorOf<IoError>(fifo), fifo + ": cannot read file: it is a FIFO, not a regular file");
+    RawHeader layout;
+    layout.dims = {4, 4, 4};
+    try {
+        readHeaderlessRawVolume(fifo, layout, 0);
+        ADD_FAILURE() << "no error";
+    } catch (const IoError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  fifo + ": cannot read file: it is a FIFO, not a regular file");
+    }
+    std::filesystem::remove(fifo);
 }
 
 TEST(RawVolume, reportsBadHeadersAndZeroSizeGrids) {

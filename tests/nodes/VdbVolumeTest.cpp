@@ -7,9 +7,14 @@
 #include <gtest/gtest.h>
 
 #ifdef TEXSPLAT_WITH_OPENVDB
+#include "nodes/volume/detail/SourceSupport.h"
+
 #include <openvdb/openvdb.h>
+#include <sys/stat.h>
 
 #include <cmath>
+#include <cstdint>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -213,6 +218,60 @@ TEST(VdbVolume, reportsMissingAndForeignFiles) {
     std::ofstream(foreign) << "texsplat-raw 1\n";
     EXPECT_EQ(errorOf<IoError>([&] { listVdbGrids(foreign); }),
               foreign + ": cannot read OpenVDB file (IoError: not a VDB file)");
+}
+
+TEST(VdbVolume, refusesATileTooLargeForMemoryBeforeCopyingIt) {
+    // One active root tile: 4096^3 voxels in a file of a few hundred bytes.
+    openvdb::initialize();
+    auto bomb = openvdb::FloatGrid::create(0.0f);
+    bomb->setName("density");
+    bomb->tree().addTile(3, openvdb::Coord(0), 1.0f, true);
+    const std::string path = testPath("bomb.vdb");
+    openvdb::io::File(path).write({bomb});
+    ASSERT_LT(std::filesystem::file_size(path), 1000u);
+    const std::uint64_t voxels = std::uint64_t{1} << 36;
+    const std::uint64_t bytes = SparseGrid<float>::memoryBytesForBlocks(voxels / 512);
+    ASSERT_GT(bytes, detail::physicalMemoryBytes()) << "this machine could copy the tile";
+    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "density"); }),
+              path + ": grid 'density': copying its 68719476736 active voxels (tiles included) "
+                     "would need " + detail::bytesText(bytes) + ", more than this machine's "
+                     "memory (" + detail::bytesText(detail::physicalMemoryBytes()) + ")");
+}
+
+TEST(VdbVolume, wrapsWhatOpenVdbThrowsForATruncatedFileWithTheFileName) {
+    const std::string valid = writeTestFile();
+    const auto size = std::filesystem::file_size(valid);
+    std::ifstream in(valid, std::ios::binary);
+    const std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::string path = testPath("truncated.vdb");
+    const auto cut = [&](std::size_t length) {
+        std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes.substr(0, length);
+        return errorOf<IoError>([&] {
+            for (const VdbGridInfo& info : listVdbGrids(path))
+                readVdbGrid(path, info.name);
+        });
+    };
+    // Cut in the last grid's transform: OpenVDB reads a map type name from bytes that are not
+    // there. This came out as "internal error: KeyError ...", naming no file.
+    EXPECT_EQ(cut(size - 50),
+              path + ": truncated or corrupt VDB file: KeyError: Map  is not registered");
+    // Cut in the middle: OpenVDB quotes kilobytes of what it took for a grid type; the message
+    // escapes and shortens them.
+    const std::string middle = cut(size / 2);
+    EXPECT_EQ(middle.rfind(path + ": cannot read OpenVDB file (LookupError: Cannot read grid. "
+                                  "Grid type ", 0),
+              0u)
+        << middle;
+    EXPECT_LT(middle.size(), path.size() + 200) << middle;
+}
+
+TEST(VdbVolume, refusesAFifoBeforeOpeningIt) {
+    const std::string fifo = testPath("grids.vdb");
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    EXPECT_EQ(errorOf<IoError>([&] { listVdbGrids(fifo); }),
+              fifo + ": cannot read file: it is a FIFO, not a regular file");
+    std::filesystem::remove(fifo);
 }
 
 } // namespace

@@ -1,9 +1,13 @@
 #include "nodes/volume/detail/SourceSupport.h"
 
 #include "scenegraph/Error.h"
+#include "scenegraph/InputFile.h"
 #include "scenegraph/Log.h"
 
+#include <unistd.h>
+
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -13,6 +17,7 @@ std::ifstream openForReading(const std::string& path) {
     std::error_code error;
     if (std::filesystem::is_directory(path, error))
         throw IoError(path + ": cannot open file (it is a folder)");
+    requireRegularFile(path, "file");
     errno = 0;
     std::ifstream in(path, std::ios::binary);
     if (!in) {
@@ -21,6 +26,25 @@ std::ifstream openForReading(const std::string& path) {
                       (reason != 0 ? std::strerror(reason) : "unknown reason") + ")");
     }
     return in;
+}
+
+std::uint64_t physicalMemoryBytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long pageBytes = sysconf(_SC_PAGE_SIZE);
+    return pages > 0 && pageBytes > 0 ? std::uint64_t(pages) * std::uint64_t(pageBytes) : 0;
+}
+
+std::string bytesText(std::uint64_t bytes) {
+    char gibibytes[32];
+    std::snprintf(gibibytes, sizeof gibibytes, "%.3g GiB", double(bytes) / double(1ull << 30));
+    return std::to_string(bytes) + " bytes (" + gibibytes + ")";
+}
+
+void checkFitsInMemory(const std::string& what, std::uint64_t bytes) {
+    const std::uint64_t memory = physicalMemoryBytes();
+    if (memory != 0 && bytes > memory)
+        throw DataError(what + " would need " + bytesText(bytes) +
+                        ", more than this machine's memory (" + bytesText(memory) + ")");
 }
 
 void checkFiniteVoxels(const std::string& source, const GridStatistics& statistics) {

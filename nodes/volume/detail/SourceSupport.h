@@ -2,14 +2,29 @@
 
 #include "nodes/volume/GridStatistics.h"
 
+#include <cstdint>
 #include <fstream>
 #include <string>
 
 namespace texsplat::volume::detail {
 
 /// @brief Opens `path` for binary reading.
-/// @throws IoError "path: cannot open file (reason)" when it is missing, unreadable or a folder.
+/// @throws IoError "path: cannot open file (reason)" when it is missing, unreadable or a folder;
+/// "path: cannot read file: it is a FIFO, not a regular file" (or a device, a socket) before
+/// opening it, which for a FIFO would block.
 std::ifstream openForReading(const std::string& path);
+
+/// @brief This machine's physical memory in bytes (0 when the system does not say).
+std::uint64_t physicalMemoryBytes();
+
+/// @brief "12884901888 bytes (12 GiB)": a byte count as people read it.
+std::string bytesText(std::uint64_t bytes);
+
+/// @brief Checks a loader's estimate before it allocates: throws DataError "<what> would need
+/// <bytes text>, more than this machine's memory (<bytes text>)" when `bytes` exceeds the
+/// physical memory, so a small file that declares a huge grid fails at once, saying what it
+/// would cost, instead of swapping or dying of std::bad_alloc.
+void checkFitsInMemory(const std::string& what, std::uint64_t bytes);
 
 /// @brief The one check a loader makes of the voxels it read. Logs one warning for empty (NaN or
 /// infinite) voxels, naming the source and the count ("f.raw: 3 voxels are NaN or infinite;
