@@ -1,6 +1,7 @@
 #include "nodes/detail/GltfReader.h"
 
 #include "scenegraph/Error.h"
+#include "scenegraph/InputFile.h"
 
 #ifdef TEXSPLAT_WITH_GLTF
 #include <glm/gtc/matrix_inverse.hpp>
@@ -13,7 +14,11 @@
 #include <cmath>
 #include <cerrno>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <limits>
+#include <string_view>
 #include <utility>
 #include <vector>
 #endif
@@ -47,15 +52,16 @@ public:
             accessor.type != TINYGLTF_TYPE_VEC3) {
             fail(what, accessorIndex, "must hold float VEC3 values");
         }
-        std::vector<glm::vec3> values(accessor.count);
-        forEachElement(accessor, accessorIndex, what, [&](std::size_t i, const unsigned char* p) {
-            std::memcpy(&values[i], p, sizeof(glm::vec3));
+        const Elements span = elements(accessor, accessorIndex, what);
+        std::vector<glm::vec3> values(span.count);
+        for (std::size_t i = 0; i < span.count; ++i) {
+            std::memcpy(&values[i], span.first + span.stride * i, sizeof(glm::vec3));
             if (!std::isfinite(values[i].x) || !std::isfinite(values[i].y) ||
                 !std::isfinite(values[i].z)) {
                 fail(what, accessorIndex, "holds a non-finite value at element " +
                                               std::to_string(i));
             }
-        });
+        }
         return values;
     }
 
@@ -65,14 +71,16 @@ public:
         if (accessor.type != TINYGLTF_TYPE_SCALAR) {
             fail(what, accessorIndex, "must hold SCALAR values");
         }
-        std::vector<std::uint32_t> values(accessor.count);
         const int type = accessor.componentType;
         if (type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
             type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
             type != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
             fail(what, accessorIndex, "must hold unsigned byte, short or int values");
         }
-        forEachElement(accessor, accessorIndex, what, [&](std::size_t i, const unsigned char* p) {
+        const Elements span = elements(accessor, accessorIndex, what);
+        std::vector<std::uint32_t> values(span.count);
+        for (std::size_t i = 0; i < span.count; ++i) {
+            const unsigned char* p = span.first + span.stride * i;
             if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
                 values[i] = *p;
             } else if (type == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
@@ -82,7 +90,7 @@ public:
             } else {
                 std::memcpy(&values[i], p, sizeof(std::uint32_t));
             }
-        });
+        }
         return values;
     }
 
@@ -104,11 +112,19 @@ private:
         return accessor;
     }
 
-    template <class Visit>
-    void forEachElement(const tinygltf::Accessor& accessor, int accessorIndex, const char* what,
-                        Visit visit) const {
+    // Where an accessor's elements lie in its buffer, checked against the buffer view and the
+    // buffer before anything is allocated for them: a count comes from the file and may be 10^9
+    // over a 36-byte view.
+    struct Elements {
+        const unsigned char* first = nullptr;
+        std::size_t stride = 0;
+        std::size_t count = 0;
+    };
+
+    Elements elements(const tinygltf::Accessor& accessor, int accessorIndex,
+                      const char* what) const {
         if (accessor.count == 0) {
-            return;
+            return {};
         }
         if (accessor.bufferView < 0 ||
             static_cast<std::size_t>(accessor.bufferView) >= mModel.bufferViews.size()) {
@@ -127,17 +143,31 @@ private:
         if (stride <= 0 || elementSize <= 0) {
             fail(what, accessorIndex, "has an invalid component type or byte stride");
         }
-        // 64-bit arithmetic; counts come from the file and may be huge.
-        const std::uint64_t start = std::uint64_t(view.byteOffset) + accessor.byteOffset;
-        const std::uint64_t end =
-            start + std::uint64_t(stride) * (accessor.count - 1) + std::uint64_t(elementSize);
-        const std::uint64_t viewEnd = std::uint64_t(view.byteOffset) + view.byteLength;
-        if (accessor.count > data.size() || end > viewEnd || viewEnd > data.size()) {
-            fail(what, accessorIndex, "reaches beyond its buffer view or buffer");
+        // Each step is checked before the next uses it, so nothing wraps around.
+        if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
+            fail(what, accessorIndex,
+                 "reaches beyond its buffer view or buffer: buffer view " +
+                     std::to_string(accessor.bufferView) + " (bytes " +
+                     std::to_string(view.byteOffset) + " to " +
+                     std::to_string(std::uint64_t(view.byteOffset) + view.byteLength) +
+                     ") lies outside buffer " + std::to_string(view.buffer) + " (" +
+                     std::to_string(data.size()) + " bytes)");
         }
-        for (std::size_t i = 0; i < accessor.count; ++i) {
-            visit(i, data.data() + start + std::uint64_t(stride) * i);
+        const std::uint64_t available =
+            accessor.byteOffset <= view.byteLength ? view.byteLength - accessor.byteOffset : 0;
+        const std::uint64_t lastStart = accessor.count - 1;
+        if (accessor.byteOffset > view.byteLength || available < std::uint64_t(elementSize) ||
+            lastStart > (available - std::uint64_t(elementSize)) / std::uint64_t(stride)) {
+            fail(what, accessorIndex,
+                 "reaches beyond its buffer view or buffer: " + std::to_string(accessor.count) +
+                     " elements of " + std::to_string(elementSize) + " bytes, " +
+                     std::to_string(stride) + " apart, from byte " +
+                     std::to_string(accessor.byteOffset) + " of buffer view " +
+                     std::to_string(accessor.bufferView) + ", which holds " +
+                     std::to_string(view.byteLength) + " bytes");
         }
+        return {data.data() + view.byteOffset + accessor.byteOffset, std::size_t(stride),
+                accessor.count};
     }
 
     const tinygltf::Model& mModel;
@@ -300,23 +330,122 @@ bool hasBinaryExtension(const std::string& path) {
     return tail == extension;
 }
 
+// tinygltf converts JSON values (extras, extensions) recursively, one stack frame per level:
+// 20 000 levels overflow an 8 MB stack. Real files nest a handful of levels.
+constexpr int kMaxJsonNesting = 256;
+
+// Refuses JSON nested deeper than kMaxJsonNesting before tinygltf parses it; `where` names the
+// text in the message ("model.gltf", or "model.glb (JSON chunk)"). Brackets inside strings do
+// not count; the scan is not a validator, tinygltf's parser reports what else is wrong.
+void checkJsonNesting(std::string_view json, const std::string& where) {
+    int depth = 0;
+    bool inString = false;
+    std::size_t line = 1;
+    std::size_t column = 1;
+    for (std::size_t i = 0; i < json.size(); ++i, ++column) {
+        const char c = json[i];
+        if (inString) {
+            if (c == '\\') {
+                ++i; // the escaped character cannot end the string
+                ++column;
+            } else if (c == '"') {
+                inString = false;
+            }
+        } else if (c == '"') {
+            inString = true;
+        } else if (c == '{' || c == '[') {
+            if (++depth > kMaxJsonNesting) {
+                throw ParseError(where + ":" + std::to_string(line) + ":" +
+                                 std::to_string(column) +
+                                 ": JSON objects and arrays nested deeper than the limit of " +
+                                 std::to_string(kMaxJsonNesting) + " levels");
+            }
+        } else if ((c == '}' || c == ']') && depth > 0) {
+            --depth;
+        } else if (c == '\n') {
+            ++line;
+            column = 0;
+        }
+    }
+}
+
+// The JSON of a .glb: its first chunk, when the container header and chunk header fit the file
+// (glTF 2.0, section 4.4); otherwise tinygltf reports what is wrong.
+std::string_view glbJson(const std::vector<unsigned char>& bytes) {
+    const auto word = [&bytes](std::size_t offset) {
+        return std::uint32_t(bytes[offset]) | std::uint32_t(bytes[offset + 1]) << 8 |
+               std::uint32_t(bytes[offset + 2]) << 16 | std::uint32_t(bytes[offset + 3]) << 24;
+    };
+    constexpr std::uint32_t kJsonChunk = 0x4E4F534A; // "JSON"
+    if (bytes.size() < 20 || std::memcmp(bytes.data(), "glTF", 4) != 0 ||
+        word(16) != kJsonChunk || word(12) > bytes.size() - 20) {
+        return {};
+    }
+    return {reinterpret_cast<const char*>(bytes.data()) + 20, word(12)};
+}
+
+std::vector<unsigned char> readBytes(const std::string& path, const std::string& what) {
+    requireRegularFile(path, what);
+    errno = 0;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        // tinygltf reports a missing file as a parse failure; say what really happened.
+        throw IoError(path + ": cannot open file (" +
+                      (errno != 0 ? std::strerror(errno) : "unknown reason") + ")");
+    }
+    std::vector<unsigned char> bytes{std::istreambuf_iterator<char>(in),
+                                     std::istreambuf_iterator<char>()};
+    if (in.bad()) {
+        throw IoError(path + ": cannot read " + what);
+    }
+    return bytes;
+}
+
+// tinygltf's own test opens the file, which blocks on a FIFO: ask the file system instead.
+bool fileExists(const std::string& path, void* /*userData*/) {
+    std::error_code error;
+    return std::filesystem::exists(path, error);
+}
+
+// tinygltf's file reader for buffers and images that the glTF names by URI, refusing FIFOs and
+// devices as readGltf refuses them for the glTF itself. The IoError passes through tinygltf.
+bool readReferencedFile(std::vector<unsigned char>* out, std::string* error,
+                        const std::string& path, void* userData) {
+    requireRegularFile(path, "glTF buffer");
+    return tinygltf::ReadWholeFile(out, error, path, userData);
+}
+
 } // namespace
 
 TriangleMesh readGltf(const std::string& path) {
-    {
-        // tinygltf reports a missing file as a parse failure; say what really happened.
-        std::ifstream probe(path, std::ios::binary);
-        if (!probe) {
-            throw IoError(path + ": cannot open file (" + std::strerror(errno) + ")");
-        }
+    const bool isBinary = hasBinaryExtension(path);
+    const std::vector<unsigned char> bytes = readBytes(path, isBinary ? "glTF binary" : "glTF file");
+    if (bytes.size() > std::numeric_limits<unsigned>::max()) {
+        throw ParseError(path + ": " + std::to_string(bytes.size()) +
+                         " bytes; tinygltf reads glTF files of at most 4 GiB");
+    }
+    if (isBinary) {
+        checkJsonNesting(glbJson(bytes), path + " (JSON chunk)");
+    } else {
+        checkJsonNesting({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, path);
     }
     tinygltf::TinyGLTF loader;
+    loader.SetFsCallbacks({&fileExists, &tinygltf::ExpandFilePath, &readReferencedFile,
+                           &tinygltf::WriteWholeFile, nullptr});
     tinygltf::Model model;
     std::string error;
     std::string warning;
-    const bool ok = hasBinaryExtension(path)
-                        ? loader.LoadBinaryFromFile(&model, &error, &warning, path)
-                        : loader.LoadASCIIFromFile(&model, &error, &warning, path);
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    bool ok = false;
+    try {
+        ok = isBinary ? loader.LoadBinaryFromMemory(&model, &error, &warning, bytes.data(),
+                                                    static_cast<unsigned>(bytes.size()), folder)
+                      : loader.LoadASCIIFromString(&model, &error, &warning,
+                                                   reinterpret_cast<const char*>(bytes.data()),
+                                                   static_cast<unsigned>(bytes.size()), folder);
+    } catch (const IoError& failure) {
+        throw IoError(path + ": " + failure.what());
+    }
     if (!ok) {
         while (!error.empty() && (error.back() == '\n' || error.back() == '\r')) {
             error.pop_back();

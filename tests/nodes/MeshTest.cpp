@@ -9,6 +9,8 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -125,7 +127,77 @@ TEST(Mesh, reportsAccessorsOutsideTheirBuffer) {
     mesh->fileName = writeFile("overrun.gltf", text);
     EXPECT_EQ(errorOf<ParseError>([&] { mesh->triangleMesh(); }),
               "Mesh: " + testPath("overrun.gltf") +
-                  ": accessor 1 (indices) reaches beyond its buffer view or buffer");
+                  ": accessor 1 (indices) reaches beyond its buffer view or buffer: 30 elements "
+                  "of 2 bytes, 2 apart, from byte 0 of buffer view 1, which holds 6 bytes");
+}
+
+TEST(Mesh, refusesAnAccessorBombBeforeAllocatingForIt) {
+    // 10^18 positions over the 36-byte view: allocating first would throw std::length_error (at
+    // 10^9 it allocated and filled 11 GB before this check).
+    std::string text = triangleGltf("4", "");
+    const std::string positions = R"("count": 3, "type": "VEC3")";
+    text.replace(text.find(positions), positions.size(),
+                 R"("count": 1000000000000000000, "type": "VEC3")");
+    const auto mesh = Mesh::create();
+    mesh->fileName = writeFile("bomb.gltf", text);
+    EXPECT_EQ(errorOf<ParseError>([&] { mesh->triangleMesh(); }),
+              "Mesh: " + testPath("bomb.gltf") +
+                  ": accessor 0 (POSITION) reaches beyond its buffer view or buffer: "
+                  "1000000000000000000 elements of 12 bytes, 12 apart, from byte 0 of buffer "
+                  "view 0, which holds 36 bytes");
+    // A view that lies outside its buffer.
+    text = triangleGltf("4", "");
+    const std::string view = R"("byteOffset": 36, "byteLength": 6)";
+    text.replace(text.find(view), view.size(), R"("byteOffset": 36, "byteLength": 600)");
+    mesh->fileName = writeFile("view.gltf", text);
+    EXPECT_EQ(errorOf<ParseError>([&] { mesh->triangleMesh(); }),
+              "Mesh: " + testPath("view.gltf") +
+                  ": accessor 1 (indices) reaches beyond its buffer view or buffer: buffer view "
+                  "1 (bytes 36 to 636) lies outside buffer 0 (44 bytes)");
+}
+
+TEST(Mesh, refusesJsonNestedDeeperThanTheLimitBeforeTinygltfSeesIt) {
+    // 100 000 levels overflowed the stack inside tinygltf; 256 are read.
+    const auto nested = [](int levels) {
+        std::string extras;
+        for (int i = 0; i < levels; ++i) {
+            extras += R"({"a":)";
+        }
+        extras += "1" + std::string(std::size_t(levels), '}');
+        return triangleGltf("4", R"(, "extras": )" + extras);
+    };
+    const auto mesh = Mesh::create();
+    mesh->fileName = writeFile("deep.gltf", nested(100000));
+    // Line 5 holds the node: after `  "nodes": [{"mesh": 0, "extras": ` (34 columns; the file's
+    // object, the array and the node are 3 levels) the 254th `{"a":` opens level 257.
+    EXPECT_EQ(errorOf<ParseError>([&] { mesh->triangleMesh(); }),
+              "Mesh: " + testPath("deep.gltf") +
+                  ":5:1300: JSON objects and arrays nested deeper than the limit of 256 levels");
+    mesh->fileName = writeFile("fits.gltf", nested(250));
+    EXPECT_EQ(mesh->triangleMesh()->positions.size(), 3u);
+    // Brackets in strings, escaped quotes included, do not count.
+    mesh->fileName = writeFile(
+        "strings.gltf", triangleGltf("4", R"(, "extras": {"s": "\"[[[[" , "t": ")" +
+                                              std::string(1000, '{') + R"("})"));
+    EXPECT_EQ(mesh->triangleMesh()->positions.size(), 3u);
+}
+
+TEST(Mesh, refusesABufferThatIsAFifo) {
+    const std::string fifo = testPath("buffer.bin");
+    std::filesystem::remove(fifo);
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    std::string text = triangleGltf("4", "");
+    text.replace(text.find(kBuffer), std::string(kBuffer).size(),
+                 std::filesystem::path(fifo).filename().string());
+    const auto mesh = Mesh::create();
+    mesh->fileName = writeFile("fifo.gltf", text);
+    EXPECT_EQ(errorOf<IoError>([&] { mesh->triangleMesh(); }),
+              "Mesh: " + testPath("fifo.gltf") + ": " + fifo +
+                  ": cannot read glTF buffer: it is a FIFO, not a regular file");
+    mesh->fileName = fifo;
+    EXPECT_EQ(errorOf<IoError>([&] { mesh->triangleMesh(); }),
+              "Mesh: " + fifo + ": cannot read glTF file: it is a FIFO, not a regular file");
+    std::filesystem::remove(fifo);
 }
 
 } // namespace
