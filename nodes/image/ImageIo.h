@@ -2,6 +2,7 @@
 
 #include "nodes/image/Image.h"
 
+#include <cstddef>
 #include <string>
 
 namespace texsplat::image {
@@ -34,9 +35,18 @@ ImageFormat supportedImageFormatOf(const std::string& path);
 /// disk, a build without OpenEXR).
 void writeImage(const Image& image, const std::string& path);
 
+/// @brief The most pixels readImage() decodes: 8192 × 8192. Decoding takes about 24 bytes a
+/// pixel (the file's samples and the float image), 1.5 GiB here, so `compare` of two such images
+/// stays near 3 GiB; a file whose header declares more (a 1 MB PNG may declare 16000 × 16000)
+/// is refused before anything is decoded.
+constexpr std::size_t kMaxReadPixels = std::size_t{1} << 26;
+
 /// @brief Reads the image at `path` (format from its extension): PNG is converted to linear
 /// premultiplied floats, OpenEXR is read as float32. Throws IoError("path: what") for a missing,
-/// unreadable or malformed file and DataError for an EXR without R, G, B channels.
+/// unreadable or malformed file, or one that is not a regular file (a FIFO, a device); DataError
+/// for an EXR without R, G, B channels, and for an image of more than kMaxReadPixels pixels
+/// ("big.png: the image is 16000 x 16000 pixels; texsplat reads images of at most 67108864
+/// pixels (8192 x 8192)").
 Image readImage(const std::string& path);
 
 } // namespace texsplat::image

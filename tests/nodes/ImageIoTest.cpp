@@ -10,7 +10,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <cstdint>
 #include <limits>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -232,6 +234,52 @@ TEST_F(ImageIoTest, readingMissingOrMalformedFilesIsIoError) {
     EXPECT_EQ(ioErrorMessage([&] { readImage(path("text.exr")); })
                   .rfind(path("text.exr") + ": not a readable OpenEXR file: ", 0),
               0u);
+}
+
+// A PNG signature and an IHDR chunk declaring `width` x `height` 8-bit RGBA: all a reader sees
+// before it decodes (stb does not check the CRC, left zero).
+std::string pngHeader(std::uint32_t width, std::uint32_t height) {
+    std::string bytes = "\x89PNG\r\n\x1a\n";
+    const auto bigEndian = [&bytes](std::uint32_t value) {
+        for (int shift = 24; shift >= 0; shift -= 8)
+            bytes += static_cast<char>((value >> shift) & 0xff);
+    };
+    bigEndian(13);
+    bytes += "IHDR";
+    bigEndian(width);
+    bigEndian(height);
+    bytes += std::string("\x08\x06\x00\x00\x00", 5); // 8 bits, RGBA, deflate, no filter, no interlace
+    bigEndian(0);
+    return bytes;
+}
+
+TEST_F(ImageIoTest, aHugeImageIsRefusedFromItsHeaderBeforeDecoding) {
+    // 16000 x 16000 took 9.6 GB and 31 s for `compare` of two 1 MB files.
+    std::ofstream(path("huge.png"), std::ios::binary) << pngHeader(16000, 16000);
+    try {
+        readImage(path("huge.png"));
+        FAIL() << "no error";
+    } catch (const texsplat::DataError& error) {
+        EXPECT_EQ(std::string(error.what()),
+                  path("huge.png") + ": the image is 16000 x 16000 pixels; texsplat reads images "
+                                     "of at most 67108864 pixels (8192 x 8192)");
+    }
+    // Within the limit the header passes and decoding reports the missing data.
+    std::ofstream(path("wide.png"), std::ios::binary) << pngHeader(65536, 1024);
+    EXPECT_EQ(ioErrorMessage([&] { readImage(path("wide.png")); }).rfind(
+                  path("wide.png") + ": cannot decode the PNG file (", 0),
+              0u);
+}
+
+TEST_F(ImageIoTest, aFifoOrDeviceIsRefusedBeforeOpening) {
+    ASSERT_EQ(mkfifo(path("pipe.png").c_str(), 0600), 0);
+    EXPECT_EQ(ioErrorMessage([&] { readImage(path("pipe.png")); }),
+              path("pipe.png") + ": cannot read image file: it is a FIFO, not a regular file");
+    if (!texsplat::image::isExrSupported())
+        return;
+    ASSERT_EQ(mkfifo(path("pipe.exr").c_str(), 0600), 0);
+    EXPECT_EQ(ioErrorMessage([&] { readImage(path("pipe.exr")); }),
+              path("pipe.exr") + ": cannot read image file: it is a FIFO, not a regular file");
 }
 
 TEST_F(ImageIoTest, truncatedFilesAreIoErrors) {

@@ -1,6 +1,8 @@
 #include "nodes/image/detail/ExrCodec.h"
 
+#include "nodes/image/detail/FileBytes.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/InputFile.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -62,6 +64,7 @@ void writeExr(const Image& image, std::ofstream& stream, const std::string& path
 }
 
 Image readExr(const std::string& path) {
+    requireRegularFile(path, "image file");
     std::ifstream stream(path, std::ios::binary);
     if (!stream)
         throw IoError(path + ": cannot open: " + std::strerror(errno));
@@ -76,12 +79,10 @@ Image readExr(const std::string& path) {
         const Imath::Box2i window = file.header().dataWindow();
         const long long width = static_cast<long long>(window.max.x) - window.min.x + 1;
         const long long height = static_cast<long long>(window.max.y) - window.min.y + 1;
-        const auto maxPixels = static_cast<long long>(Image::kMaxPixels);
-        if (width < 1 || height < 1 || width > maxPixels || height > maxPixels ||
-            width * height > maxPixels)
+        if (width < 1 || height < 1)
             throw DataError(path + ": OpenEXR data window " + std::to_string(width) + "x" +
-                            std::to_string(height) + " is empty or larger than " +
-                            std::to_string(Image::kMaxPixels) + " pixels");
+                            std::to_string(height) + " is empty");
+        checkDecodedSize(path, width, height);
         Image image(static_cast<int>(width), static_cast<int>(height));
         Imf::FrameBuffer frameBuffer;
         float* pixels = &image.data()->r;

@@ -1,6 +1,8 @@
 #include "nodes/image/detail/FileBytes.h"
 
+#include "nodes/image/ImageIo.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/InputFile.h"
 
 #include <cerrno>
 #include <cstring>
@@ -10,6 +12,7 @@
 namespace texsplat::image::detail {
 
 std::vector<char> readFileBytes(const std::string& path) {
+    requireRegularFile(path, "image file");
     std::ifstream stream(path, std::ios::binary);
     if (!stream)
         throw IoError(path + ": cannot open: " + std::strerror(errno));
@@ -18,6 +21,16 @@ std::vector<char> readFileBytes(const std::string& path) {
     if (stream.bad())
         throw IoError(path + ": cannot read: " + std::strerror(errno));
     return bytes;
+}
+
+void checkDecodedSize(const std::string& path, long long width, long long height) {
+    // Both sides come from a file's header: divide rather than multiply, which could overflow.
+    constexpr auto kLimit = static_cast<long long>(kMaxReadPixels);
+    if (width <= kLimit && height <= kLimit && (height == 0 || width <= kLimit / height))
+        return;
+    throw DataError(path + ": the image is " + std::to_string(width) + " x " +
+                    std::to_string(height) + " pixels; texsplat reads images of at most " +
+                    std::to_string(kMaxReadPixels) + " pixels (8192 x 8192)");
 }
 
 } // namespace texsplat::image::detail

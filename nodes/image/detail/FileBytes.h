@@ -6,7 +6,11 @@
 namespace texsplat::image::detail {
 
 /// @brief The whole contents of a file. Throws IoError("path: cannot open: <reason>") when it
-/// cannot be opened or read.
+/// cannot be opened or read, and before opening it when it is not a regular file.
 std::vector<char> readFileBytes(const std::string& path);
+
+/// @brief Checks the size an image file's header declares before it is decoded: throws
+/// DataError when it exceeds kMaxReadPixels (see readImage()).
+void checkDecodedSize(const std::string& path, long long width, long long height);
 
 } // namespace texsplat::image::detail

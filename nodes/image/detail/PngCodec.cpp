@@ -74,11 +74,12 @@ Image readPng(const std::string& path) {
         throw IoError(path + ": PNG file too large to decode (over 2 GiB)");
     const auto* data = reinterpret_cast<const stbi_uc*>(file.data());
     const int length = static_cast<int>(file.size());
-    if (!stbi_info_from_memory(data, length, nullptr, nullptr, nullptr))
-        throw IoError(path + ": not a readable PNG file (" + stbi_failure_reason() + ")");
     int width = 0;
     int height = 0;
     int channels = 0;
+    if (!stbi_info_from_memory(data, length, &width, &height, &channels))
+        throw IoError(path + ": not a readable PNG file (" + stbi_failure_reason() + ")");
+    checkDecodedSize(path, width, height);
     // The 16-bit loader also reads 8-bit files, scaled exactly (v · 257), so one path serves both.
     const std::unique_ptr<stbi_us, StbFree> samples(
         stbi_load_16_from_memory(data, length, &width, &height, &channels, 4));
