@@ -4,12 +4,32 @@
 #include "nodes/kernel/KernelOptimizer.h"
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/render/SplatFootprint.h"
+#include "scenegraph/Error.h"
+
+#include <string>
 
 namespace texsplat::nodes {
 
 GaussianSplat::GaussianSplat() {
     addField(radialSamples, "radialSamples", 3);
     addField(azimuthSamples, "azimuthSamples", 7);
+}
+
+namespace {
+
+void checkRange(const sg::SFInt32& field, int low, int high) {
+    if (field.value() < low || field.value() > high) {
+        throw DataError(field.name() + " must be " + std::to_string(low) + " to " +
+                        std::to_string(high) + ", got " + field.valueText());
+    }
+}
+
+} // namespace
+
+void GaussianSplat::checkFields() const {
+    ScalarSplat::checkFields();
+    checkRange(radialSamples, kMinRadialSamples, kMaxRadialSamples);
+    checkRange(azimuthSamples, kMinAzimuthSamples, kMaxAzimuthSamples);
 }
 
 render::SplatFootprint GaussianSplat::makeFootprint() const {
