@@ -2,6 +2,7 @@
 
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
+#include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
 
@@ -12,7 +13,6 @@
 #include <fstream>
 #include <cstdint>
 #include <limits>
-#include <sys/stat.h>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -272,12 +272,12 @@ TEST_F(ImageIoTest, aHugeImageIsRefusedFromItsHeaderBeforeDecoding) {
 }
 
 TEST_F(ImageIoTest, aFifoOrDeviceIsRefusedBeforeOpening) {
-    ASSERT_EQ(mkfifo(path("pipe.png").c_str(), 0600), 0);
+    const texsplat::test::TestFifo png(path("pipe.png"));
     EXPECT_EQ(ioErrorMessage([&] { readImage(path("pipe.png")); }),
               path("pipe.png") + ": cannot read image file: it is a FIFO, not a regular file");
     if (!texsplat::image::isExrSupported())
         return;
-    ASSERT_EQ(mkfifo(path("pipe.exr").c_str(), 0600), 0);
+    const texsplat::test::TestFifo exr(path("pipe.exr"));
     EXPECT_EQ(ioErrorMessage([&] { readImage(path("pipe.exr")); }),
               path("pipe.exr") + ": cannot read image file: it is a FIFO, not a regular file");
 }

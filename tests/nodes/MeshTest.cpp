@@ -6,10 +6,9 @@
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/io/SceneReader.h"
+#include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
-
-#include <sys/stat.h>
 
 #include <filesystem>
 #include <fstream>
@@ -183,9 +182,8 @@ TEST(Mesh, refusesJsonNestedDeeperThanTheLimitBeforeTinygltfSeesIt) {
 }
 
 TEST(Mesh, refusesABufferThatIsAFifo) {
-    const std::string fifo = testPath("buffer.bin");
-    std::filesystem::remove(fifo);
-    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const texsplat::test::TestFifo pipe(testPath("buffer.bin"));
+    const std::string& fifo = pipe.path();
     std::string text = triangleGltf("4", "");
     text.replace(text.find(kBuffer), std::string(kBuffer).size(),
                  std::filesystem::path(fifo).filename().string());
@@ -197,7 +195,6 @@ TEST(Mesh, refusesABufferThatIsAFifo) {
     mesh->fileName = fifo;
     EXPECT_EQ(errorOf<IoError>([&] { mesh->triangleMesh(); }),
               "Mesh: " + fifo + ": cannot read glTF file: it is a FIFO, not a regular file");
-    std::filesystem::remove(fifo);
 }
 
 } // namespace

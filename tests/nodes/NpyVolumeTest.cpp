@@ -4,10 +4,9 @@
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/RawVolume.h"
 #include "scenegraph/Error.h"
+#include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
-
-#include <sys/stat.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -142,9 +141,8 @@ TEST(NpyVolume, aFileThatIsNotNpyGetsTheFormatNamed) {
 }
 
 TEST(NpyVolume, refusesAFifoBeforeOpeningIt) {
-    const std::string fifo = testPath("data.npy");
-    std::filesystem::remove(fifo);
-    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const texsplat::test::TestFifo pipe(testPath("data.npy"));
+    const std::string& fifo = pipe.path();
     try {
         readNpyVolume(fifo);
         ADD_FAILURE() << "no error";
@@ -152,7 +150,6 @@ TEST(NpyVolume, refusesAFifoBeforeOpeningIt) {
         EXPECT_EQ(std::string(error.what()),
                   fifo + ": cannot read file: it is a FIFO, not a regular file");
     }
-    std::filesystem::remove(fifo);
 }
 
 } // namespace

@@ -3,10 +3,9 @@
 #include "nodes/volume/DenseGrid.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
-
-#include <sys/stat.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -205,9 +204,8 @@ TEST(RawVolume, reportsMissingFolderTruncatedAndOversizedFiles) {
 TEST(RawVolume, refusesFifosAndDevicesBeforeOpeningThem) {
     EXPECT_EQ(errorOf<IoError>("/dev/zero"),
               "/dev/zero: cannot read file: it is a character device, not a regular file");
-    const std::string fifo = testPath("data.raw");
-    std::filesystem::remove(fifo);
-    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const texsplat::test::TestFifo pipe(testPath("data.raw"));
+    const std::string& fifo = pipe.path();
     EXPECT_EQ(errorOf<IoError>(fifo), fifo + ": cannot read file: it is a FIFO, not a regular file");
     RawHeader layout;
     layout.dims = {4, 4, 4};
@@ -218,7 +216,6 @@ TEST(RawVolume, refusesFifosAndDevicesBeforeOpeningThem) {
         EXPECT_EQ(std::string(error.what()),
                   fifo + ": cannot read file: it is a FIFO, not a regular file");
     }
-    std::filesystem::remove(fifo);
 }
 
 TEST(RawVolume, reportsBadHeadersAndZeroSizeGrids) {

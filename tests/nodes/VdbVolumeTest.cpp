@@ -3,6 +3,7 @@
 #include "nodes/volume/SparseGrid.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +11,6 @@
 #include "nodes/volume/detail/SourceSupport.h"
 
 #include <openvdb/openvdb.h>
-#include <sys/stat.h>
 
 #include <cmath>
 #include <cstdint>
@@ -266,12 +266,10 @@ TEST(VdbVolume, wrapsWhatOpenVdbThrowsForATruncatedFileWithTheFileName) {
 }
 
 TEST(VdbVolume, refusesAFifoBeforeOpeningIt) {
-    const std::string fifo = testPath("grids.vdb");
-    std::filesystem::remove(fifo);
-    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const texsplat::test::TestFifo pipe(testPath("grids.vdb"));
+    const std::string& fifo = pipe.path();
     EXPECT_EQ(errorOf<IoError>([&] { listVdbGrids(fifo); }),
               fifo + ": cannot read file: it is a FIFO, not a regular file");
-    std::filesystem::remove(fifo);
 }
 
 } // namespace

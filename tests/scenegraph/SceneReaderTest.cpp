@@ -6,10 +6,9 @@
 #include "scenegraph/Switch.h"
 #include "scenegraph/io/UnknownNode.h"
 #include "scenegraph/io/WriteAction.h"
+#include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
-
-#include <sys/stat.h>
 
 #include <clocale>
 #include <cstdint>
@@ -313,10 +312,9 @@ TEST_F(SceneReaderTest, refusesFilesThatAreNotRegularBeforeOpeningThem) {
     // Reading a device never ends; opening a FIFO blocks until something writes to it.
     EXPECT_EQ(fileError("/dev/zero"),
               "/dev/zero: cannot read scene file: it is a character device, not a regular file");
-    const std::string fifo = scratchPath("scene.iv");
-    ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+    const texsplat::test::TestFifo pipe(scratchPath("scene.iv"));
+    const std::string& fifo = pipe.path();
     EXPECT_EQ(fileError(fifo), fifo + ": cannot read scene file: it is a FIFO, not a regular file");
-    std::filesystem::remove(fifo);
 }
 
 TEST_F(SceneReaderTest, checksTheHeaderBeforeReadingAHugeFile) {
