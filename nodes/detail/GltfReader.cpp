@@ -419,7 +419,8 @@ bool readReferencedFile(std::vector<unsigned char>* out, std::string* error,
 
 TriangleMesh readGltf(const std::string& path) {
     const bool isBinary = hasBinaryExtension(path);
-    const std::vector<unsigned char> bytes = readBytes(path, isBinary ? "glTF binary" : "glTF file");
+    const std::vector<unsigned char> bytes =
+        readBytes(path, isBinary ? "glTF binary" : "glTF file");
     if (bytes.size() > std::numeric_limits<unsigned>::max()) {
         throw ParseError(path + ": " + std::to_string(bytes.size()) +
                          " bytes; tinygltf reads glTF files of at most 4 GiB");

@@ -166,9 +166,9 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
     const std::string where = path + ": grid '" + gridName + "'";
     // OpenVDB reads and decompresses the whole grid in this one call, often the longest step.
     reportProgress(progress, path, 0.0, "reading grid '" + gridName + "'");
-    const openvdb::GridBase::Ptr base =
-        callOpenVdb([&] { return file->readGrid(gridName); },
-                    [&](const std::string& reason) { return where + " cannot be read (" + reason + ")"; });
+    const openvdb::GridBase::Ptr base = callOpenVdb(
+        [&] { return file->readGrid(gridName); },
+        [&](const std::string& reason) { return where + " cannot be read (" + reason + ")"; });
     if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
         return ScalarGridPtr(convert(*scalar, path, gridName, progress));
     if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))

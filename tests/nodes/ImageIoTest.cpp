@@ -248,7 +248,8 @@ std::string pngHeader(std::uint32_t width, std::uint32_t height) {
     bytes += "IHDR";
     bigEndian(width);
     bigEndian(height);
-    bytes += std::string("\x08\x06\x00\x00\x00", 5); // 8 bits, RGBA, deflate, no filter, no interlace
+    // 8 bits, RGBA, deflate, no filter, no interlace
+    bytes += std::string("\x08\x06\x00\x00\x00", 5);
     bigEndian(0);
     return bytes;
 }

@@ -206,7 +206,8 @@ TEST(RawVolume, refusesFifosAndDevicesBeforeOpeningThem) {
               "/dev/zero: cannot read file: it is a character device, not a regular file");
     const texsplat::test::TestFifo pipe(testPath("data.raw"));
     const std::string& fifo = pipe.path();
-    EXPECT_EQ(errorOf<IoError>(fifo), fifo + ": cannot read file: it is a FIFO, not a regular file");
+    EXPECT_EQ(errorOf<IoError>(fifo),
+              fifo + ": cannot read file: it is a FIFO, not a regular file");
     RawHeader layout;
     layout.dims = {4, 4, 4};
     try {
