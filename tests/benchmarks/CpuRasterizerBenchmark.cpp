@@ -1,0 +1,101 @@
+// The CPU backend's inner loop: render::cpu::compositeSplats() (SIMD through Highway, the
+// instruction set picked at run time) against its baseline, the plain scalar loop that
+// composites the same set-up splats the same way (tests/nodes/SplatSpansReference.h; the
+// nodes tests hold the two to the same image). The splats are those `texsplat bench` draws with
+// the paper's texture splats in a 512² image: blob64 seen orthographically (one affine map) and
+// in perspective (a homography per splat), squares about 8 pixels from the centre; and blob128
+// in perspective, about 4 pixels, where a splat's rows are short for the SIMD vectors. Both
+// composite all rows on one thread into the same planes again and again (the work per pixel
+// does not depend on what the planes hold); fragments are the pixels inside a square, counted
+// once by the scalar loop.
+#include "nodes/render/cpu/SplatSpans.h"
+
+#include "tests/nodes/SplatSpansReference.h"
+
+#include "BenchmarkBaseline.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <utility>
+
+namespace {
+
+using texsplat::render::cpu::ColorPlanes;
+using texsplat::test::CompositeWorkload;
+using texsplat::test::WorkloadCamera;
+
+constexpr int kImageSize = 512;
+
+// A workload with its fragment count, made once per dataset and camera for all the benchmarks.
+struct TimedWorkload {
+    CompositeWorkload workload;
+    std::uint64_t fragments = 0;
+};
+
+const TimedWorkload& timedWorkload(const std::string& dataset, WorkloadCamera camera) {
+    static std::map<std::pair<std::string, WorkloadCamera>, TimedWorkload> workloads;
+    auto found = workloads.find({dataset, camera});
+    if (found == workloads.end()) {
+        TimedWorkload timed;
+        timed.workload = texsplat::test::compositeWorkload(dataset, "texture", camera, kImageSize);
+        ColorPlanes planes(kImageSize, kImageSize, glm::vec4(0.0f), false);
+        timed.fragments = texsplat::test::compositeSplatsScalar(
+            timed.workload.splats.data(), timed.workload.splats.size(), *timed.workload.sampler,
+            planes, 0, kImageSize);
+        found = workloads.emplace(std::make_pair(dataset, camera), std::move(timed)).first;
+    }
+    return found->second;
+}
+
+// Times `composite` (`path` names it in the label) over the workload of the benchmark's
+// arguments: the camera (0: orthographic, 1: perspective) and the blob's resolution; reports
+// fragments per second.
+template <typename Composite>
+void timeComposite(benchmark::State& state, const Composite& composite, const std::string& path) {
+    const WorkloadCamera camera =
+        state.range(0) == 0 ? WorkloadCamera::Orthographic : WorkloadCamera::Perspective;
+    const std::string dataset = "blob" + std::to_string(state.range(1));
+    const TimedWorkload& timed = timedWorkload(dataset, camera);
+    const CompositeWorkload& workload = timed.workload;
+    ColorPlanes planes(workload.width, workload.height, glm::vec4(0.0f), false);
+    for (auto _ : state) {
+        composite(workload.splats.data(), workload.splats.size(), *workload.sampler, planes, 0,
+                  workload.height);
+        benchmark::DoNotOptimize(planes.alpha(0));
+        benchmark::ClobberMemory();
+    }
+    const auto fragments = static_cast<double>(timed.fragments);
+    state.SetLabel(dataset +
+                   (camera == WorkloadCamera::Orthographic ? " orthographic, " : " perspective, ") +
+                   path);
+    state.counters["fragments/s"] =
+        benchmark::Counter(fragments, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["splats"] = static_cast<double>(workload.splats.size());
+    state.counters["fragments/splat"] = fragments / static_cast<double>(workload.splats.size());
+}
+
+void CompositeSplatsSimd(benchmark::State& state) {
+    timeComposite(state, texsplat::render::cpu::compositeSplats,
+                  texsplat::render::cpu::compositeTarget());
+}
+BENCHMARK(CompositeSplatsSimd)
+    ->Args({0, 64})
+    ->Args({1, 64})
+    ->Args({1, 128})
+    ->Unit(benchmark::kMillisecond);
+
+// Baseline: the scalar reference, one pixel at a time, std::expm1 for every fragment.
+void CompositeSplatsBaselineScalar(benchmark::State& state) {
+    timeComposite(state, texsplat::test::compositeSplatsScalar, "scalar");
+}
+BENCHMARK(CompositeSplatsBaselineScalar)
+    ->Args({0, 64})
+    ->Args({1, 64})
+    ->Args({1, 128})
+    ->Unit(benchmark::kMillisecond);
+TEXSPLAT_BENCHMARK_BASELINE(CompositeSplatsSimd, CompositeSplatsBaselineScalar);
+
+} // namespace

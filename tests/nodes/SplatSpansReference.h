@@ -1,0 +1,192 @@
+#pragma once
+
+// The scalar reference of render::cpu::compositeSplats() (SplatSpans.h) and the splats it is
+// checked and timed on: the unit test (SplatSpansTest.cpp) holds the SIMD path to it, the
+// micro-benchmark (tests/benchmarks/CpuRasterizerBenchmark.cpp) times the SIMD path against it.
+
+#include "nodes/NodeTypes.h"
+#include "nodes/OrthographicCamera.h"
+#include "nodes/VolumeData.h"
+#include "nodes/bench/BenchDataset.h"
+#include "nodes/bench/BenchMethod.h"
+#include "nodes/render/CameraView.h"
+#include "nodes/render/FrameAction.h"
+#include "nodes/render/cpu/ColorPlanes.h"
+#include "nodes/render/cpu/SplatRaster.h"
+#include "octree/Splat.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <vector>
+
+namespace texsplat::test {
+
+/// @brief FootprintSampler's lookup at square coordinates (a, b), before the length scale, one
+/// pixel at a time: the radial profile at a² + b² (linear between samples) or the padded
+/// texture's bilinear lookup, with the clamps compositeSplats() applies.
+inline float sampleFootprint(const render::cpu::FootprintSampler& sampler, float a, float b) {
+    const float* values = sampler.values.data();
+    if (sampler.isRadial) {
+        constexpr float kSamples =
+            static_cast<float>(render::cpu::FootprintSampler::kProfileSamples);
+        const float position = std::min((a * a + b * b) * (0.5f * kSamples), kSamples);
+        const float floor = std::floor(position);
+        const auto index = static_cast<std::size_t>(floor);
+        return (position - floor) * (values[index + 1] - values[index]) + values[index];
+    }
+    const float half = 0.5f * static_cast<float>(sampler.resolution);
+    const float high = static_cast<float>(sampler.resolution) + 0.5f;
+    const float s = std::clamp(a * half + half + 0.5f, 0.0f, high);
+    const float t = std::clamp(b * half + half + 0.5f, 0.0f, high);
+    const float s0 = std::floor(s);
+    const float t0 = std::floor(t);
+    const float fs = s - s0;
+    const float ft = t - t0;
+    const std::size_t stride = static_cast<std::size_t>(sampler.stride);
+    const std::size_t index = static_cast<std::size_t>(t0) * stride + static_cast<std::size_t>(s0);
+    const float bottom = fs * (values[index + 1] - values[index]) + values[index];
+    const float top =
+        fs * (values[index + stride + 1] - values[index + stride]) + values[index + stride];
+    return ft * (top - bottom) + bottom;
+}
+
+/// @brief compositeSplats() as a plain scalar loop over the pixels of each splat's box: the same
+/// map from a pixel to the square (1/w′ by division), the same depth and near/far tests, the same
+/// footprint lookup (sampleFootprint()), and the emission-absorption of the definition rather
+/// than its fast forms: α = 1 − e^(−τf) by std::expm1 at every optical depth, colour C·α/τ
+/// (C·f for τ ≤ 1e-30), dst = min(src + (1 − α)·dst, FLT_MAX). Returns the fragments drawn:
+/// pixels inside a square (and passing the depth tests), summed over the splats.
+inline std::uint64_t compositeSplatsScalar(const render::cpu::SplatRaster* splats,
+                                           std::size_t count,
+                                           const render::cpu::FootprintSampler& sampler,
+                                           render::cpu::ColorPlanes& planes, int rowBegin,
+                                           int rowEnd) {
+    using render::cpu::SplatRaster;
+    std::uint64_t fragments = 0;
+    const bool depthTest = planes.hasDepth();
+    for (std::size_t i = 0; i < count; ++i) {
+        const SplatRaster& splat = splats[i];
+        const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
+        const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
+        const float tau = splat.extinction;
+        const float* q = splat.square;
+        for (int row = std::max(splat.rowBegin, rowBegin); row < std::min(splat.rowEnd, rowEnd);
+             ++row) {
+            const auto y = static_cast<float>(row);
+            for (int column = splat.columnBegin; column < splat.columnEnd; ++column) {
+                const auto x = static_cast<float>(column);
+                float a = q[0] * x + (q[1] * y + q[2]);
+                float b = q[3] * x + (q[4] * y + q[5]);
+                if (projective) {
+                    const float w = q[6] * x + (q[7] * y + q[8]);
+                    if (!(w > 0.0f)) {
+                        continue;
+                    }
+                    a /= w;
+                    b /= w;
+                }
+                if (!(std::abs(a) <= 1.0f && std::abs(b) <= 1.0f)) {
+                    continue;
+                }
+                const float z = splat.depth[0] * x + (splat.depth[1] * y + splat.depth[2]);
+                if (clipped && !(z >= -1.0f && z <= 1.0f)) {
+                    continue;
+                }
+                if (depthTest && !(0.5f * z + 0.5f < planes.depth(row)[column])) {
+                    continue;
+                }
+                ++fragments;
+                const float f = std::max(sampleFootprint(sampler, a, b), 0.0f) * splat.lengthScale;
+                const float alpha = -std::expm1(-tau * f);
+                const float weight = tau > 1e-30f ? alpha / tau : f;
+                const float transmitted = 1.0f - alpha;
+                float* destinations[4] = {planes.red(row), planes.green(row), planes.blue(row),
+                                          planes.alpha(row)};
+                const float sources[4] = {std::min(splat.color[0] * weight, FLT_MAX),
+                                          std::min(splat.color[1] * weight, FLT_MAX),
+                                          std::min(splat.color[2] * weight, FLT_MAX), alpha};
+                for (int channel = 0; channel < 4; ++channel) {
+                    float& destination = destinations[channel][column];
+                    destination = std::min(sources[channel] + transmitted * destination, FLT_MAX);
+                }
+            }
+        }
+    }
+    return fragments;
+}
+
+/// @brief Where the camera of a CompositeWorkload looks from.
+enum class WorkloadCamera {
+    Orthographic, ///< `texsplat bench`'s direction, orthographic: one affine map for all splats
+    Perspective,  ///< `texsplat bench`'s perspective camera: a homography per splat
+    Inside, ///< that camera moved to the volume's centre, its near plane a tenth of the volume's
+            ///< size away: splats behind the eye and across the near plane, clipped per pixel
+};
+
+/// @brief The splats of one `texsplat bench` frame set up for compositeSplats(), in order.
+struct CompositeWorkload {
+    std::vector<render::cpu::SplatRaster> splats; ///< back to front, those covering a pixel
+    std::shared_ptr<const render::cpu::FootprintSampler> sampler; ///< the batch's footprint
+    int width = 0;                                                ///< image columns
+    int height = 0;                                               ///< image rows
+};
+
+/// @brief `splats` set up by `setup`, in order. SplatSetup is changing from one splat a call
+/// (operator()) to arrays of them (setUp()); this takes either, so that the reference builds on
+/// both sides of that change. Keep only the setUp() branch once it has landed.
+template <typename Setup>
+std::vector<render::cpu::SplatRaster> setUpSplats(const Setup& setup,
+                                                  const std::vector<octree::Splat>& splats) {
+    std::vector<render::cpu::SplatRaster> rasters(splats.size());
+    if constexpr (std::is_invocable_v<const Setup&, const octree::Splat&>) {
+        std::transform(splats.begin(), splats.end(), rasters.begin(), setup);
+    } else {
+        setup.setUp(splats.data(), splats.size(), rasters.data());
+    }
+    return rasters;
+}
+
+/// @brief The splats `texsplat bench` draws for `dataset` ("blob64") with `method` ("texture",
+/// "polygon"; full resolution) in a `size` x `size` image, through `camera`, collected by
+/// FrameAction and set up by SplatSetup as CpuRenderer sets them up.
+inline CompositeWorkload compositeWorkload(const std::string& dataset, const std::string& method,
+                                           WorkloadCamera camera, int size) {
+    nodes::registerNodeTypes();
+    const bench::BenchDataset source = bench::BenchDataset::fromName(dataset);
+    const sg::Separator::Ptr root =
+        source.scene(bench::BenchMethod::fromName(method).makeNode(0), 1.0f);
+    const auto& volume = static_cast<const nodes::VolumeData&>(*root->child(2));
+    if (camera == WorkloadCamera::Orthographic) {
+        nodes::OrthographicCamera::Ptr orthographic = nodes::OrthographicCamera::create();
+        orthographic->orientation.setValue(render::rotationLookingAlong(source.viewDirection()));
+        orthographic->viewAll(volume.bounds(), 1.0f);
+        root->replaceChild(0, orthographic);
+    } else if (camera == WorkloadCamera::Inside) {
+        auto& perspective = static_cast<nodes::Camera&>(*root->child(0));
+        perspective.position.setValue(volume.bounds().center());
+        perspective.nearDistance.setValue(0.1f * glm::length(volume.bounds().size()));
+    }
+    render::FrameAction action(size, size);
+    const render::FrameSplats& batch = action.collect(*root).splats.front();
+    const render::cpu::SplatSetup setup(batch.view, static_cast<float>(batch.footprint->extent),
+                                        size, size);
+    CompositeWorkload workload;
+    workload.sampler = std::make_shared<const render::cpu::FootprintSampler>(*batch.footprint);
+    workload.width = size;
+    workload.height = size;
+    for (const render::cpu::SplatRaster& raster : setUpSplats(setup, batch.splats->splats())) {
+        if (!raster.isEmpty()) {
+            workload.splats.push_back(raster);
+        }
+    }
+    return workload;
+}
+
+} // namespace texsplat::test
