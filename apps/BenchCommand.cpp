@@ -9,7 +9,9 @@
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
+#ifdef TEXSPLAT_WITH_GL
 #include "scenegraph/gl/EglContext.h"
+#endif
 
 #include <CLI/CLI.hpp>
 
@@ -90,12 +92,15 @@ std::vector<std::string> splitList(const std::string& text) {
 }
 
 // The devices of the run, for the header line and the plot: the GL context, the CPU backend.
-std::string deviceSummary(const bench::BenchOptions& options, const gl::EglContext* context) {
+std::string deviceSummary(const bench::BenchOptions& options,
+                          [[maybe_unused]] const gl::EglContext* context) {
     std::string text;
     for (const render::Backend backend : options.backends) {
         text += text.empty() ? "" : "; ";
         if (backend == render::Backend::Gl) {
+#ifdef TEXSPLAT_WITH_GL
             text += "GL " + context->info().summary() + " (" + context->info().platform + ")";
+#endif
         } else {
             text += render::cpu::CpuRenderer(options.cpuThreads).description();
         }
@@ -127,7 +132,7 @@ void runBench(const BenchArguments& arguments) {
     }
 
     // Each backend asked for once, in the order given; auto resolves as `render` does.
-    std::unique_ptr<gl::EglContext> context;
+    std::shared_ptr<gl::EglContext> context;
     options.backends.clear();
     for (const std::string& name : splitList(arguments.backends)) {
         render::BackendChoice choice =
@@ -138,7 +143,7 @@ void runBench(const BenchArguments& arguments) {
         }
         options.backends.push_back(choice.backend);
         if (choice.context && !context) {
-            context = std::move(choice.context);
+            context = choice.context;
         }
     }
     if (options.backends.empty()) {

@@ -5,15 +5,18 @@
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/RayCastImage.h"
-#include "nodes/render/RenderedImage.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/RayCastAction.h"
-#include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/engines/TimeInputs.h"
-#include "scenegraph/gl/EglContext.h"
 #include "scenegraph/sensors/SensorQueue.h"
 #include "scenegraph/sensors/SimulatedClock.h"
+
+#ifdef TEXSPLAT_WITH_GL
+#include "nodes/render/RenderedImage.h"
+#include "scenegraph/actions/RenderAction.h"
+#include "scenegraph/gl/EglContext.h"
+#endif
 
 #include <CLI/CLI.hpp>
 
@@ -429,7 +432,8 @@ void runRender(const RenderArguments& arguments) {
         clock.reportWritten(frame);
     };
     int frame = 0;
-    bool clockAtFrame = false; // the CPU loop moved the clock to `frame` before handing over
+    // The CPU loop moved the clock to `frame` before handing over to GL.
+    [[maybe_unused]] bool clockAtFrame = false;
     std::optional<render::cpu::CpuRenderer> cpu;
     if (backend.backend == render::Backend::Cpu) {
         cpu.emplace(arguments.threads);
@@ -453,6 +457,7 @@ void runRender(const RenderArguments& arguments) {
             writeFrame(image, frame);
         }
     }
+#ifdef TEXSPLAT_WITH_GL
     if (backend.backend == render::Backend::Gl) {
         sg::RenderAction action(size.x, size.y);
         action.setBackground(background);
@@ -468,13 +473,16 @@ void runRender(const RenderArguments& arguments) {
             writeFrame(image, frame);
         }
     }
+#endif
     if (arguments.timeReport) {
         BackendReport report{cpu ? cpu->description() : "", backend.reason,
                              backend.contextSeconds};
+#ifdef TEXSPLAT_WITH_GL
         if (!cpu) {
             const gl::ContextInfo& info = backend.context->info();
             report.name = "GL (" + info.platform + ": " + info.summary() + ")";
         }
+#endif
         printTimes(total, setup, report, write, clock, animation);
     }
 }

@@ -7,8 +7,10 @@ find_package(glm REQUIRED)
 # AVX-512 where present), oneTBB for its threads (OpenVDB already depends on it).
 find_package(hwy REQUIRED)
 find_package(TBB REQUIRED)
-pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET GLOBAL epoxy)
-pkg_check_modules(egl REQUIRED IMPORTED_TARGET GLOBAL egl)
+if(TEXSPLAT_WITH_GL)
+    pkg_check_modules(epoxy REQUIRED IMPORTED_TARGET GLOBAL epoxy)
+    pkg_check_modules(egl REQUIRED IMPORTED_TARGET GLOBAL egl)
+endif()
 
 if(TEXSPLAT_WITH_OPENVDB)
     # Debian's OpenVDB 10 ships its Find module, not a config package; it also needs Boost

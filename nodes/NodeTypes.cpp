@@ -20,8 +20,10 @@
 #include "nodes/VolumeData.h"
 #include "nodes/render/FrameMethods.h"
 #include "nodes/render/RayCastMethods.h"
-#include "nodes/render/RenderMethods.h"
 #include "scenegraph/NodeRegistry.h"
+#ifdef TEXSPLAT_WITH_GL
+#include "nodes/render/RenderMethods.h"
+#endif
 
 namespace texsplat::nodes {
 
@@ -48,7 +50,9 @@ void registerNodeTypes() {
     registry.add<VectorSplat>();
     registry.add<CombinedSplat>();
     // What RenderAction does with these types; a scene that can be read can also be drawn.
+#ifdef TEXSPLAT_WITH_GL
     render::registerRenderMethods();
+#endif
     render::registerRayCastMethods();
     render::registerFrameMethods();
 }

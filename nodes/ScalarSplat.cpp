@@ -9,7 +9,6 @@
 #include "nodes/render/Frame.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/KernelVolumeMedium.h"
-#include "nodes/render/SplatBatch.h"
 #include "nodes/render/SplatView.h"
 #include "nodes/render/detail/ClassificationCache.h"
 #include "octree/Cut.h"
@@ -22,8 +21,12 @@
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/ModelMatrixElement.h"
 #include "scenegraph/actions/RayCastAction.h"
+
+#ifdef TEXSPLAT_WITH_GL
+#include "nodes/render/SplatBatch.h"
 #include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/gl/Context.h"
+#endif
 
 #include <chrono>
 #include <cmath>
@@ -149,6 +152,7 @@ std::shared_ptr<const render::SplatFootprint> ScalarSplat::footprint() {
     return mFootprint;
 }
 
+#ifdef TEXSPLAT_WITH_GL
 void ScalarSplat::render(sg::RenderAction& action) {
     const render::CameraView camera = render::CameraView::current(action, *this);
     const render::FrameSplats splats = frameSplats(action.state(), camera, action.statistics());
@@ -177,6 +181,7 @@ void ScalarSplat::render(sg::RenderAction& action) {
     };
     action.addSplats(std::move(work));
 }
+#endif
 
 void ScalarSplat::collectFrame(render::FrameAction& action) {
     const render::CameraView camera =

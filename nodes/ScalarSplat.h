@@ -70,10 +70,12 @@ public:
 
     ~ScalarSplat() override;
 
+#ifdef TEXSPLAT_WITH_GL
     /// @brief RenderAction: queues this frame's splats (registered by registerNodeTypes()).
     /// @throws DataError naming the node when there is no camera, VolumeData or
     /// TransferFunction before it, or a field is out of range; what loading the volume throws.
     void render(sg::RenderAction& action);
+#endif
 
     /// @brief FrameAction: adds this frame's splats to the action's frame, for a backend without
     /// GL (registered by registerNodeTypes()).

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds and runs the whole test suite (the README's second command; CI runs it too).
-# Stages: ci (optimized, -Werror, asserts on), asan (ASan + UBSan over the same tests),
-# fuzz (clang libFuzzer targets, a bounded run each). Each stage prints its own timing.
+# Stages: ci (optimized, -Werror, asserts on), asan (ASan + UBSan over the same tests), nogl
+# (the command line built without GL, checked on the CPU backend), fuzz (clang libFuzzer
+# targets, a bounded run each). Each stage prints its own timing.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 jobs=$(nproc)
@@ -16,6 +17,11 @@ stage "build and test: asan preset (AddressSanitizer + UndefinedBehaviorSanitize
 cmake --preset asan
 cmake --build --preset asan -j "$jobs"
 ctest --preset asan -j "$jobs"
+
+stage "build without GL (TEXSPLAT_WITH_GL=OFF): render and bench on the CPU backend"
+cmake --preset nogl
+cmake --build --preset nogl -j "$jobs"
+bash scripts/check-without-gl.sh build/nogl/apps/texsplat
 
 stage "fuzz: bounded libFuzzer runs"
 cmake --preset fuzz

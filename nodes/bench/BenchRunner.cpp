@@ -6,12 +6,9 @@
 #include "nodes/TransferFunction.h"
 #include "nodes/VectorMarkSplat.h"
 #include "nodes/VolumeData.h"
-#include "nodes/bench/FillRateCeiling.h"
-#include "nodes/bench/detail/SamplesPassed.h"
 #include "nodes/image/Image.h"
 #include "nodes/image/ImageComparison.h"
 #include "nodes/render/FrameAction.h"
-#include "nodes/render/RenderedImage.h"
 #include "nodes/render/SplatView.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/ClassifiedGrid.h"
@@ -23,8 +20,14 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
 #include "scenegraph/actions/RayCastAction.h"
+
+#ifdef TEXSPLAT_WITH_GL
+#include "nodes/bench/FillRateCeiling.h"
+#include "nodes/bench/detail/SamplesPassed.h"
+#include "nodes/render/RenderedImage.h"
 #include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/gl/Context.h"
+#endif
 
 #include <algorithm>
 #include <chrono>
@@ -115,9 +118,15 @@ void BenchRunner::report(const std::string& stage, double fractionDone) const {
 std::vector<BenchResult> BenchRunner::run() {
     const bool withGl = std::find(mOptions.backends.begin(), mOptions.backends.end(),
                                   render::Backend::Gl) != mOptions.backends.end();
+#ifdef TEXSPLAT_WITH_GL
     if (withGl && !gl::Context::current()) {
         throw GlError("bench: no current GL context");
     }
+#else
+    if (withGl) {
+        throw Error("bench: this texsplat was built without GL (TEXSPLAT_WITH_GL=OFF)");
+    }
+#endif
     nodes::registerNodeTypes();
     std::vector<BenchResult> results;
     for (const BenchDataset& dataset : mOptions.datasets) {
@@ -161,17 +170,18 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
         reference = imageFromRgba(rayCast.readColor(), size);
     }
 
+#ifdef TEXSPLAT_WITH_GL
     const bool withGl = std::find(mOptions.backends.begin(), mOptions.backends.end(),
                                   render::Backend::Gl) != mOptions.backends.end();
     std::optional<FillRateCeiling> ceiling;
     if (withGl) {
         ceiling.emplace(size.x, size.y);
     }
+#endif
     std::vector<image::Image> images;
     const std::size_t first = results.size();
     for (const BenchMethod& method : mOptions.methods) {
         const sg::Node::Ptr node = method.makeNode(fullList.size());
-        const auto& splatNode = static_cast<const nodes::ScalarSplat&>(*node);
         root->replaceChild(3, node);
         for (const render::Backend backend : mOptions.backends) {
             const std::string stage = where + ": " + method.name() +
@@ -184,7 +194,9 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
             result.method = method.name();
             result.backend = backendName(backend);
             result.isFullQuality = method.isFullQuality();
+#ifdef TEXSPLAT_WITH_GL
             if (backend == render::Backend::Gl) {
+                const auto& splatNode = static_cast<const nodes::ScalarSplat&>(*node);
                 // The ceiling draws the very list this method draws (the full list, or its
                 // octree cut), with quads as large as the method's (vector marks reach past the
                 // scalar splat).
@@ -199,7 +211,9 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
                 const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
                 images.push_back(measureGl(*root, size, *ceiling, source.view, extent, drawn,
                                            stage, result));
-            } else {
+            } else
+#endif
+            {
                 images.push_back(measureCpu(*root, size, stage, result));
             }
             report(stage, 1.0);
@@ -212,6 +226,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
     compareWithinRun(images, results, first);
 }
 
+#ifdef TEXSPLAT_WITH_GL
 image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
                                     FillRateCeiling& ceiling, const render::SplatView& view,
                                     float extent, const octree::SplatList& drawn,
@@ -261,6 +276,7 @@ image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
     result.fragments = detail::countSamplesPassed([&] { action.render(root); });
     return render::renderedImage(action);
 }
+#endif
 
 image::Image BenchRunner::measureCpu(sg::Node& root, const glm::ivec2& size,
                                      const std::string& stage, BenchResult& result) const {

@@ -65,10 +65,12 @@ private:
     void runOne(const BenchDataset& dataset, const glm::ivec2& size,
                 std::vector<BenchResult>& results);
     void report(const std::string& stage, double fractionDone) const;
+#ifdef TEXSPLAT_WITH_GL
     image::Image measureGl(sg::Node& root, const glm::ivec2& size, FillRateCeiling& ceiling,
                            const render::SplatView& view, float extent,
                            const octree::SplatList& drawn, const std::string& stage,
                            BenchResult& result) const;
+#endif
     image::Image measureCpu(sg::Node& root, const glm::ivec2& size, const std::string& stage,
                             BenchResult& result) const;
     void compareWithinRun(const std::vector<image::Image>& images,

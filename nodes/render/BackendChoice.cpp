@@ -2,9 +2,14 @@
 
 #include "scenegraph/Error.h"
 
+#ifdef TEXSPLAT_WITH_GL
+#include "scenegraph/gl/EglContext.h"
+#endif
+
 #include <chrono>
 
 namespace texsplat::render {
+#ifdef TEXSPLAT_WITH_GL
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -14,6 +19,7 @@ double secondsSince(Clock::time_point start) {
 }
 
 } // namespace
+#endif
 
 BackendRequest parseBackendRequest(std::string_view text) {
     if (text == "auto") {
@@ -37,6 +43,7 @@ bool isSoftwareRenderer(std::string_view renderer) {
     return false;
 }
 
+#ifdef TEXSPLAT_WITH_GL
 BackendChoice BackendChoice::resolve(BackendRequest request) {
     BackendChoice choice;
     if (request == BackendRequest::Cpu) {
@@ -45,14 +52,14 @@ BackendChoice BackendChoice::resolve(BackendRequest request) {
     }
     const Clock::time_point start = Clock::now();
     if (request == BackendRequest::Gl) {
-        choice.context = std::make_unique<gl::EglContext>();
+        choice.context = std::make_shared<gl::EglContext>();
         choice.contextSeconds = secondsSince(start);
         choice.backend = Backend::Gl;
         choice.reason = "asked for";
         return choice;
     }
     try {
-        auto context = std::make_unique<gl::EglContext>();
+        auto context = std::make_shared<gl::EglContext>();
         choice.contextSeconds = secondsSince(start);
         const std::string renderer = context->info().renderer;
         if (isSoftwareRenderer(renderer)) {
@@ -71,10 +78,33 @@ BackendChoice BackendChoice::resolve(BackendRequest request) {
 
 void BackendChoice::switchToGl(const std::string& why) {
     const Clock::time_point start = Clock::now();
-    context = std::make_unique<gl::EglContext>();
+    context = std::make_shared<gl::EglContext>();
     contextSeconds += secondsSince(start);
     backend = Backend::Gl;
     reason = "auto: " + why;
 }
+#else
+namespace {
+
+[[noreturn]] void refuseGl(const std::string& why) {
+    throw Error(why + ": this texsplat was built without GL (TEXSPLAT_WITH_GL=OFF); only "
+                      "--backend cpu draws");
+}
+
+} // namespace
+
+BackendChoice BackendChoice::resolve(BackendRequest request) {
+    if (request == BackendRequest::Gl) {
+        refuseGl("--backend gl");
+    }
+    BackendChoice choice;
+    choice.reason = request == BackendRequest::Cpu ? "asked for" : "auto: built without GL";
+    return choice;
+}
+
+void BackendChoice::switchToGl(const std::string& why) {
+    refuseGl(why);
+}
+#endif
 
 } // namespace texsplat::render

@@ -1,10 +1,12 @@
 #pragma once
 
-#include "scenegraph/gl/EglContext.h"
-
 #include <memory>
 #include <string>
 #include <string_view>
+
+namespace texsplat::gl {
+class EglContext;
+} // namespace texsplat::gl
 
 namespace texsplat::render {
 
@@ -28,13 +30,15 @@ bool isSoftwareRenderer(std::string_view renderer);
 /// @brief The backend a request resolves to, with the GL context when it is GL.
 struct BackendChoice {
     Backend backend = Backend::Cpu;
-    std::unique_ptr<gl::EglContext> context; ///< current on this thread when backend is Gl
+    /// @brief Current on this thread when backend is Gl (include scenegraph/gl/EglContext.h to
+    /// use it); never set in a build without GL.
+    std::shared_ptr<gl::EglContext> context;
     double contextSeconds = 0.0;             ///< time spent making (or trying) a context
     std::string reason; ///< for reports: why `auto` chose it, or "asked for"
 
     /// @brief Resolves `request`: Cpu makes no context; Gl makes one (throws GlError when it
-    /// cannot); Auto makes one and keeps it unless it fails or its renderer is a software
-    /// rasterizer, then takes the CPU.
+    /// cannot, Error in a build without GL); Auto makes one and keeps it unless it fails or its
+    /// renderer is a software rasterizer, then takes the CPU (always, without GL).
     static BackendChoice resolve(BackendRequest request);
 
     /// @brief Falls back from an `auto` CPU choice to GL (for frames the CPU backend does not

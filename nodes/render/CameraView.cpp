@@ -4,7 +4,10 @@
 #include "nodes/detail/NodeContext.h"
 #include "nodes/elements/CameraElement.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/actions/State.h"
+#ifdef TEXSPLAT_WITH_GL
 #include "scenegraph/actions/RenderAction.h"
+#endif
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -14,9 +17,11 @@
 
 namespace texsplat::render {
 
+#ifdef TEXSPLAT_WITH_GL
 CameraView CameraView::current(sg::RenderAction& action, const sg::Node& node) {
     return current(action.state(), node, action.aspectRatio());
 }
+#endif
 
 CameraView CameraView::current(sg::State& state, const sg::Node& node, float aspectRatio) {
     const nodes::CameraElement& element = state.get<nodes::CameraElement>();

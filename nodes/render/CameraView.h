@@ -22,10 +22,12 @@ struct CameraView {
     /// @brief Unit viewing direction, root space.
     glm::vec3 viewDirection{0.0f, 0.0f, -1.0f};
 
+#ifdef TEXSPLAT_WITH_GL
     /// @brief The camera of `action`'s state (the last one met, Inventor's rule).
     /// @throws DataError "<node>: no camera before this node" when there is none, or what the
     /// camera throws for unusable fields.
     static CameraView current(sg::RenderAction& action, const sg::Node& node);
+#endif
 
     /// @brief The camera of `state` for an image of `aspectRatio` (width over height): what
     /// any action sees, e.g. sg::RayCastAction, which must see the same rays as RenderAction.

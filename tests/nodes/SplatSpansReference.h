@@ -23,7 +23,6 @@
 #include <cstdint>
 #include <memory>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace texsplat::test {
@@ -138,18 +137,11 @@ struct CompositeWorkload {
     int height = 0;                                               ///< image rows
 };
 
-/// @brief `splats` set up by `setup`, in order. SplatSetup is changing from one splat a call
-/// (operator()) to arrays of them (setUp()); this takes either, so that the reference builds on
-/// both sides of that change. Keep only the setUp() branch once it has landed.
-template <typename Setup>
-std::vector<render::cpu::SplatRaster> setUpSplats(const Setup& setup,
-                                                  const std::vector<octree::Splat>& splats) {
+/// @brief `splats` set up by `setup`, in order.
+inline std::vector<render::cpu::SplatRaster> setUpSplats(const render::cpu::SplatSetup& setup,
+                                                         const std::vector<octree::Splat>& splats) {
     std::vector<render::cpu::SplatRaster> rasters(splats.size());
-    if constexpr (std::is_invocable_v<const Setup&, const octree::Splat&>) {
-        std::transform(splats.begin(), splats.end(), rasters.begin(), setup);
-    } else {
-        setup.setUp(splats.data(), splats.size(), rasters.data());
-    }
+    setup.setUp(splats.data(), splats.size(), rasters.data());
     return rasters;
 }
 

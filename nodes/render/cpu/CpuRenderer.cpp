@@ -134,9 +134,9 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                 const std::size_t count = std::min(kChunk, run.end - chunk);
                 tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
                                   [&](const tbb::blocked_range<std::size_t>& range) {
-                                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                                          rasters[i] = (*batch.setup)(splats[chunk + i]);
-                                      }
+                                      batch.setup->setUp(splats + chunk + range.begin(),
+                                                         range.size(),
+                                                         rasters.data() + range.begin());
                                   });
                 tbb::parallel_for(0, bands.count, [&](int band) {
                     compositeSplats(rasters.data(), count, *batch.sampler, planes,

@@ -71,8 +71,17 @@ FootprintSampler::FootprintSampler(const SplatFootprint& footprint) {
 }
 
 SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int height)
-    : mView(view), mExtent(extent), mWidth(width), mHeight(height) {
+    : mView(view) {
     const glm::mat4& m = view.localToClip;
+    mRows.extent = extent;
+    mRows.width = width;
+    mRows.height = height;
+    mRows.isPerspective = view.isPerspective;
+    for (int axis = 0; axis < 3; ++axis) {
+        mRows.eye[axis] = view.eye[axis];
+        mRows.direction[axis] = view.direction[axis];
+        mRows.inverseSpacing[axis] = 1.0f / view.spacing[axis];
+    }
     // Clip space → homogeneous pixel (x·W, y·W, W, z), rows top first: x = (X/W + 1)·width/2,
     // y = (1 − Y/W)·height/2.
     const float halfWidthF = 0.5f * static_cast<float>(width);
@@ -82,9 +91,9 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
         const float rows[4] = {halfWidthF * (clip.x + clip.w), halfHeightF * (clip.w - clip.y),
                                clip.w, clip.z};
         for (int row = 0; row < 4; ++row) {
-            mPixelFromLocal[row][column] = rows[row];
+            mRows.pixelFromLocal[row][column] = rows[row];
             if (column < 3) {
-                mPixelFromVoxel[row][column] = rows[row] * view.spacing[column];
+                mRows.pixelFromVoxel[row][column] = rows[row] * view.spacing[column];
             }
         }
     }
@@ -102,13 +111,9 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
     const float p10 = -halfHeight * cu.y, p11 = -halfHeight * cv.y;
     const float determinant = p00 * p11 - p01 * p10;
     if (!std::isfinite(determinant) || determinant == 0.0f) {
-        mIsAffine = false; // let the general path find the degenerate square
+        mIsAffine = false; // the projective set-up finds the degenerate square
         return;
     }
-    mPixelFromSquare[0][0] = p00;
-    mPixelFromSquare[0][1] = p01;
-    mPixelFromSquare[1][0] = p10;
-    mPixelFromSquare[1][1] = p11;
     mSquareFromPixel[0][0] = p11 / determinant;
     mSquareFromPixel[0][1] = -p01 / determinant;
     mSquareFromPixel[1][0] = -p10 / determinant;
@@ -123,8 +128,14 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
     mLengthScale = 1.0f / frame.eLength;
 }
 
-SplatRaster SplatSetup::operator()(const octree::Splat& splat) const {
-    return mIsAffine ? orthographic(splat) : general(splat);
+void SplatSetup::setUp(const octree::Splat* splats, std::size_t count, SplatRaster* out) const {
+    if (!mIsAffine) {
+        setUpProjective(mRows, splats, count, out);
+        return;
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        out[i] = orthographic(splats[i]);
+    }
 }
 
 SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
@@ -135,14 +146,14 @@ SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
     if (c0.z - size * mDepthReach > 1.0f || c0.z + size * mDepthReach < -1.0f) {
         return raster;
     }
-    const float centreX = 0.5f * static_cast<float>(mWidth) * (c0.x + 1.0f);
-    const float centreY = 0.5f * static_cast<float>(mHeight) * (1.0f - c0.y);
+    const float centreX = 0.5f * static_cast<float>(mRows.width) * (c0.x + 1.0f);
+    const float centreY = 0.5f * static_cast<float>(mRows.height) * (1.0f - c0.y);
     const float reachX = size * mHalfExtent[0];
     const float reachY = size * mHalfExtent[1];
-    raster.columnBegin = toPixel(std::floor(centreX - reachX), 0, mWidth);
-    raster.columnEnd = toPixel(std::ceil(centreX + reachX) + 1.0, 0, mWidth);
-    raster.rowBegin = toPixel(std::floor(centreY - reachY), 0, mHeight);
-    raster.rowEnd = toPixel(std::ceil(centreY + reachY) + 1.0, 0, mHeight);
+    raster.columnBegin = toPixel(std::floor(centreX - reachX), 0, mRows.width);
+    raster.columnEnd = toPixel(std::ceil(centreX + reachX) + 1.0, 0, mRows.width);
+    raster.rowBegin = toPixel(std::floor(centreY - reachY), 0, mRows.height);
+    raster.rowEnd = toPixel(std::ceil(centreY + reachY) + 1.0, 0, mRows.height);
     if (raster.isEmpty()) {
         return raster;
     }
@@ -168,103 +179,6 @@ SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
     const bool crossesPlanes =
         c0.z - size * mDepthReach < -1.0f || c0.z + size * mDepthReach > 1.0f;
     raster.flags = crossesPlanes ? SplatRaster::kClipped : 0;
-    return raster;
-}
-
-SplatRaster SplatSetup::general(const octree::Splat& splat) const {
-    SplatRaster raster{};
-    const glm::vec3& c = splat.position;
-    glm::vec3 sight = mView.direction;
-    if (mView.isPerspective) {
-        const glm::vec3 toCentre = c - mView.eye;
-        const float distance = glm::length(toCentre);
-        if (distance > 0.0f) {
-            sight = toCentre / distance;
-        }
-    }
-    const SquareFrame frame = squareFrame(mView, sight);
-    const float reach = mExtent * splat.size;
-    // Rows of the homogeneous pixel (x·W, y·W, W) and z_clip: of the centre, and per unit of the
-    // square's a and b.
-    float h0[4], hu[4], hv[4];
-    for (int row = 0; row < 4; ++row) {
-        const float* p = mPixelFromLocal[row];
-        const float* q = mPixelFromVoxel[row];
-        h0[row] = p[0] * c.x + p[1] * c.y + p[2] * c.z + p[3];
-        hu[row] = reach * (q[0] * frame.u.x + q[1] * frame.u.y + q[2] * frame.u.z);
-        hv[row] = reach * (q[0] * frame.v.x + q[1] * frame.v.y + q[2] * frame.v.z);
-    }
-    // Square (a, b, 1) → (x·W, y·W, W) is the matrix [hu hv h0]; its inverse by the adjugate.
-    const float c00 = hv[1] * h0[2] - h0[1] * hv[2];
-    const float c01 = h0[1] * hu[2] - hu[1] * h0[2];
-    const float c02 = hu[1] * hv[2] - hv[1] * hu[2];
-    const float determinant = hu[0] * c00 + hv[0] * c01 + h0[0] * c02;
-    if (!std::isfinite(determinant) || determinant == 0.0f) {
-        return raster; // edge-on or degenerate: no pixel
-    }
-    const float s = 1.0f / determinant;
-    float inverse[3][3] = {
-        {c00 * s, (h0[0] * hv[2] - hv[0] * h0[2]) * s, (hv[0] * h0[1] - h0[0] * hv[1]) * s},
-        {c01 * s, (hu[0] * h0[2] - h0[0] * hu[2]) * s, (h0[0] * hu[1] - hu[0] * h0[1]) * s},
-        {c02 * s, (hv[0] * hu[2] - hu[0] * hv[2]) * s, (hu[0] * hv[1] - hv[0] * hu[1]) * s}};
-    // Evaluated at pixel centres (x + ½, y + ½): fold the half into the constant column.
-    for (float(&row)[3] : inverse) {
-        row[2] += 0.5f * (row[0] + row[1]);
-    }
-    for (int column = 0; column < 3; ++column) {
-        raster.square[column] = inverse[0][column];
-        raster.square[3 + column] = inverse[1][column];
-        raster.square[6 + column] = inverse[2][column];
-        // z_clip = (hu, hv, h0)_z · (a, b, 1), and (a, b, 1)/W = inverse · pixel.
-        raster.depth[column] =
-            hu[3] * inverse[0][column] + hv[3] * inverse[1][column] + h0[3] * inverse[2][column];
-    }
-
-    // The pixels the square may cover, from its corners; GL clips it at the near and far planes.
-    float low[2] = {static_cast<float>(mWidth), static_cast<float>(mHeight)};
-    float high[2] = {0.0f, 0.0f};
-    bool behindEye = false;
-    int beforeNear = 0;
-    int beyondFar = 0;
-    for (const float a : {-1.0f, 1.0f}) {
-        for (const float b : {-1.0f, 1.0f}) {
-            const float w = h0[2] + a * hu[2] + b * hv[2];
-            const float z = h0[3] + a * hu[3] + b * hv[3];
-            beforeNear += z < -w ? 1 : 0;
-            beyondFar += z > w ? 1 : 0;
-            if (!(w > 0.0f)) {
-                behindEye = true;
-                continue;
-            }
-            const float inverseW = 1.0f / w;
-            const float x = (h0[0] + a * hu[0] + b * hv[0]) * inverseW;
-            const float y = (h0[1] + a * hu[1] + b * hv[1]) * inverseW;
-            low[0] = std::min(low[0], x);
-            low[1] = std::min(low[1], y);
-            high[0] = std::max(high[0], x);
-            high[1] = std::max(high[1], y);
-        }
-    }
-    if (beforeNear == 4 || beyondFar == 4) {
-        return raster;
-    }
-    if (behindEye) {
-        // Part of the square is behind the eye: its visible part may reach any pixel.
-        low[0] = low[1] = 0.0f;
-        high[0] = static_cast<float>(mWidth);
-        high[1] = static_cast<float>(mHeight);
-    }
-    raster.columnBegin = toPixel(std::floor(low[0]), 0, mWidth);
-    raster.columnEnd = toPixel(std::ceil(high[0]) + 1.0, 0, mWidth);
-    raster.rowBegin = toPixel(std::floor(low[1]), 0, mHeight);
-    raster.rowEnd = toPixel(std::ceil(high[1]) + 1.0, 0, mHeight);
-    raster.color[0] = splat.color.r;
-    raster.color[1] = splat.color.g;
-    raster.color[2] = splat.color.b;
-    raster.extinction = splat.extinction;
-    raster.lengthScale = splat.size / frame.eLength;
-    raster.flags = (mView.isPerspective ? SplatRaster::kProjective : 0) |
-                   (beforeNear > 0 || beyondFar > 0 || behindEye ? SplatRaster::kClipped : 0);
     return raster;
 }
 

@@ -3,6 +3,7 @@
 #include "nodes/render/SplatFootprint.h"
 #include "nodes/render/SplatView.h"
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -60,37 +61,49 @@ struct SplatRaster {
     bool isEmpty() const { return columnBegin >= columnEnd || rowBegin >= rowEnd; }
 };
 
+/// @brief What the SIMD set-up of splats in perspective (setUpProjective()) needs of a batch.
+struct ProjectiveRows {
+    float pixelFromLocal[4][4]{}; ///< local point → (x·W, y·W, W, z_clip), row major
+    float pixelFromVoxel[4][3]{}; ///< voxel-space offset (before the spacing) → the same
+    float eye[3]{};               ///< local space (perspective)
+    float direction[3]{};         ///< unit viewing direction, local space
+    float inverseSpacing[3]{};    ///< 1 / voxel spacing
+    float extent = 1.6f;          ///< square half-width in voxels at size 1
+    int width = 1;                ///< image columns
+    int height = 1;               ///< image rows
+    bool isPerspective = false;   ///< splats face the eye (else `direction`)
+};
+
+/// @brief Sets up `count` splats for `rows`, as SplatSetup says, SIMD over splats (Highway,
+/// dispatched at run time); out[i] is splats[i]'s raster.
+void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats, std::size_t count,
+                     SplatRaster* out);
+
 /// @brief Sets up the splats of one batch for rasterizing as the GL backend draws them (same
 /// square, same texture coordinates).
 ///
-/// A perspective view turns every splat to the eye, so each gets its own square and map. An
-/// orthographic view (with an affine model matrix) turns them all alike: the map from pixels to
-/// the square is computed once at size 1 and each splat only scales and moves it, a tenth of the
-/// work.
+/// A perspective view turns every splat to the eye, so each gets its own square and map:
+/// setUpProjective() computes them for a vector of splats at a time. An orthographic view (with
+/// an affine model matrix) turns them all alike: the map from pixels to the square is computed
+/// once at size 1 and each splat only scales and moves it.
 class SplatSetup {
 public:
     /// @brief The setup for splats seen through `view`, squares `extent` voxels from the centre
     /// at size 1, in an image of `width` x `height` pixels.
     SplatSetup(const SplatView& view, float extent, int width, int height);
 
-    /// @brief `splat` set up; an empty raster when it covers no pixel or lies wholly outside
-    /// the near/far planes.
-    SplatRaster operator()(const octree::Splat& splat) const;
+    /// @brief Sets up `count` splats into `out`: an empty raster for a splat that covers no
+    /// pixel or lies wholly outside the near/far planes.
+    void setUp(const octree::Splat* splats, std::size_t count, SplatRaster* out) const;
 
 private:
-    SplatRaster general(const octree::Splat& splat) const;
     SplatRaster orthographic(const octree::Splat& splat) const;
 
     SplatView mView;
-    float mExtent;
-    float mPixelFromLocal[4][4]{}; // local point → (x·W, y·W, W, z_clip), row major
-    float mPixelFromVoxel[4][3]{}; // voxel-space offset (before the spacing) → the same
-    int mWidth;
-    int mHeight;
+    ProjectiveRows mRows;
     // Orthographic views: the square at size 1 and the centre's pixel.
     bool mIsAffine = false;
-    float mPixelFromSquare[2][2]{}; // pixel offset per unit a, b
-    float mSquareFromPixel[2][2]{}; // its inverse
+    float mSquareFromPixel[2][2]{}; // pixel offset → unit a, b
     float mHalfExtent[2]{};         // pixels the square reaches from its centre, x and y
     float mDepthGradient[2]{};      // z_ndc per pixel, x and y
     float mDepthReach = 0.0f;       // |z_ndc| the square reaches from its centre
