@@ -6,6 +6,7 @@
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/RayCastImage.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "octree/Splat.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/engines/TimeInputs.h"
@@ -31,6 +32,7 @@
 #include <string>
 #include <thread>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 namespace texsplat::apps {
@@ -300,7 +302,7 @@ struct BackendReport {
 
 void printTimes(const sg::RenderStatistics& statistics, const SetupTimes& setup,
                 const BackendReport& backend, double write, const FrameClock& clock,
-                const Animation& animation) {
+                const Animation& animation, std::size_t imageBytes) {
     const int frames = animation.frames;
     printReportHeader(setup, animation);
     std::printf("  backend    %s (%s)\n", backend.name.c_str(), backend.reason.c_str());
@@ -323,6 +325,16 @@ void printTimes(const sg::RenderStatistics& statistics, const SetupTimes& setup,
     } else {
         std::printf("  splats %zu, triangles %zu\n", statistics.splats, statistics.triangles);
     }
+    // What the largest frame data weigh against the process's peak, so a backend's overhead is
+    // measured rather than assumed.
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const double mebibyte = 1024.0 * 1024.0;
+    std::printf("  memory: peak %.1f MiB resident; splat list %.1f MiB, image %.1f MiB\n",
+                static_cast<double>(usage.ru_maxrss) * 1024.0 / mebibyte,
+                static_cast<double>(statistics.splats / std::max(frames, 1) *
+                                    sizeof(octree::Splat)) / mebibyte,
+                static_cast<double>(imageBytes) / mebibyte);
 }
 
 // Progress of a ray cast on stderr: one updating line on a terminal; otherwise, once the render
@@ -483,7 +495,9 @@ void runRender(const RenderArguments& arguments) {
             report.name = "GL (" + info.platform + ": " + info.summary() + ")";
         }
 #endif
-        printTimes(total, setup, report, write, clock, animation);
+        printTimes(total, setup, report, write, clock, animation,
+                   static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) *
+                       sizeof(glm::vec4));
     }
 }
 
