@@ -1,15 +1,53 @@
 #include "apps/Commands.h"
+#include "nodes/image/ImageIo.h"
+#include "nodes/render/cpu/SplatSpans.h"
 #include "scenegraph/Error.h"
 
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
 #include <exception>
+#include <string>
+
+namespace {
+
+// `texsplat --version`: the version and what this build can do.
+std::string versionText() {
+    const auto yesNo = [](bool value) { return value ? "yes" : "no"; };
+#ifdef TEXSPLAT_WITH_GL
+    constexpr bool kGl = true;
+#else
+    constexpr bool kGl = false;
+#endif
+#ifdef TEXSPLAT_WITH_VIEWER
+    constexpr bool kViewer = true;
+#else
+    constexpr bool kViewer = false;
+#endif
+#ifdef TEXSPLAT_WITH_OPENVDB
+    constexpr bool kOpenVdb = true;
+#else
+    constexpr bool kOpenVdb = false;
+#endif
+#ifdef TEXSPLAT_WITH_GLTF
+    constexpr bool kGltf = true;
+#else
+    constexpr bool kGltf = false;
+#endif
+    return std::string("texsplat ") + TEXSPLAT_VERSION + "\nbackends: CPU (" +
+           texsplat::render::cpu::compositeTarget() + ")" + (kGl ? ", GL" : "") +
+           "\nviewer: " + yesNo(kViewer) + ", OpenVDB: " + yesNo(kOpenVdb) +
+           ", glTF: " + yesNo(kGltf) +
+           ", OpenEXR: " + yesNo(texsplat::image::isExrSupported());
+}
+
+} // namespace
 
 int main(int argc, char** argv) {
     using namespace texsplat::apps;
     CLI::App app{"texsplat: texture splats for 3D scalar and vector field visualization"};
     app.require_subcommand(1);
+    app.set_version_flag("--version", versionText());
     int exitCode = kExitOk;
     addKernelCommand(app, exitCode);
     addInfoCommand(app, exitCode);
@@ -21,8 +59,17 @@ int main(int argc, char** argv) {
 #endif
     try {
         app.parse(argc, argv);
-    } catch (const CLI::ParseError& e) {
+    } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        // Command-line mistakes in the same form as every other error, with the usage code.
+        std::fprintf(stderr, "texsplat: error: %s\nRun with --help for more information.\n",
+                     e.what());
+        return kExitUsage;
     } catch (const texsplat::Error& e) {
         std::fprintf(stderr, "texsplat: error: %s\n", e.what());
         return kExitFailure;
