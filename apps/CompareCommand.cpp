@@ -156,6 +156,18 @@ void runCompare(const CompareArguments& arguments) {
         log(LogLevel::Warning, arguments.test + ": left out " +
                                    std::to_string(comparison.nonFinitePixels()) +
                                    " pixel(s) with NaN or infinite values in one of the images");
+    // An opaque image against a transparent one differs in alpha by construction (a PNG over
+    // black against an EXR layer, say): say so rather than let the alpha error speak alone.
+    const auto isOpaque = [](const image::Image& image) {
+        return image.statistics().minimum.a >= 1.0;
+    };
+    if (isOpaque(reference) != isOpaque(test)) {
+        const std::string& opaque = isOpaque(reference) ? arguments.reference : arguments.test;
+        const std::string& other = isOpaque(reference) ? arguments.test : arguments.reference;
+        log(LogLevel::Warning, opaque + " is opaque (alpha 1 everywhere) and " + other +
+                                   " is not: they were composited over different backgrounds; "
+                                   "render both with the same --background");
+    }
     if (arguments.json)
         printJson(arguments, reference, *options.region, comparison, diffScale);
     else

@@ -60,6 +60,7 @@ struct RenderArguments {
     float rayCastStep = sg::RayCastAction::kDefaultStepSize;
     std::string backend = "auto";
     int threads = 0;
+    std::string background = "black";
 };
 
 // The output name of each frame. A name with one printf-style integer conversion is a pattern:
@@ -365,10 +366,9 @@ private:
 // The reference images of --raycast: no GL context; the same camera, size and background as
 // the GL render, so the two images compare pixel by pixel.
 void runRayCast(const RenderArguments& arguments, const Animation& animation, sg::Node& root,
-                glm::ivec2 size, image::ImageFormat format, const SetupTimes& setup) {
+                glm::ivec2 size, const glm::vec4& background, const SetupTimes& setup) {
     sg::RayCastAction action(size.x, size.y);
-    action.setBackground(format == image::ImageFormat::Png ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
-                                                           : glm::vec4(0.0f));
+    action.setBackground(background);
     action.setStepSize(arguments.rayCastStep);
     FrameClock clock(animation, root);
     double integrate = setup.frame;
@@ -407,6 +407,10 @@ void runRender(const RenderArguments& arguments) {
         throw DataError("--raycast-step: only with --raycast");
     }
     const render::BackendRequest request = render::parseBackendRequest(arguments.backend);
+    // The same background for PNG and EXR: opaque black unless asked. A transparent PNG stores
+    // straight alpha, which cannot hold light from a fully transparent medium (alpha 0, colour
+    // > 0); EXR keeps the premultiplied layer exactly.
+    const glm::vec4 background = parseBackground(arguments.background);
     if (arguments.threads < 0 || arguments.threads > kMaxThreads) {
         throw DataError("--threads: expected 0 (one per hardware thread) to " +
                         std::to_string(kMaxThreads) + ", got " +
@@ -424,15 +428,10 @@ void runRender(const RenderArguments& arguments) {
     setup.framed = root != scene;
 
     if (arguments.rayCast) {
-        runRayCast(arguments, animation, *root, size, format, setup);
+        runRayCast(arguments, animation, *root, size, background, setup);
         return;
     }
     render::BackendChoice backend = render::BackendChoice::resolve(request);
-    // PNG stores straight alpha, which cannot hold light from a transparent medium (alpha 0,
-    // color > 0): composite over opaque black. EXR keeps the premultiplied layer with its alpha.
-    const glm::vec4 background = format == image::ImageFormat::Png
-                                     ? glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)
-                                     : glm::vec4(0.0f);
     const bool withDepth = format == image::ImageFormat::Exr;
     FrameClock clock(animation, *root);
     sg::RenderStatistics total;
@@ -540,6 +539,11 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     command->add_option("--threads", arguments->threads,
                         "Threads of the CPU backend (0: one per hardware thread); the image is "
                         "the same for any count")
+        ->capture_default_str();
+    command->add_option("--background", arguments->background,
+                        "black|white|transparent|r,g,b: what the scene is composited over, the "
+                        "same for PNG and EXR (transparent: the premultiplied layer alone, for "
+                        "compositing; EXR keeps it exactly)")
         ->capture_default_str();
     command->add_flag("--raycast", arguments->rayCast,
                       "Render the reference with the CPU ray caster (exact emission-absorption of "

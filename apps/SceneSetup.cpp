@@ -71,6 +71,30 @@ glm::vec3 parseDirection(const std::string& text) {
     return direction;
 }
 
+glm::vec4 parseBackground(const std::string& text) {
+    if (text == "black") {
+        return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
+    }
+    if (text == "white") {
+        return glm::vec4(1.0f);
+    }
+    if (text == "transparent") {
+        return glm::vec4(0.0f);
+    }
+    std::istringstream stream(text);
+    glm::vec3 color(-1.0f);
+    char comma1 = 0;
+    char comma2 = 0;
+    stream >> color.r >> comma1 >> color.g >> comma2 >> color.b;
+    const bool inRange = color.r >= 0.0f && color.r <= 1.0f && color.g >= 0.0f &&
+                         color.g <= 1.0f && color.b >= 0.0f && color.b <= 1.0f;
+    if (!stream || comma1 != ',' || comma2 != ',' || !(stream >> std::ws).eof() || !inRange) {
+        throw DataError("--background: expected black, white, transparent or r,g,b (linear, 0 to "
+                        "1), got '" + text + "'");
+    }
+    return glm::vec4(color, 1.0f);
+}
+
 sg::Node::Ptr loadScene(const std::string& path) {
     nodes::registerNodeTypes();
     sg::registerEngineTypes(sg::NodeRegistry::instance());

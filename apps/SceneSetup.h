@@ -4,6 +4,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include <string>
 
@@ -15,6 +16,11 @@ glm::ivec2 parseSize(const std::string& text, const std::string& option = "--siz
 
 /// @brief "x,y,z", finite and not all zero. Throws DataError naming --direction otherwise.
 glm::vec3 parseDirection(const std::string& text);
+
+/// @brief The premultiplied clear colour `--background` names: "black" (the default), "white",
+/// "transparent" (alpha 0: the layer alone, for compositing) or "r,g,b" (linear, 0 to 1, opaque).
+/// Throws DataError naming --background otherwise.
+glm::vec4 parseBackground(const std::string& text);
 
 /// @brief Registers every node and engine type, then reads `path`, or builds the built-in
 /// default scene (the tornado with fibres) when `path` is empty.

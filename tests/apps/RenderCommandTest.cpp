@@ -90,13 +90,14 @@ TEST_F(RenderCommandTest, rendersASceneFileToExrWithDepthAndCameraOptions) {
     }
     const std::string output = path("blob.exr");
     const auto result = runTexsplat("render " + writeScene() + " -o " + output +
-                                    " --size 32x32 --camera orthographic --direction 1,0,0");
+                                    " --size 32x32 --camera orthographic --direction 1,0,0 "
+                                    "--background transparent");
     ASSERT_EQ(result.exitCode, 0) << result.standardError;
     const Image image = texsplat::image::readImage(output);
     const Image::Statistics statistics = image.statistics();
     EXPECT_EQ(statistics.nonFinitePixels, 0u);
     EXPECT_GT(statistics.maximum.r, 0.1);
-    EXPECT_EQ(statistics.minimum.a, 0.0); // the EXR keeps the layer's own alpha
+    EXPECT_EQ(statistics.minimum.a, 0.0); // a transparent background: the layer's own alpha
     // Z is window-space depth; splats do not write it, so a volume alone leaves 1 everywhere.
     ASSERT_TRUE(image.hasDepth());
     for (const float depth : image.depths()) {
@@ -424,6 +425,37 @@ TEST_F(RenderCommandTest, reportsBadBackendOptionsBeforeAnyWork) {
                 "--backend: expected cpu, gl or auto, got 'vulkan'", output);
     expectError(scene + " -o " + output + " --threads -1",
                 "--threads: expected 0 (one per hardware thread) to 1024, got -1", output);
+}
+
+TEST_F(RenderCommandTest, pngAndExrShareTheBackgroundAndCompareSaysWhenTheyDoNot) {
+    const std::string scene = writeScene();
+    const std::string options = " --size 24x24 --camera orthographic";
+    ASSERT_EQ(runTexsplat("render " + scene + " -o " + path("black.png") + options).exitCode, 0);
+    ASSERT_EQ(runTexsplat("render " + scene + " -o " + path("clear.png") + options +
+                          " --background transparent")
+                  .exitCode,
+              0);
+    EXPECT_EQ(texsplat::image::readImage(path("black.png")).statistics().minimum.a, 1.0)
+        << "opaque black by default";
+    const Image clear = texsplat::image::readImage(path("clear.png"));
+    EXPECT_LT(clear.statistics().minimum.a, 0.5) << "thin medium and empty corners show through";
+    EXPECT_GT(clear.statistics().maximum.r, 0.05);
+    if (texsplat::image::isExrSupported()) {
+        ASSERT_EQ(runTexsplat("render " + scene + " -o " + path("black.exr") + options).exitCode,
+                  0);
+        EXPECT_EQ(texsplat::image::readImage(path("black.exr")).statistics().minimum.a, 1.0)
+            << "EXR composited over the same black as PNG by default";
+    }
+    const auto compared = runTexsplat("compare " + path("black.png") + " " + path("clear.png"));
+    EXPECT_EQ(compared.exitCode, 0) << compared.standardError;
+    EXPECT_NE(compared.standardError.find(path("black.png") + " is opaque (alpha 1 everywhere) "
+                                          "and " + path("clear.png") + " is not"),
+              std::string::npos)
+        << compared.standardError;
+    expectError(scene + " -o " + path("bad.png") + " --background 1.5,0,0",
+                "--background: expected black, white, transparent or r,g,b (linear, 0 to 1), got "
+                "'1.5,0,0'",
+                path("bad.png"));
 }
 
 } // namespace
