@@ -61,6 +61,7 @@ struct RenderArguments {
     std::string backend = "auto";
     int threads = 0;
     std::string background = "black";
+    BudgetOverride budget;
 };
 
 // The output name of each frame. A name with one printf-style integer conversion is a pattern:
@@ -419,6 +420,7 @@ void runRender(const RenderArguments& arguments) {
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
+    applyBudget(*scene, arguments.budget);
     setup.readScene = secondsSince(start);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     start = Clock::now();
@@ -540,6 +542,14 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "Threads of the CPU backend (0: one per hardware thread); the image is "
                         "the same for any count")
         ->capture_default_str();
+    command->add_option("--max-splats", arguments->budget.maxSplats,
+                        "Set every splat node's maxSplats (the octree cut's splat budget; 0: "
+                        "none) without editing the scene")
+        ->type_name("N");
+    command->add_option("--error-threshold", arguments->budget.errorThreshold,
+                        "Set every splat node's errorThreshold (the octree cut's error; 0: full "
+                        "resolution) without editing the scene")
+        ->type_name("E");
     command->add_option("--background", arguments->background,
                         "black|white|transparent|r,g,b: what the scene is composited over, the "
                         "same for PNG and EXR (transparent: the premultiplied layer alone, for "

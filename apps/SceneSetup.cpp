@@ -5,6 +5,7 @@
 #include "nodes/NodeTypes.h"
 #include "nodes/OrthographicCamera.h"
 #include "nodes/PerspectiveCamera.h"
+#include "nodes/ScalarSplat.h"
 #include "nodes/render/CameraView.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/NodeRegistry.h"
@@ -15,7 +16,10 @@
 #include "scenegraph/io/SceneReader.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
+#include <cstdint>
+#include <optional>
 #include <sstream>
 
 namespace texsplat::apps {
@@ -93,6 +97,51 @@ glm::vec4 parseBackground(const std::string& text) {
                         "1), got '" + text + "'");
     }
     return glm::vec4(color, 1.0f);
+}
+
+int applyBudget(sg::Node& scene, const BudgetOverride& budget) {
+    if (budget.maxSplats.empty() && budget.errorThreshold.empty()) {
+        return 0;
+    }
+    std::optional<std::int32_t> maxSplats;
+    if (!budget.maxSplats.empty()) {
+        const bool isWhole = budget.maxSplats.size() <= 9 &&
+                             std::all_of(budget.maxSplats.begin(), budget.maxSplats.end(),
+                                         [](char c) { return c >= '0' && c <= '9'; });
+        if (!isWhole) {
+            throw DataError("--max-splats: expected a whole number from 0 (no budget) to "
+                            "999999999, got '" + budget.maxSplats + "'");
+        }
+        maxSplats = std::stoi(budget.maxSplats);
+    }
+    std::optional<float> errorThreshold;
+    if (!budget.errorThreshold.empty()) {
+        float value = -1.0f;
+        const char* end = budget.errorThreshold.data() + budget.errorThreshold.size();
+        const auto [parsed, error] = std::from_chars(budget.errorThreshold.data(), end, value);
+        if (error != std::errc() || parsed != end || !std::isfinite(value) || value < 0.0f) {
+            throw DataError("--error-threshold: expected a finite number >= 0 (0: full "
+                            "resolution), got '" + budget.errorThreshold + "'");
+        }
+        errorThreshold = value;
+    }
+    sg::SearchAction search;
+    search.setType(nodes::ScalarSplat::classType());
+    search.setInterest(sg::SearchAction::Interest::All);
+    search.apply(scene);
+    if (search.paths().empty()) {
+        throw DataError("--max-splats/--error-threshold: the scene has no splat node to set");
+    }
+    for (const sg::Path& path : search.paths()) {
+        auto& splat = static_cast<nodes::ScalarSplat&>(*path.tail());
+        if (maxSplats) {
+            splat.maxSplats.setValue(*maxSplats);
+        }
+        if (errorThreshold) {
+            splat.errorThreshold.setValue(*errorThreshold);
+        }
+    }
+    return static_cast<int>(search.paths().size());
 }
 
 sg::Node::Ptr loadScene(const std::string& path) {

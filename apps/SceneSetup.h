@@ -22,6 +22,18 @@ glm::vec3 parseDirection(const std::string& text);
 /// Throws DataError naming --background otherwise.
 glm::vec4 parseBackground(const std::string& text);
 
+/// @brief What --max-splats and --error-threshold ask of every splat node of a scene.
+struct BudgetOverride {
+    std::string maxSplats;      ///< "" (the scene's own) or a whole number >= 0 (0: none)
+    std::string errorThreshold; ///< "" (the scene's own) or a finite number >= 0
+};
+
+/// @brief Sets `maxSplats` and `errorThreshold` of every splat node under `scene` (TextureSplat,
+/// GaussianSplat, VectorSplat, CombinedSplat) as `budget` asks; answers how many nodes it set.
+/// Throws DataError naming the option for a value out of range, or when the scene has no splat
+/// node to set.
+int applyBudget(sg::Node& scene, const BudgetOverride& budget);
+
 /// @brief Registers every node and engine type, then reads `path`, or builds the built-in
 /// default scene (the tornado with fibres) when `path` is empty.
 sg::Node::Ptr loadScene(const std::string& path);

@@ -458,4 +458,30 @@ TEST_F(RenderCommandTest, pngAndExrShareTheBackgroundAndCompareSaysWhenTheyDoNot
                 path("bad.png"));
 }
 
+TEST_F(RenderCommandTest, budgetOptionsSetEverySplatNodeWithoutEditingTheScene) {
+    const auto splatsOf = [this](const std::string& options) {
+        const auto result = runTexsplat("render " + writeScene() + " -o " + path("cut.png") +
+                                        " --size 24x24 --time-report" + options);
+        EXPECT_EQ(result.exitCode, 0) << result.standardError;
+        std::size_t splats = 0;
+        const std::size_t line = result.standardOutput.find("  splats ");
+        EXPECT_NE(line, std::string::npos) << result.standardOutput;
+        std::sscanf(result.standardOutput.c_str() + line, "  splats %zu", &splats);
+        return splats;
+    };
+    const std::size_t full = splatsOf("");
+    const std::size_t budget = splatsOf(" --max-splats 200");
+    EXPECT_GT(full, 1000u);
+    EXPECT_LE(budget, 200u);
+    EXPECT_GT(budget, 0u);
+    EXPECT_LT(splatsOf(" --error-threshold 0.5"), full);
+    const std::string scene = writeScene();
+    expectError(scene + " -o " + path("bad.png") + " --max-splats -5",
+                "--max-splats: expected a whole number from 0 (no budget) to 999999999, got '-5'",
+                path("bad.png"));
+    expectError(scene + " -o " + path("bad.png") + " --error-threshold nan",
+                "--error-threshold: expected a finite number >= 0 (0: full resolution), got 'nan'",
+                path("bad.png"));
+}
+
 } // namespace
