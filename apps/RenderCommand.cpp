@@ -51,8 +51,7 @@ struct RenderArguments {
     std::string scene;
     std::string output;
     std::string size = "512x512";
-    std::string camera;
-    std::string direction;
+    Framing framing;
     std::string frames = "1";
     std::string fps = "24";
     bool timeReport = false;
@@ -397,6 +396,12 @@ void runRayCast(const RenderArguments& arguments, const Animation& animation, sg
     }
 }
 
+Framing framingOf(const RenderArguments& arguments) {
+    Framing framing = arguments.framing;
+    framing.sceneName = arguments.scene;
+    return framing;
+}
+
 void runRender(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
     // Refuse a bad output name or option before any work, so nothing is left half-done.
@@ -425,7 +430,7 @@ void runRender(const RenderArguments& arguments) {
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     start = Clock::now();
     const sg::Node::Ptr root =
-        withCamera(scene, Framing{arguments.scene, arguments.camera, arguments.direction}, aspect);
+        withCamera(scene, framingOf(arguments), aspect);
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 
@@ -516,11 +521,10 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "one frame number such as out%04d.png (%% for a '%')")
         ->required();
     command->add_option("--size", arguments->size, "Image size WxH")->capture_default_str();
-    command->add_option("--camera", arguments->camera,
+    command->add_option("--camera", arguments->framing.camera,
                         "perspective|orthographic: the camera that frames a scene without one "
                         "(default perspective)");
-    command->add_option("--direction", arguments->direction,
-                        "x,y,z: viewing direction of that camera");
+    addViewOptions(*command, arguments->framing);
     command->add_option("--frames", arguments->frames,
                         "Render N frames of the scene's animation, frame k at scene time k/fps "
                         "(engines such as ElapsedTime follow a simulated clock: every run gives "

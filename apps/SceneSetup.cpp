@@ -15,6 +15,11 @@
 #include "scenegraph/engines/EngineTypes.h"
 #include "scenegraph/io/SceneReader.h"
 
+#include <CLI/CLI.hpp>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtx/quaternion.hpp>
+
 #include <algorithm>
 #include <charconv>
 #include <cmath>
@@ -28,14 +33,61 @@ namespace {
 // The default scene is seen from the side, its funnel (the tornado's z axis) upright.
 const glm::vec3 kDefaultSceneDirection(0.0f, 1.0f, -0.25f);
 
-const nodes::Camera* findCamera(sg::Node& scene) {
+nodes::Camera* findCamera(sg::Node& scene) {
     sg::SearchAction search;
     search.setType(nodes::Camera::classType());
     search.setInterest(sg::SearchAction::Interest::First);
     search.apply(scene);
     return search.paths().empty()
                ? nullptr
-               : static_cast<const nodes::Camera*>(search.paths().front().tail().get());
+               : static_cast<nodes::Camera*>(search.paths().front().tail().get());
+}
+
+// A finite number from an option's text, checked by `accept`; throws naming the option.
+float parseNumber(const std::string& text, const char* option, const char* expected,
+                  bool (*accept)(float)) {
+    float value = 0.0f;
+    const char* end = text.data() + text.size();
+    const auto [parsed, error] = std::from_chars(text.data(), end, value);
+    if (text.empty() || error != std::errc() || parsed != end || !std::isfinite(value) ||
+        !accept(value)) {
+        throw DataError(std::string(option) + ": expected " + expected + ", got '" + text + "'");
+    }
+    return value;
+}
+
+// --direction, --azimuth, --elevation and --zoom on `camera`, about its focal point.
+void adjustCamera(nodes::Camera& camera, const Framing& framing, bool turnToDirection) {
+    const auto any = [](float) { return true; };
+    const float azimuth = framing.azimuth.empty()
+                              ? 0.0f
+                              : parseNumber(framing.azimuth, "--azimuth", "degrees", any);
+    const float elevation = framing.elevation.empty()
+                                ? 0.0f
+                                : parseNumber(framing.elevation, "--elevation", "degrees", any);
+    const float zoom = framing.zoom.empty()
+                           ? 1.0f
+                           : parseNumber(framing.zoom, "--zoom", "a magnification > 0",
+                                         [](float value) { return value > 0.0f; });
+    const float distance = camera.focalDistance.value();
+    glm::quat orientation = camera.orientation.value().quaternion();
+    const glm::vec3 focus =
+        camera.position.value() + orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance;
+    if (turnToDirection) {
+        orientation = render::rotationLookingAlong(parseDirection(framing.direction)).quaternion();
+    }
+    orientation = glm::angleAxis(glm::radians(azimuth), orientation * glm::vec3(0, 1, 0)) *
+                  orientation;
+    orientation = glm::angleAxis(glm::radians(elevation), orientation * glm::vec3(1, 0, 0)) *
+                  orientation;
+    camera.orientation.setValue(sg::Rotation(glm::axis(orientation), glm::angle(orientation)));
+    camera.position.setValue(focus - orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance);
+    if (auto* perspective = dynamic_cast<nodes::PerspectiveCamera*>(&camera)) {
+        const float half = 0.5f * perspective->heightAngle.value();
+        perspective->heightAngle.setValue(2.0f * std::atan(std::tan(half) / zoom));
+    } else if (auto* orthographic = dynamic_cast<nodes::OrthographicCamera*>(&camera)) {
+        orthographic->height.setValue(orthographic->height.value() / zoom);
+    }
 }
 
 } // namespace
@@ -150,12 +202,27 @@ sg::Node::Ptr loadScene(const std::string& path) {
     return path.empty() ? sg::Node::Ptr(nodes::makeDefaultScene()) : sg::SceneReader::readFile(path);
 }
 
+void addViewOptions(CLI::App& command, Framing& framing) {
+    command.add_option("--direction", framing.direction,
+                       "x,y,z: viewing direction, of the camera that frames a scene without one "
+                       "or of the scene's own camera (turned about its focal point)");
+    command.add_option("--azimuth", framing.azimuth,
+                       "Degrees to orbit the camera about its up axis through its focal point")
+        ->type_name("DEG");
+    command.add_option("--elevation", framing.elevation,
+                       "Degrees to orbit the camera up about its right axis, after --azimuth")
+        ->type_name("DEG");
+    command.add_option("--zoom", framing.zoom, "Magnification (2: twice as large)")
+        ->type_name("F");
+}
+
 sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect) {
-    if (const nodes::Camera* camera = findCamera(*scene)) {
-        if (!framing.camera.empty() || !framing.direction.empty()) {
-            throw DataError("--direction/--camera: the scene has its own camera (" +
-                            camera->describe() + "); they frame scenes without one");
+    if (nodes::Camera* camera = findCamera(*scene)) {
+        if (!framing.camera.empty()) {
+            throw DataError("--camera: the scene has its own camera (" + camera->describe() +
+                            "); --camera chooses the one that frames a scene without one");
         }
+        adjustCamera(*camera, framing, !framing.direction.empty());
         return scene;
     }
     nodes::Camera::Ptr camera;
@@ -179,6 +246,7 @@ sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, flo
                         ": nothing to frame (the scene has no geometry and no camera)");
     }
     camera->viewAll(box.boundingBox(), aspect);
+    adjustCamera(*camera, framing, false);
     sg::Separator::Ptr root = sg::Separator::create();
     root->addChild(camera);
     root->addChild(scene);

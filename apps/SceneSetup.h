@@ -8,6 +8,10 @@
 
 #include <string>
 
+namespace CLI {
+class App;
+} // namespace CLI
+
 namespace texsplat::apps {
 
 /// @brief "WxH" with whole numbers from 1 to 16384 (beyond any GL framebuffer limit we could
@@ -44,11 +48,21 @@ struct Framing {
     std::string sceneName; ///< the scene file ("" for the default scene), for messages
     std::string camera;    ///< "perspective" (default when empty) or "orthographic"
     std::string direction; ///< "x,y,z" viewing direction; empty: the scene's usual one
+    std::string azimuth;   ///< degrees about the camera's up axis through its focal point
+    std::string elevation; ///< degrees about its right axis through the focal point, after azimuth
+    std::string zoom;      ///< magnification > 0 (2: things look twice as large)
 };
 
+/// @brief Adds --direction, --azimuth, --elevation and --zoom to `command`, filling `framing`.
+void addViewOptions(CLI::App& command, Framing& framing);
+
 /// @brief The scene as drawn: `scene` itself when it has a camera (then `framing` must not ask
-/// for one), else a Separator holding a new camera that frames the scene's bounding box for a
-/// viewport of `aspect`, then the scene. Framing takes the scene's bounding box, which loads (or
+/// for another kind of camera), else a Separator holding a new camera that frames the scene's
+/// bounding box for a viewport of `aspect`, then the scene. Then, on the scene's own camera or
+/// the new one: `direction` turns it to look along that direction at its focal point (for a
+/// framing camera it is the direction framed from), `azimuth` and `elevation` orbit it about its
+/// focal point (ParaView's and the viewer's orbit), `zoom` magnifies (a narrower opening angle,
+/// or a smaller orthographic height). Framing takes the scene's bounding box, which loads (or
 /// generates) its volumes: callers that time loading count this call in.
 /// @throws DataError for a bad option, or a scene with neither geometry nor camera.
 sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect);

@@ -31,8 +31,7 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     command->add_option("--camera", options.framing.camera,
                         "perspective|orthographic: the camera that frames a scene without one "
                         "(default perspective)");
-    command->add_option("--direction", options.framing.direction,
-                        "x,y,z: viewing direction of that camera");
+    addViewOptions(*command, options.framing);
     command->add_option("--interactive-splats", options.interactiveBudget,
                         "Splat budget per splat node while the view moves")
         ->capture_default_str()

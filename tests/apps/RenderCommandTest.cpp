@@ -159,10 +159,12 @@ TEST_F(RenderCommandTest, reportsBadInputsAndWritesNothing) {
     expectError("-o " + png + " --direction 0,0,0",
                 "--direction: expected three numbers x,y,z not all zero, got '0,0,0'", png);
     const std::string withCamera = writeScene("PerspectiveCamera { }\n");
-    expectError(withCamera + " -o " + png + " --direction 1,0,0",
-                "--direction/--camera: the scene has its own camera (PerspectiveCamera); they "
-                "frame scenes without one",
+    expectError(withCamera + " -o " + png + " --camera orthographic",
+                "--camera: the scene has its own camera (PerspectiveCamera); --camera chooses "
+                "the one that frames a scene without one",
                 png);
+    expectError("-o " + png + " --zoom 0", "--zoom: expected a magnification > 0, got '0'", png);
+    expectError("-o " + png + " --azimuth east", "--azimuth: expected degrees, got 'east'", png);
     // A grid with no finite voxel would render as an empty picture that hides the bad input.
     std::string nanVoxels = "texsplat-raw 1\ndims 2 2 2\ntype float32\ndata\n";
     const float nan = std::nanf("");
@@ -482,6 +484,40 @@ TEST_F(RenderCommandTest, budgetOptionsSetEverySplatNodeWithoutEditingTheScene) 
     expectError(scene + " -o " + path("bad.png") + " --error-threshold nan",
                 "--error-threshold: expected a finite number >= 0 (0: full resolution), got 'nan'",
                 path("bad.png"));
+}
+
+TEST_F(RenderCommandTest, cameraOptionsOrbitAndZoomAnyScenesCamera) {
+    // A scene with its own camera looking at the blob from +z, at its focal point.
+    const std::string scene = writeScene("PerspectiveCamera { position 0.5 0.5 3 "
+                                         "focalDistance 2.5 }\n");
+    const auto render = [&](const std::string& name, const std::string& options) {
+        const auto result = runTexsplat("render " + scene + " -o " + path(name) +
+                                        " --size 32x32 --backend cpu" + options);
+        EXPECT_EQ(result.exitCode, 0) << options << ": " << result.standardError;
+        return texsplat::image::readImage(path(name));
+    };
+    const auto difference = [](const Image& a, const Image& b) {
+        double sum = 0.0;
+        for (int y = 0; y < a.height(); ++y) {
+            for (int x = 0; x < a.width(); ++x) {
+                const glm::vec4 d = a.pixel(x, y) - b.pixel(x, y);
+                sum += std::abs(d.r) + std::abs(d.g) + std::abs(d.b);
+            }
+        }
+        return sum / (a.width() * a.height());
+    };
+    const Image front = render("front.png", "");
+    const Image side = render("side.png", " --azimuth 90");
+    const Image around = render("around.png", " --azimuth 360 --elevation 0");
+    const Image sideByDirection = render("direction.png", " --direction -1,0,0");
+    const Image zoomed = render("zoomed.png", " --zoom 2");
+    EXPECT_GT(difference(front, side), 0.01) << "the blob is not round: a side view differs";
+    EXPECT_LT(difference(front, around), 1e-3) << "a full turn comes back";
+    EXPECT_LT(difference(side, sideByDirection), 1e-3)
+        << "azimuth 90 from +z looks along -x, as --direction -1,0,0 at the same focal point";
+    // Zoomed twice: the centre pixel's neighbourhood grows; the image's brightest values stay.
+    EXPECT_GT(difference(front, zoomed), 0.01);
+    EXPECT_GT(zoomed.statistics().mean.r, front.statistics().mean.r) << "more of the image is blob";
 }
 
 } // namespace
