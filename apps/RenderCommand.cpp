@@ -417,6 +417,7 @@ void runRender(const RenderArguments& arguments) {
     // straight alpha, which cannot hold light from a fully transparent medium (alpha 0, colour
     // > 0); EXR keeps the premultiplied layer exactly.
     const glm::vec4 background = parseBackground(arguments.background);
+    checkSceneOptions(arguments.framing, arguments.budget);
     if (arguments.threads < 0 || arguments.threads > kMaxThreads) {
         throw DataError("--threads: expected 0 (one per hardware thread) to " +
                         std::to_string(kMaxThreads) + ", got " +

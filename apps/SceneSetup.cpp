@@ -56,19 +56,38 @@ float parseNumber(const std::string& text, const char* option, const char* expec
     return value;
 }
 
+// What --azimuth, --elevation and --zoom ask for.
+struct ViewChange {
+    float azimuth = 0.0f;   // degrees
+    float elevation = 0.0f; // degrees
+    float zoom = 1.0f;
+};
+
+ViewChange parseViewChange(const Framing& framing) {
+    const auto any = [](float) { return true; };
+    ViewChange change;
+    if (!framing.azimuth.empty()) {
+        change.azimuth = parseNumber(framing.azimuth, "--azimuth", "degrees", any);
+    }
+    if (!framing.elevation.empty()) {
+        change.elevation = parseNumber(framing.elevation, "--elevation", "degrees", any);
+    }
+    if (!framing.zoom.empty()) {
+        change.zoom = parseNumber(framing.zoom, "--zoom", "a magnification > 0",
+                                  [](float value) { return value > 0.0f; });
+    }
+    if (!framing.direction.empty()) {
+        parseDirection(framing.direction);
+    }
+    return change;
+}
+
 // --direction, --azimuth, --elevation and --zoom on `camera`, about its focal point.
 void adjustCamera(nodes::Camera& camera, const Framing& framing, bool turnToDirection) {
-    const auto any = [](float) { return true; };
-    const float azimuth = framing.azimuth.empty()
-                              ? 0.0f
-                              : parseNumber(framing.azimuth, "--azimuth", "degrees", any);
-    const float elevation = framing.elevation.empty()
-                                ? 0.0f
-                                : parseNumber(framing.elevation, "--elevation", "degrees", any);
-    const float zoom = framing.zoom.empty()
-                           ? 1.0f
-                           : parseNumber(framing.zoom, "--zoom", "a magnification > 0",
-                                         [](float value) { return value > 0.0f; });
+    const ViewChange change = parseViewChange(framing);
+    const float azimuth = change.azimuth;
+    const float elevation = change.elevation;
+    const float zoom = change.zoom;
     const float distance = camera.focalDistance.value();
     glm::quat orientation = camera.orientation.value().quaternion();
     const glm::vec3 focus =
@@ -151,11 +170,15 @@ glm::vec4 parseBackground(const std::string& text) {
     return glm::vec4(color, 1.0f);
 }
 
-int applyBudget(sg::Node& scene, const BudgetOverride& budget) {
-    if (budget.maxSplats.empty() && budget.errorThreshold.empty()) {
-        return 0;
-    }
+namespace {
+
+struct ParsedBudget {
     std::optional<std::int32_t> maxSplats;
+    std::optional<float> errorThreshold;
+};
+
+ParsedBudget parseBudget(const BudgetOverride& budget) {
+    ParsedBudget parsed;
     if (!budget.maxSplats.empty()) {
         const bool isWhole = budget.maxSplats.size() <= 9 &&
                              std::all_of(budget.maxSplats.begin(), budget.maxSplats.end(),
@@ -164,19 +187,29 @@ int applyBudget(sg::Node& scene, const BudgetOverride& budget) {
             throw DataError("--max-splats: expected a whole number from 0 (no budget) to "
                             "999999999, got '" + budget.maxSplats + "'");
         }
-        maxSplats = std::stoi(budget.maxSplats);
+        parsed.maxSplats = std::stoi(budget.maxSplats);
     }
-    std::optional<float> errorThreshold;
     if (!budget.errorThreshold.empty()) {
-        float value = -1.0f;
-        const char* end = budget.errorThreshold.data() + budget.errorThreshold.size();
-        const auto [parsed, error] = std::from_chars(budget.errorThreshold.data(), end, value);
-        if (error != std::errc() || parsed != end || !std::isfinite(value) || value < 0.0f) {
-            throw DataError("--error-threshold: expected a finite number >= 0 (0: full "
-                            "resolution), got '" + budget.errorThreshold + "'");
-        }
-        errorThreshold = value;
+        parsed.errorThreshold =
+            parseNumber(budget.errorThreshold, "--error-threshold",
+                        "a finite number >= 0 (0: full resolution)",
+                        [](float value) { return value >= 0.0f; });
     }
+    return parsed;
+}
+
+} // namespace
+
+void checkSceneOptions(const Framing& framing, const BudgetOverride& budget) {
+    parseBudget(budget);
+    parseViewChange(framing);
+}
+
+int applyBudget(sg::Node& scene, const BudgetOverride& budget) {
+    if (budget.maxSplats.empty() && budget.errorThreshold.empty()) {
+        return 0;
+    }
+    const ParsedBudget parsed = parseBudget(budget);
     sg::SearchAction search;
     search.setType(nodes::ScalarSplat::classType());
     search.setInterest(sg::SearchAction::Interest::All);
@@ -186,11 +219,11 @@ int applyBudget(sg::Node& scene, const BudgetOverride& budget) {
     }
     for (const sg::Path& path : search.paths()) {
         auto& splat = static_cast<nodes::ScalarSplat&>(*path.tail());
-        if (maxSplats) {
-            splat.maxSplats.setValue(*maxSplats);
+        if (parsed.maxSplats) {
+            splat.maxSplats.setValue(*parsed.maxSplats);
         }
-        if (errorThreshold) {
-            splat.errorThreshold.setValue(*errorThreshold);
+        if (parsed.errorThreshold) {
+            splat.errorThreshold.setValue(*parsed.errorThreshold);
         }
     }
     return static_cast<int>(search.paths().size());

@@ -53,6 +53,10 @@ struct Framing {
     std::string zoom;      ///< magnification > 0 (2: things look twice as large)
 };
 
+/// @brief Checks the view and budget options (throws DataError as withCamera() and applyBudget()
+/// would) before any work: every option is checked before the scene is read.
+void checkSceneOptions(const Framing& framing, const BudgetOverride& budget);
+
 /// @brief Adds --direction, --azimuth, --elevation and --zoom to `command`, filling `framing`.
 void addViewOptions(CLI::App& command, Framing& framing);
 
