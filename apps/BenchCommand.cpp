@@ -150,13 +150,6 @@ void runBench(const BenchArguments& arguments) {
         throw DataError("--backend: expected cpu, gl or auto (or a list, e.g. cpu,gl), got ''");
     }
     options.cpuThreads = arguments.threads;
-    for (const bench::BenchMethod& method : options.methods) {
-        if (method.needsVectors() && std::find(options.backends.begin(), options.backends.end(),
-                                               render::Backend::Cpu) != options.backends.end()) {
-            throw Error("--method: " + method.name() + " draws vector marks, which the CPU "
-                        "backend does not draw yet (use --backend gl)");
-        }
-    }
     const std::string devices = deviceSummary(options, context.get());
     bench::BenchRunner runner(options);
     auto progress = std::make_shared<ProgressPrinter>();

@@ -450,28 +450,14 @@ void runRender(const RenderArguments& arguments) {
         write += secondsSince(writeStart);
         clock.reportWritten(frame);
     };
-    int frame = 0;
-    // The CPU loop moved the clock to `frame` before handing over to GL.
-    [[maybe_unused]] bool clockAtFrame = false;
     std::optional<render::cpu::CpuRenderer> cpu;
     if (backend.backend == render::Backend::Cpu) {
         cpu.emplace(arguments.threads);
         render::FrameAction action(size.x, size.y, background);
-        for (; frame < animation.frames; ++frame) {
+        for (int frame = 0; frame < animation.frames; ++frame) {
             clock.moveTo(frame);
-            const render::Frame& collected = action.collect(*root);
-            if (!render::cpu::CpuRenderer::draws(collected)) {
-                if (request == render::BackendRequest::Cpu) {
-                    throw DataError("--backend cpu: the scene has vector or combined splats, "
-                                    "which the CPU backend does not draw yet; use --backend gl "
-                                    "or auto");
-                }
-                backend.switchToGl("the scene has vector or combined splats (GL only)");
-                cpu.reset();
-                clockAtFrame = true;
-                break;
-            }
-            const image::Image image = cpu->draw(collected, action.statistics(), withDepth);
+            const image::Image image =
+                cpu->draw(action.collect(*root), action.statistics(), withDepth);
             total += action.statistics();
             writeFrame(image, frame);
         }
@@ -480,11 +466,8 @@ void runRender(const RenderArguments& arguments) {
     if (backend.backend == render::Backend::Gl) {
         sg::RenderAction action(size.x, size.y);
         action.setBackground(background);
-        for (; frame < animation.frames; ++frame) {
-            if (!clockAtFrame) {
-                clock.moveTo(frame);
-            }
-            clockAtFrame = false;
+        for (int frame = 0; frame < animation.frames; ++frame) {
+            clock.moveTo(frame);
             action.render(*root);
             const image::Image image = render::renderedImage(
                 action, withDepth ? render::DepthReadback::With : render::DepthReadback::Without);

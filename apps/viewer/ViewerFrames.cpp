@@ -1,7 +1,5 @@
 #include "apps/viewer/ViewerFrames.h"
 
-#include "scenegraph/Error.h"
-#include "scenegraph/Log.h"
 
 #include <cstring>
 
@@ -9,7 +7,7 @@ namespace texsplat::apps {
 
 ViewerFrames::ViewerFrames(render::BackendRequest request, const std::string& renderer,
                            const glm::vec3& background, int threads)
-    : mRequest(request), mRenderer(renderer), mBackground(background, 1.0f) {
+    : mRenderer(renderer), mBackground(background, 1.0f) {
     const bool cpu = request == render::BackendRequest::Cpu ||
                      (request == render::BackendRequest::Auto &&
                       render::isSoftwareRenderer(renderer));
@@ -34,34 +32,15 @@ bool ViewerFrames::resize(const glm::ivec2& size) {
     return true;
 }
 
-void ViewerFrames::useGl() {
-    log(LogLevel::Info, "viewer: the scene has vector or combined splats, which the CPU backend "
-                        "does not draw yet; drawing with GL");
-    mCpu.reset();
-    mFrameAction.reset();
-    mTexture.reset();
-    const glm::ivec2 size = mSize;
-    mSize = glm::ivec2(0);
-    resize(size);
-}
-
 const sg::RenderStatistics& ViewerFrames::render(sg::Node& root) {
     if (mCpu) {
-        const render::Frame& frame = mFrameAction->collect(root);
-        if (render::cpu::CpuRenderer::draws(frame)) {
-            image::Image image = mCpu->draw(frame, mFrameAction->statistics());
-            image.flipVertically(); // a texture's row 0 is the bottom
-            std::vector<float> texels(image.pixelCount() * 4);
-            std::memcpy(texels.data(), image.data(), texels.size() * sizeof(float));
-            mTexture->setData(texels);
-            mHasFrame = true;
-            return mFrameAction->statistics();
-        }
-        if (mRequest == render::BackendRequest::Cpu) {
-            throw DataError("--backend cpu: the scene has vector or combined splats, which the "
-                            "CPU backend does not draw yet; use --backend gl or auto");
-        }
-        useGl();
+        image::Image image = mCpu->draw(mFrameAction->collect(root), mFrameAction->statistics());
+        image.flipVertically(); // a texture's row 0 is the bottom
+        std::vector<float> texels(image.pixelCount() * 4);
+        std::memcpy(texels.data(), image.data(), texels.size() * sizeof(float));
+        mTexture->setData(texels);
+        mHasFrame = true;
+        return mFrameAction->statistics();
     }
     mAction->render(root);
     mHasFrame = true;

@@ -20,7 +20,7 @@ namespace texsplat::apps {
 /// framebuffer, shown as it is) or the CPU (CpuRenderer's image, uploaded as one float texture
 /// per frame), so progressive viewing is interactive on a machine whose GL is a software
 /// rasterizer too. `auto` takes the CPU when the window's GL renderer is llvmpipe, softpipe or
-/// swrast, and falls back to GL for a scene the CPU backend does not draw (vector splats).
+/// swrast.
 ///
 /// Created and used with the window's context current.
 class ViewerFrames {
@@ -35,7 +35,6 @@ public:
     bool resize(const glm::ivec2& size);
 
     /// @brief Draws `root` into the target; answers the frame's statistics.
-    /// @throws DataError for a scene the CPU backend does not draw when it was asked for.
     const sg::RenderStatistics& render(sg::Node& root);
 
     /// @brief Whether a frame was drawn since the last resize().
@@ -49,9 +48,6 @@ public:
     std::string description() const;
 
 private:
-    void useGl();
-
-    render::BackendRequest mRequest;
     std::string mRenderer;
     glm::vec4 mBackground;
     glm::ivec2 mSize{0, 0};

@@ -75,14 +75,6 @@ BackendChoice BackendChoice::resolve(BackendRequest request) {
     }
     return choice;
 }
-
-void BackendChoice::switchToGl(const std::string& why) {
-    const Clock::time_point start = Clock::now();
-    context = std::make_shared<gl::EglContext>();
-    contextSeconds += secondsSince(start);
-    backend = Backend::Gl;
-    reason = "auto: " + why;
-}
 #else
 namespace {
 
@@ -102,9 +94,6 @@ BackendChoice BackendChoice::resolve(BackendRequest request) {
     return choice;
 }
 
-void BackendChoice::switchToGl(const std::string& why) {
-    refuseGl(why);
-}
 #endif
 
 } // namespace texsplat::render

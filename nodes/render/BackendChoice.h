@@ -40,10 +40,6 @@ struct BackendChoice {
     /// cannot, Error in a build without GL); Auto makes one and keeps it unless it fails or its
     /// renderer is a software rasterizer, then takes the CPU (always, without GL).
     static BackendChoice resolve(BackendRequest request);
-
-    /// @brief Falls back from an `auto` CPU choice to GL (for frames the CPU backend does not
-    /// draw); throws GlError when no context can be made.
-    void switchToGl(const std::string& why);
 };
 
 } // namespace texsplat::render

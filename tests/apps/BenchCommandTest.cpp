@@ -175,11 +175,6 @@ TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError,
               "texsplat: error: --backend: expected cpu, gl or auto, got 'metal'\n");
-    output = runTexsplat("bench --dataset tornado8 --backend cpu --method texture,vector");
-    EXPECT_EQ(output.exitCode, 1);
-    EXPECT_EQ(output.standardError, "texsplat: error: --method: vector draws vector marks, "
-                                    "which the CPU backend does not draw yet (use --backend "
-                                    "gl)\n");
     output = runTexsplat("bench --dataset tornado8,ml8 --method texture,vector");
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError, "texsplat: error: --method: vector draws vectors, but "

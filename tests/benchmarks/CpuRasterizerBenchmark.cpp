@@ -24,6 +24,8 @@
 namespace {
 
 using texsplat::render::cpu::ColorPlanes;
+using texsplat::render::cpu::FootprintSampler;
+using texsplat::render::cpu::SplatRaster;
 using texsplat::test::CompositeWorkload;
 using texsplat::test::WorkloadCamera;
 
@@ -78,8 +80,14 @@ void timeComposite(benchmark::State& state, const Composite& composite, const st
 }
 
 void CompositeSplatsSimd(benchmark::State& state) {
-    timeComposite(state, texsplat::render::cpu::compositeSplats,
-                  texsplat::render::cpu::compositeTarget());
+    timeComposite(
+        state,
+        [](const SplatRaster* splats, std::size_t count, const FootprintSampler& sampler,
+           ColorPlanes& planes, int rowBegin, int rowEnd) {
+            texsplat::render::cpu::compositeSplats(splats, count, &sampler, nullptr, planes,
+                                                   rowBegin, rowEnd);
+        },
+        texsplat::render::cpu::compositeTarget());
 }
 BENCHMARK(CompositeSplatsSimd)
     ->Args({0, 64})

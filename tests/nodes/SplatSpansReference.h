@@ -141,7 +141,7 @@ struct CompositeWorkload {
 inline std::vector<render::cpu::SplatRaster> setUpSplats(const render::cpu::SplatSetup& setup,
                                                          const std::vector<octree::Splat>& splats) {
     std::vector<render::cpu::SplatRaster> rasters(splats.size());
-    setup.setUp(splats.data(), splats.size(), rasters.data());
+    setup.setUp(splats.data(), nullptr, splats.size(), rasters.data());
     return rasters;
 }
 

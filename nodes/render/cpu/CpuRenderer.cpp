@@ -1,9 +1,12 @@
 #include "nodes/render/cpu/CpuRenderer.h"
 
+#include "nodes/kernel/FootprintTexture.h"
+#include "nodes/kernel/VectorSplatTable.h"
 #include "nodes/render/cpu/ColorPlanes.h"
 #include "nodes/render/cpu/MeshRasterizer.h"
 #include "nodes/render/cpu/SplatRaster.h"
 #include "nodes/render/cpu/SplatSpans.h"
+#include "nodes/render/cpu/detail/SamplerCache.h"
 #include "octree/Splat.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/detail/DepthOrderedRuns.h"
@@ -46,29 +49,34 @@ struct Bands {
 struct PreparedBatch {
     const FrameSplats* splats;
     std::unique_ptr<const SplatSetup> setup;
+    std::shared_ptr<const MarkSampler> marks; // vector and combined splats
     std::shared_ptr<const FootprintSampler> sampler;
 };
 
-std::vector<PreparedBatch> prepareBatches(const Frame& frame) {
+std::vector<PreparedBatch> prepareBatches(const Frame& frame, detail::SamplerCache& cache) {
     std::vector<PreparedBatch> batches;
     for (const FrameSplats& splats : frame.splats) {
         const SplatFootprint& footprint = *splats.footprint;
-        if (!CpuRenderer::draws(footprint.shape)) {
-            throw DataError("CPU backend: vector and combined splats are drawn by the GL "
-                            "backend only; render with --backend gl");
-        }
         PreparedBatch batch;
         batch.splats = &splats;
-        batch.setup = std::make_unique<const SplatSetup>(
-            splats.view, static_cast<float>(footprint.extent), frame.width, frame.height);
-        // Batches of one node share the footprint; lay it out once.
-        for (const PreparedBatch& other : batches) {
-            if (other.splats->footprint == splats.footprint) {
-                batch.sampler = other.sampler;
-            }
+        std::optional<MarkSetup> marks;
+        if (footprint.table) {
+            const bool combined = footprint.shape == SplatShape::CombinedSquare;
+            batch.marks = std::make_shared<const MarkSampler>(cache.marks(footprint),
+                                                              splats.marks, combined);
+            marks.emplace();
+            marks->isCombined = combined;
+            marks->stretch = splats.marks.stretch;
+            marks->rowShift = splats.marks.rowShift;
+            marks->rows = footprint.table->rows();
+            marks->columns = footprint.table->columns();
+            marks->footprintExtent =
+                footprint.texture ? static_cast<float>(footprint.texture->extent()) : 1.0f;
         }
-        if (!batch.sampler) {
-            batch.sampler = std::make_shared<const FootprintSampler>(footprint);
+        batch.setup = std::make_unique<const SplatSetup>(
+            splats.view, static_cast<float>(footprint.extent), frame.width, frame.height, marks);
+        if (footprint.texture) {
+            batch.sampler = cache.footprint(splats.footprint);
         }
         batches.push_back(std::move(batch));
     }
@@ -79,17 +87,12 @@ std::vector<PreparedBatch> prepareBatches(const Frame& frame) {
 
 CpuRenderer::CpuRenderer(int threads)
     : mThreads(threads > 0 ? threads
-                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))) {}
+                           : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))),
+      mSamplers(std::make_unique<detail::SamplerCache>()) {}
 
-bool CpuRenderer::draws(SplatShape shape) {
-    return shape == SplatShape::TexturedSquare || shape == SplatShape::GouraudPolygon;
-}
-
-bool CpuRenderer::draws(const Frame& frame) {
-    return std::all_of(frame.splats.begin(), frame.splats.end(), [](const FrameSplats& splats) {
-        return draws(splats.footprint->shape);
-    });
-}
+CpuRenderer::~CpuRenderer() = default;
+CpuRenderer::CpuRenderer(CpuRenderer&&) noexcept = default;
+CpuRenderer& CpuRenderer::operator=(CpuRenderer&&) noexcept = default;
 
 std::string CpuRenderer::description() const {
     return std::string("CPU (") + compositeTarget() + ", " + std::to_string(mThreads) +
@@ -99,7 +102,7 @@ std::string CpuRenderer::description() const {
 image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statistics,
                                bool withDepth) const {
     Clock::time_point start = Clock::now();
-    const std::vector<PreparedBatch> batches = prepareBatches(frame);
+    const std::vector<PreparedBatch> batches = prepareBatches(frame, *mSamplers);
     ColorPlanes planes(frame.width, frame.height, frame.background, !frame.meshes.empty());
     const Bands bands(frame.height, mThreads);
     // More threads than the hardware has would only wait for each other (and oneTBB warns);
@@ -130,17 +133,23 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
         for (const sg::detail::SplatRun& run : runs) {
             const PreparedBatch& batch = batches[run.batch];
             const octree::Splat* splats = batch.splats->splats->splats().data();
+            const octree::SplatVector* vectors = batch.splats->splats->hasVectors()
+                                                     ? batch.splats->splats->vectors().data()
+                                                     : nullptr;
             for (std::size_t chunk = run.begin; chunk < run.end; chunk += kChunk) {
                 const std::size_t count = std::min(kChunk, run.end - chunk);
                 tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
                                   [&](const tbb::blocked_range<std::size_t>& range) {
-                                      batch.setup->setUp(splats + chunk + range.begin(),
+                                      const std::size_t first = chunk + range.begin();
+                                      batch.setup->setUp(splats + first,
+                                                         vectors ? vectors + first : nullptr,
                                                          range.size(),
                                                          rasters.data() + range.begin());
                                   });
                 tbb::parallel_for(0, bands.count, [&](int band) {
-                    compositeSplats(rasters.data(), count, *batch.sampler, planes,
-                                    bands.begin(band), bands.end(band, frame.height));
+                    compositeSplats(rasters.data(), count, batch.sampler.get(),
+                                    batch.marks.get(), planes, bands.begin(band),
+                                    bands.end(band, frame.height));
                 });
             }
         }

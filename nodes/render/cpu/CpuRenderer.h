@@ -4,9 +4,13 @@
 #include "nodes/render/Frame.h"
 #include "scenegraph/actions/RenderStatistics.h"
 
+#include <memory>
 #include <string>
 
 namespace texsplat::render::cpu {
+namespace detail {
+class SamplerCache;
+} // namespace detail
 
 /// @brief The CPU backend (DESIGN.md, "Backends"): draws a Frame without GL, as the GL backend
 /// does — opaque meshes with a depth buffer, then every splat depth-tested against them,
@@ -18,17 +22,20 @@ namespace texsplat::render::cpu {
 /// are set up in chunks (the map from pixels to the splat's square, its depth plane and its
 /// pixel box; SplatRaster) in parallel, then composited by SIMD rows (compositeSplats()).
 ///
-/// Draws TexturedSquare and GouraudPolygon splats (the fan through its tabulated footprint);
-/// vector and combined splats are left to the GL backend for now (DataError).
+/// Draws every kind of splat: TexturedSquare, GouraudPolygon (the fan through its tabulated
+/// footprint), and the vector and combined splats' squares turned to their vectors with the
+/// mark table.
 class CpuRenderer {
 public:
     /// @brief A renderer using `threads` threads (0: one per hardware thread).
     explicit CpuRenderer(int threads = 0);
+    ~CpuRenderer();
+    CpuRenderer(CpuRenderer&&) noexcept;
+    CpuRenderer& operator=(CpuRenderer&&) noexcept;
 
     /// @brief Draws `frame`; the time counts as RenderPhase::Draw in `statistics`, turning the
     /// planes into the image as ReadBack. With `withDepth`, the image carries the window-space
     /// depth of the meshes (1 where there is none), as the GL backend reads it back.
-    /// @throws DataError for splats this backend does not draw (vector, combined).
     image::Image draw(const Frame& frame, sg::RenderStatistics& statistics,
                       bool withDepth = false) const;
 
@@ -38,14 +45,13 @@ public:
     /// @brief What the report names the backend: "CPU (AVX2, 2 threads)".
     std::string description() const;
 
-    /// @brief Whether this backend draws splats of `shape`.
-    static bool draws(SplatShape shape);
-
-    /// @brief Whether this backend draws every splat batch of `frame`.
-    static bool draws(const Frame& frame);
 
 private:
     int mThreads;
+    // The footprints and mark tables laid out for the rasterizer, kept while their nodes' are
+    // (a frame after frame of the same scene lays them out once). Not thread-safe: one draw()
+    // at a time.
+    std::unique_ptr<detail::SamplerCache> mSamplers;
 };
 
 } // namespace texsplat::render::cpu

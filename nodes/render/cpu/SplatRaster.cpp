@@ -2,6 +2,7 @@
 
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/RadialKernel.h"
+#include "nodes/kernel/VectorSplatTable.h"
 #include "octree/Splat.h"
 
 #include <glm/geometric.hpp>
@@ -70,8 +71,44 @@ FootprintSampler::FootprintSampler(const SplatFootprint& footprint) {
     peak = *std::max_element(values.begin(), values.end());
 }
 
-SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int height)
-    : mView(view) {
+MarkSampler::MarkSampler(std::shared_ptr<const MarkPlanes> table, const MarkDrawing& drawing,
+                         bool combined)
+    : planes(std::move(table)), isCombined(combined),
+      blend(drawing.textureOperator == MarkOperator::Blend), contrast(drawing.contrast) {
+    for (int c = 0; c < 3; ++c) {
+        blendColor[c] = drawing.blendColor[c];
+    }
+}
+
+MarkPlanes::MarkPlanes(const kernel::VectorSplatTable& table)
+    : resolution(table.resolution()), stride(table.resolution() + 2),
+      layerSize(static_cast<std::size_t>(stride) * static_cast<std::size_t>(stride)) {
+    const std::size_t layers = static_cast<std::size_t>(table.rows() * table.columns());
+    intensity.resize(layers * layerSize);
+    opacity.resize(layers * layerSize);
+    const std::vector<float>& texels = table.texels();
+    const auto n = static_cast<std::size_t>(resolution);
+    const auto toByte = [](float value) {
+        return std::round(std::clamp(value, 0.0f, 1.0f) * 255.0f) / 255.0f;
+    };
+    for (std::size_t layer = 0; layer < layers; ++layer) {
+        for (int row = 0; row < stride; ++row) {
+            const auto j = static_cast<std::size_t>(std::clamp(row - 1, 0, resolution - 1));
+            for (int column = 0; column < stride; ++column) {
+                const auto i = static_cast<std::size_t>(std::clamp(column - 1, 0, resolution - 1));
+                const std::size_t source = 2 * ((layer * n + j) * n + i);
+                const std::size_t target =
+                    layer * layerSize + static_cast<std::size_t>(row) * stride + column;
+                intensity[target] = toByte(texels[source]);
+                opacity[target] = toByte(texels[source + 1]);
+            }
+        }
+    }
+}
+
+SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int height,
+                       std::optional<MarkSetup> marks)
+    : mView(view), mMarks(marks) {
     const glm::mat4& m = view.localToClip;
     mRows.extent = extent;
     mRows.width = width;
@@ -97,8 +134,8 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
             }
         }
     }
-    mIsAffine = !view.isPerspective && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f &&
-                m[3][3] == 1.0f;
+    mIsAffine = !marks && !view.isPerspective && m[0][3] == 0.0f && m[1][3] == 0.0f &&
+                m[2][3] == 0.0f && m[3][3] == 1.0f;
     if (!mIsAffine) {
         return;
     }
@@ -128,9 +165,11 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
     mLengthScale = 1.0f / frame.eLength;
 }
 
-void SplatSetup::setUp(const octree::Splat* splats, std::size_t count, SplatRaster* out) const {
+void SplatSetup::setUp(const octree::Splat* splats, const octree::SplatVector* vectors,
+                       std::size_t count, SplatRaster* out) const {
     if (!mIsAffine) {
-        setUpProjective(mRows, splats, count, out);
+        setUpProjective(mRows, splats, mMarks ? vectors : nullptr, mMarks ? &*mMarks : nullptr,
+                        count, out);
         return;
     }
     for (std::size_t i = 0; i < count; ++i) {

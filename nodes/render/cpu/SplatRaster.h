@@ -1,14 +1,18 @@
 #pragma once
 
+#include "nodes/render/MarkDrawing.h"
 #include "nodes/render/SplatFootprint.h"
 #include "nodes/render/SplatView.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
+#include <optional>
 #include <vector>
 
 namespace texsplat::octree {
 struct Splat;
+struct SplatVector;
 } // namespace texsplat::octree
 
 namespace texsplat::render::cpu {
@@ -34,6 +38,35 @@ struct FootprintSampler {
     explicit FootprintSampler(const SplatFootprint& footprint);
 };
 
+/// @brief A vector splat table laid out for the rasterizer: per layer, the intensity and the
+/// opacity planes with a border of one texel copied from the edge (GL's CLAMP_TO_EDGE), each
+/// value rounded to 8 bits as the GL backend's RG8 texture array holds it. Made once per table
+/// (CpuRenderer keeps it while the table lives).
+struct MarkPlanes {
+    int resolution = 0;           ///< N, texels per side of a layer
+    int stride = 0;               ///< N + 2
+    std::size_t layerSize = 0;    ///< (N + 2)²
+    std::vector<float> intensity; ///< I, layers × (N + 2)²
+    std::vector<float> opacity;   ///< A_tex, layers × (N + 2)²
+
+    /// @brief The planes of `table`.
+    explicit MarkPlanes(const kernel::VectorSplatTable& table);
+};
+
+/// @brief A batch's marks as the rasterizer draws them: the table's planes and the texture
+/// operator of this frame.
+struct MarkSampler {
+    std::shared_ptr<const MarkPlanes> planes; ///< the table
+    bool isCombined = false;                  ///< combined splats (else vector splats)
+    bool blend = false;                       ///< MarkOperator::Blend (else Modulate)
+    float blendColor[3]{};                    ///< C_const of Blend
+    float contrast = 1.0f; ///< combined splats: how much the marks change the colour
+
+    /// @brief `planes` drawn as `drawing` says.
+    MarkSampler(std::shared_ptr<const MarkPlanes> planes, const MarkDrawing& drawing,
+                bool combined);
+};
+
 /// @brief One splat set up for rasterizing: the projective map from a pixel to the splat's
 /// square, its depth plane, its medium and the pixels it may cover.
 ///
@@ -52,10 +85,15 @@ struct SplatRaster {
     float lengthScale; ///< footprint texel → line integral: size / |S⁻¹d|
     std::int32_t columnBegin, columnEnd; ///< pixels [begin, end) the square may cover
     std::int32_t rowBegin, rowEnd;       ///< rows [begin, end), top row first
-    std::int32_t flags;                  ///< kProjective | kClipped
+    std::int32_t flags;                  ///< kProjective | kClipped | kMarks
+    // Vector and combined splats only (see MarkSetup):
+    std::int32_t layer;            ///< the table's layer: row (with the phase) and column
+    float polygonAlpha;            ///< vector splats: opacity of one voxel's slab, 1 − e^(−τ·ls)
+    float footprintFromSquare[4];  ///< combined: (a, b) → the scalar footprint's square, row major
 
     static constexpr std::int32_t kProjective = 1; ///< w′ varies over the pixels
     static constexpr std::int32_t kClipped = 2;    ///< crosses the near or far plane: clip per pixel
+    static constexpr std::int32_t kMarks = 4;      ///< the square is turned to the vector: marks
 
     /// @brief Whether the splat covers no pixel of the image (then nothing else is set).
     bool isEmpty() const { return columnBegin >= columnEnd || rowBegin >= rowEnd; }
@@ -74,10 +112,25 @@ struct ProjectiveRows {
     bool isPerspective = false;   ///< splats face the eye (else `direction`)
 };
 
+/// @brief What the set-up of vector and combined splats needs besides ProjectiveRows: the
+/// square is turned in its plane so that its x axis lies along the splat's vector as the camera
+/// projects it, stretched along it, as the GL vector splat vertex shader does
+/// (detail/VectorSplatShaders.h).
+struct MarkSetup {
+    bool isCombined = false;      ///< combined splats draw without marks too; vector splats not
+    float stretch = 1.0f;         ///< elongation along the vector, >= 1
+    int rowShift = 0;             ///< the animation phase in table rows
+    int rows = 1;                 ///< table rows
+    int columns = 1;              ///< table columns
+    float footprintExtent = 1.6f; ///< combined: the scalar footprint's half-width in voxels
+};
+
 /// @brief Sets up `count` splats for `rows`, as SplatSetup says, SIMD over splats (Highway,
-/// dispatched at run time); out[i] is splats[i]'s raster.
-void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats, std::size_t count,
-                     SplatRaster* out);
+/// dispatched at run time); out[i] is splats[i]'s raster. With `vectors` (parallel to `splats`)
+/// and `marks`, as vector or combined splats.
+void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats,
+                     const octree::SplatVector* vectors, const MarkSetup* marks,
+                     std::size_t count, SplatRaster* out);
 
 /// @brief Sets up the splats of one batch for rasterizing as the GL backend draws them (same
 /// square, same texture coordinates).
@@ -89,18 +142,23 @@ void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats, st
 class SplatSetup {
 public:
     /// @brief The setup for splats seen through `view`, squares `extent` voxels from the centre
-    /// at size 1, in an image of `width` x `height` pixels.
-    SplatSetup(const SplatView& view, float extent, int width, int height);
+    /// at size 1, in an image of `width` x `height` pixels; with `marks`, vector or combined
+    /// splats (always set up as projective).
+    SplatSetup(const SplatView& view, float extent, int width, int height,
+               std::optional<MarkSetup> marks = std::nullopt);
 
     /// @brief Sets up `count` splats into `out`: an empty raster for a splat that covers no
-    /// pixel or lies wholly outside the near/far planes.
-    void setUp(const octree::Splat* splats, std::size_t count, SplatRaster* out) const;
+    /// pixel or lies wholly outside the near/far planes. `vectors` (parallel to `splats`) is
+    /// needed with marks and ignored without.
+    void setUp(const octree::Splat* splats, const octree::SplatVector* vectors,
+               std::size_t count, SplatRaster* out) const;
 
 private:
     SplatRaster orthographic(const octree::Splat& splat) const;
 
     SplatView mView;
     ProjectiveRows mRows;
+    std::optional<MarkSetup> mMarks;
     // Orthographic views: the square at size 1 and the centre's pixel.
     bool mIsAffine = false;
     float mSquareFromPixel[2][2]{}; // pixel offset → unit a, b

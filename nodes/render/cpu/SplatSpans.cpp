@@ -59,10 +59,50 @@ HWY_INLINE V Footprint(D d, const FootprintSampler& sampler, V a, V b) {
     }
 }
 
-template <bool kRadial>
+// The table's (intensity, opacity) at square coordinates (a, b) of layer `layer`: bilinear in
+// the padded planes (see MarkSampler), as GL samples the RG8 texture array.
+template <class D, class V>
+HWY_INLINE void SampleMarks(D d, const MarkPlanes& marks, std::int32_t layer, V a, V b,
+                            V& intensity, V& opacity) {
+    const hn::RebindToSigned<D> di;
+    const V zero = hn::Zero(d);
+    const float half = 0.5f * static_cast<float>(marks.resolution);
+    const V scale = hn::Set(d, half);
+    const V offset = hn::Set(d, half + 0.5f);
+    const V high = hn::Set(d, static_cast<float>(marks.resolution) + 0.5f);
+    const V s = hn::Min(hn::Max(hn::MulAdd(a, scale, offset), zero), high);
+    const V t = hn::Min(hn::Max(hn::MulAdd(b, scale, offset), zero), high);
+    const V s0 = hn::Floor(s);
+    const V t0 = hn::Floor(t);
+    const V fs = hn::Sub(s, s0);
+    const V ft = hn::Sub(t, t0);
+    const auto index =
+        hn::ConvertTo(di, hn::MulAdd(t0, hn::Set(d, static_cast<float>(marks.stride)), s0));
+    const auto above = hn::Add(index, hn::Set(di, marks.stride));
+    const auto next = hn::Set(di, 1);
+    const std::size_t base = static_cast<std::size_t>(layer) * marks.layerSize;
+    const auto bilinear = [&](const float* values) {
+        const V f00 = hn::GatherIndex(d, values, index);
+        const V f10 = hn::GatherIndex(d, values, hn::Add(index, next));
+        const V f01 = hn::GatherIndex(d, values, above);
+        const V f11 = hn::GatherIndex(d, values, hn::Add(above, next));
+        const V bottom = hn::MulAdd(fs, hn::Sub(f10, f00), f00);
+        const V top = hn::MulAdd(fs, hn::Sub(f11, f01), f01);
+        return hn::MulAdd(ft, hn::Sub(top, bottom), bottom);
+    };
+    intensity = bilinear(marks.intensity.data() + base);
+    opacity = bilinear(marks.opacity.data() + base);
+}
+
+// What a batch's splats are: scalar (radial profile or texture), vector marks, or combined.
+enum class Kind { Radial, Texture, Vector, Combined };
+
+template <Kind kKind>
 void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
-                         const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
-                         int rowEnd) {
+                         const FootprintSampler* sampler, const MarkSampler* marks,
+                         ColorPlanes& planes, int rowBegin, int rowEnd) {
+    // Eight lanes: a splat's box is about as wide at the usual zoom, and 16 lanes (AVX-512)
+    // measured no faster (the loop is bound by each row's latency, not its width).
     const hn::CappedTag<float, 8> d;
     const int lanes = static_cast<int>(hn::Lanes(d));
     const auto lane = hn::Iota(d, 0.0f);
@@ -89,7 +129,8 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
         const auto inverseTau = hn::Set(d, absorbs ? 1.0f / splat.extinction : 0.0f);
         const auto lengthScale = hn::Set(d, splat.lengthScale);
         // Thin splats (optical depth at most ½ anywhere) take φ's series, thick ones Expm1.
-        const bool thin = splat.extinction * splat.lengthScale * sampler.peak <= 0.5f;
+        const bool thin =
+            sampler != nullptr && splat.extinction * splat.lengthScale * sampler->peak <= 0.5f;
         const auto ax = hn::Set(d, splat.square[0]);
         const auto bx = hn::Set(d, splat.square[3]);
         const auto wx = hn::Set(d, splat.square[6]);
@@ -137,9 +178,46 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
                 if (hn::AllFalse(d, inside)) {
                     continue;
                 }
+                if constexpr (kKind == Kind::Vector) {
+                    // The polygon's colour and the opacity of one voxel's slab, through the
+                    // texture operator: MODULATE (C·I, A·A_tex) or BLEND (C(1 − I) + K·I, A·A_tex).
+                    auto intensity = zero;
+                    auto opacity = zero;
+                    SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
+                    const auto alpha = hn::IfThenElseZero(
+                        inside, hn::Mul(hn::Set(d, splat.polygonAlpha), opacity));
+                    const auto mark = [&](decltype(alpha) colour, float blendColour) {
+                        return marks->blend
+                                   ? hn::MulAdd(colour, hn::Sub(one, intensity),
+                                                hn::Mul(hn::Set(d, blendColour), intensity))
+                                   : hn::Mul(colour, intensity);
+                    };
+                    const auto transmitted = hn::Sub(one, alpha);
+                    const auto over = [&](float* plane, decltype(alpha) source) {
+                        const auto destination = hn::LoadU(d, plane + column);
+                        hn::StoreU(hn::Min(hn::MulAdd(transmitted, destination, source), largest),
+                                   d, plane + column);
+                    };
+                    over(redRow, hn::Min(hn::Mul(mark(red, marks->blendColor[0]), alpha), largest));
+                    over(greenRow,
+                         hn::Min(hn::Mul(mark(green, marks->blendColor[1]), alpha), largest));
+                    over(blueRow, hn::Min(hn::Mul(mark(blue, marks->blendColor[2]), alpha), largest));
+                    over(alphaRow, alpha);
+                    continue;
+                }
+                auto footprintA = a;
+                auto footprintB = b;
+                if constexpr (kKind == Kind::Combined) {
+                    // The scalar part samples its footprint where a TextureSplat would.
+                    const float* m = splat.footprintFromSquare;
+                    footprintA = hn::MulAdd(hn::Set(d, m[0]), a, hn::Mul(hn::Set(d, m[1]), b));
+                    footprintB = hn::MulAdd(hn::Set(d, m[2]), a, hn::Mul(hn::Set(d, m[3]), b));
+                }
+                constexpr bool kRadial = kKind == Kind::Radial;
                 const auto f = hn::IfThenElseZero(
-                    inside,
-                    hn::Mul(hn::Max(Footprint<kRadial>(d, sampler, a, b), zero), lengthScale));
+                    inside, hn::Mul(hn::Max(Footprint<kRadial>(d, *sampler, footprintA, footprintB),
+                                            zero),
+                                    lengthScale));
                 const auto opticalDepth = hn::Mul(tau, f);
                 auto alpha = opticalDepth;
                 auto weight = f;
@@ -163,9 +241,33 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
                     hn::StoreU(hn::Min(hn::MulAdd(transmitted, destination, source), largest), d,
                                plane + column);
                 };
-                over(redRow, hn::Min(hn::Mul(red, weight), largest));
-                over(greenRow, hn::Min(hn::Mul(green, weight), largest));
-                over(blueRow, hn::Min(hn::Mul(blue, weight), largest));
+                auto colourRed = hn::Mul(red, weight);
+                auto colourGreen = hn::Mul(green, weight);
+                auto colourBlue = hn::Mul(blue, weight);
+                if constexpr (kKind == Kind::Combined) {
+                    // The marks change only the colour, by `contrast`: BLEND dissolves towards K
+                    // by c·I, MODULATE multiplies by 1 − c + c·I (no marks: I = 0).
+                    auto intensity = zero;
+                    auto opacity = zero;
+                    if ((splat.flags & SplatRaster::kMarks) != 0) {
+                        SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
+                    }
+                    intensity = hn::Mul(hn::Set(d, marks->contrast), intensity);
+                    const auto mark = [&](decltype(weight) colour, float blendColour) {
+                        return marks->blend
+                                   ? hn::MulAdd(colour, hn::Sub(one, intensity),
+                                                hn::Mul(hn::Set(d, blendColour),
+                                                        hn::Mul(intensity, alpha)))
+                                   : hn::Mul(colour, hn::Add(hn::Sub(one, hn::Set(d, marks->contrast)),
+                                                             intensity));
+                    };
+                    colourRed = mark(colourRed, marks->blendColor[0]);
+                    colourGreen = mark(colourGreen, marks->blendColor[1]);
+                    colourBlue = mark(colourBlue, marks->blendColor[2]);
+                }
+                over(redRow, hn::Min(colourRed, largest));
+                over(greenRow, hn::Min(colourGreen, largest));
+                over(blueRow, hn::Min(colourBlue, largest));
                 over(alphaRow, alpha);
             }
         }
@@ -173,12 +275,18 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
 }
 
 void CompositeSplats(const SplatRaster* splats, std::size_t count,
-                     const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
-                     int rowEnd) {
-    if (sampler.isRadial) {
-        CompositeSplatsWith<true>(splats, count, sampler, planes, rowBegin, rowEnd);
+                     const FootprintSampler* sampler, const MarkSampler* marks,
+                     ColorPlanes& planes, int rowBegin, int rowEnd) {
+    if (marks != nullptr && !marks->isCombined) {
+        CompositeSplatsWith<Kind::Vector>(splats, count, sampler, marks, planes, rowBegin, rowEnd);
+    } else if (marks != nullptr) {
+        CompositeSplatsWith<Kind::Combined>(splats, count, sampler, marks, planes, rowBegin,
+                                            rowEnd);
+    } else if (sampler->isRadial) {
+        CompositeSplatsWith<Kind::Radial>(splats, count, sampler, marks, planes, rowBegin, rowEnd);
     } else {
-        CompositeSplatsWith<false>(splats, count, sampler, planes, rowBegin, rowEnd);
+        CompositeSplatsWith<Kind::Texture>(splats, count, sampler, marks, planes, rowBegin,
+                                           rowEnd);
     }
 }
 
@@ -194,9 +302,10 @@ HWY_EXPORT(CompositeSplats);
 HWY_EXPORT(CompositeTarget);
 
 void compositeSplats(const SplatRaster* splats, std::size_t count,
-                     const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
-                     int rowEnd) {
-    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, count, sampler, planes, rowBegin, rowEnd);
+                     const FootprintSampler* sampler, const MarkSampler* marks,
+                     ColorPlanes& planes, int rowBegin, int rowEnd) {
+    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, count, sampler, marks, planes, rowBegin,
+                                          rowEnd);
 }
 
 const char* compositeTarget() { return HWY_DYNAMIC_DISPATCH(CompositeTarget)(); }

@@ -19,9 +19,13 @@ namespace texsplat::render::cpu {
 /// instruction set of the CPU (AVX-512, AVX2, SSE4 …); 1 − e^(−x) is Highway's Expm1 (a few
 /// ulp). A pixel's arithmetic does not depend on the row range or on which lane holds it, so
 /// the image is the same for any split of the rows among threads.
+///
+/// With `marks`, vector splats (the table through the texture operator, with the opacity of
+/// one voxel's slab) or combined splats (the scalar medium, its colour changed by the marks),
+/// as the GL vector splat fragment shader draws them (detail/VectorSplatShaders.h).
 void compositeSplats(const SplatRaster* splats, std::size_t count,
-                     const FootprintSampler& sampler, ColorPlanes& planes, int rowBegin,
-                     int rowEnd);
+                     const FootprintSampler* sampler, const MarkSampler* marks,
+                     ColorPlanes& planes, int rowBegin, int rowEnd);
 
 /// @brief The instruction set compositeSplats() runs with on this CPU ("AVX2", "AVX3" …).
 const char* compositeTarget();

@@ -1,0 +1,36 @@
+#pragma once
+
+#include "nodes/render/SplatFootprint.h"
+#include "nodes/render/cpu/SplatRaster.h"
+
+#include <memory>
+#include <vector>
+
+namespace texsplat::render::cpu::detail {
+
+/// The footprint samplers and mark planes a CpuRenderer has laid out, one per SplatFootprint
+/// (a node's description for its current fields), dropped when the footprint is gone.
+class SamplerCache {
+public:
+    /// The sampler of `footprint` (which must carry a texture), laid out on first use.
+    std::shared_ptr<const FootprintSampler>
+    footprint(const std::shared_ptr<const SplatFootprint>& footprint);
+
+    /// The planes of `footprint`'s mark table, laid out on first use of that table.
+    std::shared_ptr<const MarkPlanes> marks(const SplatFootprint& footprint);
+
+private:
+    struct FootprintEntry {
+        std::weak_ptr<const SplatFootprint> key;
+        std::shared_ptr<const FootprintSampler> sampler;
+    };
+    struct MarkEntry {
+        std::weak_ptr<const kernel::VectorSplatTable> key;
+        std::shared_ptr<const MarkPlanes> planes;
+    };
+
+    std::vector<FootprintEntry> mFootprints;
+    std::vector<MarkEntry> mMarks;
+};
+
+} // namespace texsplat::render::cpu::detail
