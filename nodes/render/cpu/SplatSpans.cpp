@@ -17,38 +17,38 @@ namespace hn = hwy::HWY_NAMESPACE;
 
 // The footprint at square coordinates (a, b), before the length scale: the radial profile at
 // a² + b², or the padded texture's bilinear lookup (see FootprintSampler).
-template <bool kRadial, class D, class V>
-HWY_INLINE V Footprint(D d, const FootprintSampler& sampler, V a, V b) {
-    const hn::RebindToSigned<D> di;
-    const V zero = hn::Zero(d);
-    const float* values = sampler.values.data();
-    if constexpr (kRadial) {
-        constexpr float kSamples = static_cast<float>(FootprintSampler::kProfileSamples);
-        const V position = hn::Min(hn::Mul(hn::MulAdd(a, a, hn::Mul(b, b)),
-                                           hn::Set(d, 0.5f * kSamples)),
-                                   hn::Set(d, kSamples));
-        const V floor = hn::Floor(position);
-        const auto index = hn::ConvertTo(di, floor);
-        const V low = hn::GatherIndex(d, values, index);
-        const V high = hn::GatherIndex(d, values, hn::Add(index, hn::Set(di, 1)));
-        return hn::MulAdd(hn::Sub(position, floor), hn::Sub(high, low), low);
-    } else {
-        // a ∈ [−1, 1] → padded texel coordinate: GL's (a/2 + ½)·N − ½, plus the border texel;
-        // clamped so that lanes off the square still read inside the texture.
-        const float half = 0.5f * static_cast<float>(sampler.resolution);
+// Bilinear lookups in an N×N texture padded by one texel (FootprintSampler, MarkPlanes) at
+// square coordinates (a, b) ∈ [−1, 1]²: GL's texel coordinate (a/2 + ½)·N − ½, plus the border
+// texel, clamped so that lanes off the square still read inside the texture.
+template <class D> struct PaddedLookup {
+    using V = hn::Vec<D>;
+    using I = hn::Vec<hn::RebindToSigned<D>>;
+    D d;
+    I index; // the lower-left texel
+    I above; // the texel above it
+    V fs, ft;
+
+    PaddedLookup(D tag, int resolution, int stride, V a, V b) : d(tag) {
+        const hn::RebindToSigned<D> di;
+        const V zero = hn::Zero(d);
+        const float half = 0.5f * static_cast<float>(resolution);
         const V scale = hn::Set(d, half);
         const V offset = hn::Set(d, half + 0.5f);
-        const V high = hn::Set(d, static_cast<float>(sampler.resolution) + 0.5f);
+        const V high = hn::Set(d, static_cast<float>(resolution) + 0.5f);
         const V s = hn::Min(hn::Max(hn::MulAdd(a, scale, offset), zero), high);
         const V t = hn::Min(hn::Max(hn::MulAdd(b, scale, offset), zero), high);
         const V s0 = hn::Floor(s);
         const V t0 = hn::Floor(t);
-        const V fs = hn::Sub(s, s0);
-        const V ft = hn::Sub(t, t0);
-        const auto index =
-            hn::ConvertTo(di, hn::MulAdd(t0, hn::Set(d, static_cast<float>(sampler.stride)), s0));
-        const auto above = hn::Add(index, hn::Set(di, sampler.stride));
-        const auto next = hn::Set(di, 1);
+        fs = hn::Sub(s, s0);
+        ft = hn::Sub(t, t0);
+        index = hn::ConvertTo(di, hn::MulAdd(t0, hn::Set(d, static_cast<float>(stride)), s0));
+        above = hn::Add(index, hn::Set(di, stride));
+    }
+
+    // The bilinear value of the texture at `values`.
+    V operator()(const float* values) const {
+        const hn::RebindToSigned<D> di;
+        const I next = hn::Set(di, 1);
         const V f00 = hn::GatherIndex(d, values, index);
         const V f10 = hn::GatherIndex(d, values, hn::Add(index, next));
         const V f01 = hn::GatherIndex(d, values, above);
@@ -57,41 +57,39 @@ HWY_INLINE V Footprint(D d, const FootprintSampler& sampler, V a, V b) {
         const V top = hn::MulAdd(fs, hn::Sub(f11, f01), f01);
         return hn::MulAdd(ft, hn::Sub(top, bottom), bottom);
     }
+};
+
+// The footprint at square coordinates (a, b), before the length scale: the radial profile at
+// a² + b², or the padded texture's bilinear lookup (see FootprintSampler).
+template <bool kRadial, class D, class V>
+HWY_INLINE V Footprint(D d, const FootprintSampler& sampler, V a, V b) {
+    if constexpr (kRadial) {
+        const hn::RebindToSigned<D> di;
+        constexpr float kSamples = static_cast<float>(FootprintSampler::kProfileSamples);
+        const V position = hn::Min(hn::Mul(hn::MulAdd(a, a, hn::Mul(b, b)),
+                                           hn::Set(d, 0.5f * kSamples)),
+                                   hn::Set(d, kSamples));
+        const V floor = hn::Floor(position);
+        const auto index = hn::ConvertTo(di, floor);
+        const float* values = sampler.values.data();
+        const V low = hn::GatherIndex(d, values, index);
+        const V high = hn::GatherIndex(d, values, hn::Add(index, hn::Set(di, 1)));
+        return hn::MulAdd(hn::Sub(position, floor), hn::Sub(high, low), low);
+    } else {
+        return PaddedLookup<D>(d, sampler.resolution, sampler.stride, a, b)(
+            sampler.values.data());
+    }
 }
 
-// The table's (intensity, opacity) at square coordinates (a, b) of layer `layer`: bilinear in
-// the padded planes (see MarkSampler), as GL samples the RG8 texture array.
+// The table's (intensity, opacity) at square coordinates (a, b) of layer `layer`, as GL samples
+// the RG8 texture array.
 template <class D, class V>
 HWY_INLINE void SampleMarks(D d, const MarkPlanes& marks, std::int32_t layer, V a, V b,
                             V& intensity, V& opacity) {
-    const hn::RebindToSigned<D> di;
-    const V zero = hn::Zero(d);
-    const float half = 0.5f * static_cast<float>(marks.resolution);
-    const V scale = hn::Set(d, half);
-    const V offset = hn::Set(d, half + 0.5f);
-    const V high = hn::Set(d, static_cast<float>(marks.resolution) + 0.5f);
-    const V s = hn::Min(hn::Max(hn::MulAdd(a, scale, offset), zero), high);
-    const V t = hn::Min(hn::Max(hn::MulAdd(b, scale, offset), zero), high);
-    const V s0 = hn::Floor(s);
-    const V t0 = hn::Floor(t);
-    const V fs = hn::Sub(s, s0);
-    const V ft = hn::Sub(t, t0);
-    const auto index =
-        hn::ConvertTo(di, hn::MulAdd(t0, hn::Set(d, static_cast<float>(marks.stride)), s0));
-    const auto above = hn::Add(index, hn::Set(di, marks.stride));
-    const auto next = hn::Set(di, 1);
+    const PaddedLookup<D> lookup(d, marks.resolution, marks.stride, a, b);
     const std::size_t base = static_cast<std::size_t>(layer) * marks.layerSize;
-    const auto bilinear = [&](const float* values) {
-        const V f00 = hn::GatherIndex(d, values, index);
-        const V f10 = hn::GatherIndex(d, values, hn::Add(index, next));
-        const V f01 = hn::GatherIndex(d, values, above);
-        const V f11 = hn::GatherIndex(d, values, hn::Add(above, next));
-        const V bottom = hn::MulAdd(fs, hn::Sub(f10, f00), f00);
-        const V top = hn::MulAdd(fs, hn::Sub(f11, f01), f01);
-        return hn::MulAdd(ft, hn::Sub(top, bottom), bottom);
-    };
-    intensity = bilinear(marks.intensity.data() + base);
-    opacity = bilinear(marks.opacity.data() + base);
+    intensity = lookup(marks.intensity.data() + base);
+    opacity = lookup(marks.opacity.data() + base);
 }
 
 // What a batch's splats are: scalar (radial profile or texture), vector marks, or combined.
