@@ -252,9 +252,11 @@ TEST(VdbVolume, wrapsWhatOpenVdbThrowsForATruncatedFileWithTheFileName) {
         });
     };
     // Cut in the last grid's transform: OpenVDB reads a map type name from bytes that are not
-    // there. This came out as "internal error: KeyError ...", naming no file.
-    EXPECT_EQ(cut(size - 50),
-              path + ": truncated or corrupt VDB file: KeyError: Map  is not registered");
+    // there (what it reads differs between builds: empty here, other bytes under ASan, so only
+    // the start is fixed). This came out as "internal error: KeyError ...", naming no file.
+    const std::string transform = cut(size - 50);
+    EXPECT_EQ(transform.rfind(path + ": truncated or corrupt VDB file: KeyError: Map ", 0), 0u)
+        << transform;
     // Cut in the middle: OpenVDB quotes kilobytes of what it took for a grid type; the message
     // escapes and shortens them.
     const std::string middle = cut(size / 2);
