@@ -53,6 +53,12 @@ FootprintSampler::FootprintSampler(const SplatFootprint& footprint) {
                 static_cast<float>(footprint.kernel->footprint(footprint.extent * std::sqrt(rho)));
         }
         peak = *std::max_element(values.begin(), values.end());
+        // The last sample that is not 0, and the next: the profile is 0 from there on.
+        int last = kProfileSamples;
+        while (last > 0 && values[static_cast<std::size_t>(last)] == 0.0f) {
+            --last;
+        }
+        reach = 2.0f * static_cast<float>(std::min(last + 1, kProfileSamples)) / kProfileSamples;
         return;
     }
     const kernel::FootprintTexture& texture = *footprint.texture;

@@ -33,6 +33,9 @@ struct FootprintSampler {
     int stride = 0;            ///< texture: N + 2, floats per padded row
     std::vector<float> values; ///< profile (kProfileSamples + 2) or padded texels ((N + 2)²)
     float peak = 0.0f;         ///< the largest value
+    /// @brief Radial: the ρ = a² + b² beyond which the profile is 0 (the kernel's support);
+    /// pixels farther out add nothing and are skipped.
+    float reach = 2.0f;
 
     /// @brief The sampler of `footprint`: radial when it is a TexturedSquare with its kernel.
     explicit FootprintSampler(const SplatFootprint& footprint);

@@ -126,6 +126,7 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
         const bool absorbs = splat.extinction > 1e-30f;
         const auto inverseTau = hn::Set(d, absorbs ? 1.0f / splat.extinction : 0.0f);
         const auto lengthScale = hn::Set(d, splat.lengthScale);
+        const auto reach = hn::Set(d, sampler != nullptr ? sampler->reach : 2.0f);
         // Thin splats (optical depth at most ½ anywhere) take φ's series, thick ones Expm1.
         const bool thin =
             sampler != nullptr && splat.extinction * splat.lengthScale * sampler->peak <= 0.5f;
@@ -162,6 +163,10 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
                 }
                 inside = hn::And(inside,
                                  hn::And(hn::Le(hn::Abs(a), one), hn::Le(hn::Abs(b), one)));
+                if constexpr (kKind == Kind::Radial) {
+                    // Beyond the kernel's support the footprint is exactly 0: skip those pixels.
+                    inside = hn::And(inside, hn::Le(hn::MulAdd(a, a, hn::Mul(b, b)), reach));
+                }
                 if (clipped || depthTest) {
                     const auto z = hn::MulAdd(zx, x, z0);
                     if (clipped) {
