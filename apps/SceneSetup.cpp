@@ -43,6 +43,21 @@ nodes::Camera* findCamera(sg::Node& scene) {
                : static_cast<nodes::Camera*>(search.paths().front().tail().get());
 }
 
+// "a,b,c": three finite numbers separated by commas and nothing else, or nothing.
+std::optional<glm::vec3> parseThreeNumbers(const std::string& text) {
+    std::istringstream stream(text);
+    glm::vec3 value(0.0f);
+    char comma1 = 0;
+    char comma2 = 0;
+    stream >> value.x >> comma1 >> value.y >> comma2 >> value.z;
+    const bool finite =
+        std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z);
+    if (!stream || comma1 != ',' || comma2 != ',' || !(stream >> std::ws).eof() || !finite) {
+        return std::nullopt;
+    }
+    return value;
+}
+
 // A finite number from an option's text, checked by `accept`; throws naming the option.
 float parseNumber(const std::string& text, const char* option, const char* expected,
                   bool (*accept)(float)) {
@@ -131,19 +146,12 @@ glm::ivec2 parseSize(const std::string& text, const std::string& option) {
 }
 
 glm::vec3 parseDirection(const std::string& text) {
-    std::istringstream stream(text);
-    glm::vec3 direction(0.0f);
-    char comma1 = 0;
-    char comma2 = 0;
-    stream >> direction.x >> comma1 >> direction.y >> comma2 >> direction.z;
-    const bool finite = std::isfinite(direction.x) && std::isfinite(direction.y) &&
-                        std::isfinite(direction.z);
-    if (!stream || comma1 != ',' || comma2 != ',' || !(stream >> std::ws).eof() || !finite ||
-        direction == glm::vec3(0.0f)) {
+    const std::optional<glm::vec3> direction = parseThreeNumbers(text);
+    if (!direction || *direction == glm::vec3(0.0f)) {
         throw DataError("--direction: expected three numbers x,y,z not all zero, got '" + text +
                         "'");
     }
-    return direction;
+    return *direction;
 }
 
 glm::vec4 parseBackground(const std::string& text) {
@@ -156,14 +164,10 @@ glm::vec4 parseBackground(const std::string& text) {
     if (text == "transparent") {
         return glm::vec4(0.0f);
     }
-    std::istringstream stream(text);
-    glm::vec3 color(-1.0f);
-    char comma1 = 0;
-    char comma2 = 0;
-    stream >> color.r >> comma1 >> color.g >> comma2 >> color.b;
+    const glm::vec3 color = parseThreeNumbers(text).value_or(glm::vec3(-1.0f));
     const bool inRange = color.r >= 0.0f && color.r <= 1.0f && color.g >= 0.0f &&
                          color.g <= 1.0f && color.b >= 0.0f && color.b <= 1.0f;
-    if (!stream || comma1 != ',' || comma2 != ',' || !(stream >> std::ws).eof() || !inRange) {
+    if (!inRange) {
         throw DataError("--background: expected black, white, transparent or r,g,b (linear, 0 to "
                         "1), got '" + text + "'");
     }
