@@ -1,6 +1,8 @@
 #include "nodes/TransferFunction.h"
 
+#include "nodes/colormap/ParaViewColorMap.h"
 #include "nodes/detail/ColorText.h"
+#include "nodes/detail/DataRange.h"
 #include "nodes/detail/NodeContext.h"
 #include "nodes/detail/TransferTable.h"
 #include "nodes/elements/TransferFunctionElement.h"
@@ -10,17 +12,22 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace texsplat::nodes {
 
 TransferFunction::TransferFunction() {
     addField(preset, "preset", ColorPreset::Gray, kColorPresetNames);
+    addField(colorMapFile, "colorMapFile", std::string());
     addField(colorValues, "colorValues", std::vector<float>{});
     addField(colors, "colors", std::vector<glm::vec3>{});
     addField(opacityValues, "opacityValues", std::vector<float>{0.0f, 1.0f});
     addField(opacities, "opacities", std::vector<float>{0.0f, 1.0f});
     addField(range, "range", glm::vec2(0.0f, 1.0f));
+    addField(rangeMode, "rangeMode", RangeMode::Auto, kRangeModeNames);
+    addField(percentiles, "percentiles", glm::vec2(1.0f, 99.0f));
+    addField(unitDistance, "unitDistance", 1.0f);
     addField(emission, "emission", 0.0f);
 }
 
@@ -72,9 +79,30 @@ std::shared_ptr<const detail::TransferTable> TransferFunction::buildTable() cons
     }
     table->rangeMin = bounds.x;
     table->rangeMax = bounds.y;
+    RangeMode mode = rangeMode.as<RangeMode>();
+    if (mode == RangeMode::Auto) {
+        mode = range.isDefault() ? RangeMode::Data : RangeMode::Fixed;
+    }
+    table->rangeMode = static_cast<int>(mode);
+    const glm::vec2 percent = percentiles.value();
+    if (!(percent.x >= 0.0f && percent.x < percent.y && percent.y <= 100.0f)) {
+        throw DataError(context + ": percentiles must satisfy 0 <= percentiles[0] < "
+                                  "percentiles[1] <= 100, got " +
+                        percentiles.valueText());
+    }
+    table->percentiles = glm::dvec2(percent);
+    const float unit = unitDistance.value();
+    if (!std::isfinite(unit) || unit < 0.0f) {
+        throw DataError(context + ": unitDistance must be finite and >= 0 (0: one voxel), got " +
+                        sg::formatFloat(unit));
+    }
+    table->unitDistance = unit;
 
     if (colorValues.isEmpty() && colors.isEmpty()) {
-        table->colors = detail::presetColors(preset.value());
+        table->colors = colorMapFile.value().empty()
+                            ? detail::presetColors(preset.value())
+                            : colormap::readParaViewColorMap(resolvedPath(colorMapFile.value()))
+                                  .colors;
     } else {
         table->colors = controlPoints<glm::vec3>(context, colorValues, colors, [&](std::size_t i) {
             const glm::vec3& color = colors[i];
@@ -115,44 +143,99 @@ void TransferFunction::validate() const { table(); }
 
 namespace {
 
-// `value` normalized over the range and clamped to [0, 1]; NaN stays NaN.
-float normalized(const detail::TransferTable& table, float value) {
+// `value` normalized over `range` and clamped to [0, 1]; NaN stays NaN.
+float normalized(const glm::vec2& range, float value) {
     // In double: the difference of two large floats may overflow float.
-    const double t = (double(value) - table.rangeMin) / (double(table.rangeMax) - table.rangeMin);
+    const double t = (double(value) - range.x) / (double(range.y) - range.x);
     return std::isnan(t) ? t : static_cast<float>(std::clamp(t, 0.0, 1.0));
 }
 
-Classification classifyWith(const detail::TransferTable& table, float value) {
+Classification classifyWith(const detail::TransferTable& table, float value,
+                            const DataScale& scale) {
     if (std::isnan(value)) {
         return {};
     }
-    const float clamped = normalized(table, value);
-    const float tau = table.opacities(clamped);
-    return {table.colors(clamped) * (tau + table.emission), tau};
+    const float clamped = normalized(scale.range, value);
+    const float tau = table.opacities(clamped) / scale.unitDistance;
+    return {table.colors(clamped) * (tau + table.emission / scale.unitDistance), tau};
+}
+
+// The fields as written: `range`, and one world unit for "one voxel" since there is no voxel.
+DataScale fixedScale(const detail::TransferTable& table) {
+    return {glm::vec2(table.rangeMin, table.rangeMax),
+            table.unitDistance > 0.0f ? table.unitDistance : 1.0f};
 }
 
 } // namespace
 
+template <class T> DataScale TransferFunction::scaleOf(const volume::Grid<T>& grid) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    DataScale scale = fixedScale(*checked);
+    switch (static_cast<RangeMode>(checked->rangeMode)) {
+    case RangeMode::Data:
+        scale.range = glm::vec2(detail::valueRange(grid));
+        break;
+    case RangeMode::Percentile:
+        scale.range = glm::vec2(
+            detail::percentileRange(grid, checked->percentiles.x, checked->percentiles.y));
+        break;
+    case RangeMode::Auto:
+    case RangeMode::Fixed:
+        break;
+    }
+    if (!(scale.range.x < scale.range.y)) {
+        // Values so close together (or so large) that float cannot tell the ends apart.
+        scale.range.y = std::nextafter(scale.range.x, std::numeric_limits<float>::infinity());
+    }
+    if (checked->unitDistance == 0.0f) {
+        const glm::dvec3 spacing = grid.geometry().spacing();
+        scale.unitDistance = static_cast<float>(std::cbrt(spacing.x * spacing.y * spacing.z));
+    }
+    return scale;
+}
+
+DataScale TransferFunction::dataScale(const volume::ScalarGrid& grid) const {
+    return scaleOf(grid);
+}
+
+DataScale TransferFunction::dataScale(const volume::VectorGrid& grid) const {
+    return scaleOf(grid);
+}
+
 Classification TransferFunction::classify(float value) const {
-    return classifyWith(*table(), value);
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    return classifyWith(*checked, value, fixedScale(*checked));
+}
+
+Classification TransferFunction::classify(float value, const DataScale& scale) const {
+    return classifyWith(*table(), value, scale);
 }
 
 glm::vec3 TransferFunction::color(float value) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    return color(value, fixedScale(*checked));
+}
+
+glm::vec3 TransferFunction::color(float value, const DataScale& scale) const {
     if (std::isnan(value)) {
         return glm::vec3(0.0f);
     }
-    const std::shared_ptr<const detail::TransferTable> checked = table();
-    return checked->colors(normalized(*checked, value));
+    return table()->colors(normalized(scale.range, value));
+}
+
+glm::vec3 TransferFunction::colorAt(float t) const {
+    return table()->colors(std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, 1.0f));
 }
 
 std::shared_ptr<octree::ClassifiedGrid>
 TransferFunction::classify(const volume::ScalarGrid& grid) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
+    const DataScale scale = dataScale(grid);
     const volume::GridGeometry& geometry = grid.geometry();
     auto classified = std::make_shared<octree::ClassifiedGrid>(
         glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
     grid.forEachActive([&](const glm::i64vec3& index, float value) {
-        const Classification result = classifyWith(*checked, value);
+        const Classification result = classifyWith(*checked, value, scale);
         if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
             classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
         }

@@ -7,6 +7,7 @@
 #include "scenegraph/Node.h"
 #include "scenegraph/fields/Fields.h"
 #include "scenegraph/fields/SFEnum.h"
+#include "scenegraph/io/RelativeFileNames.h"
 
 #include <glm/glm.hpp>
 
@@ -26,6 +27,11 @@ enum class ColorPreset {
     Viridis,  ///< matplotlib's perceptually uniform blue-green-yellow
     Browns,   ///< a noisy dark-to-light brown ramp (paper, Figure 5: the tornado)
     CoolWarm, ///< Moreland's diverging blue-white-red
+    Magma,    ///< matplotlib's magma: black, purple, orange, pale yellow
+    Inferno,  ///< matplotlib's inferno: black, purple, orange, yellow
+    Plasma,   ///< matplotlib's plasma: blue, purple, orange, yellow
+    Cividis,  ///< cividis: viridis for colour-vision deficiency, blue to yellow
+    Turbo,    ///< Google's turbo: an improved rainbow
 };
 
 /// @brief Scene-file names of ColorPreset.
@@ -33,7 +39,33 @@ inline const sg::EnumNames kColorPresetNames{{"GRAY", ColorPreset::Gray},
                                              {"HOT", ColorPreset::Hot},
                                              {"VIRIDIS", ColorPreset::Viridis},
                                              {"BROWNS", ColorPreset::Browns},
-                                             {"COOL_WARM", ColorPreset::CoolWarm}};
+                                             {"COOL_WARM", ColorPreset::CoolWarm},
+                                             {"MAGMA", ColorPreset::Magma},
+                                             {"INFERNO", ColorPreset::Inferno},
+                                             {"PLASMA", ColorPreset::Plasma},
+                                             {"CIVIDIS", ColorPreset::Cividis},
+                                             {"TURBO", ColorPreset::Turbo}};
+
+/// @brief Where TransferFunction::range comes from (TransferFunction::rangeMode).
+enum class RangeMode {
+    Auto,       ///< FIXED when `range` is written (set), DATA when it is not
+    Fixed,      ///< the `range` field as it is
+    Data,       ///< the smallest and largest finite value of the data
+    Percentile, ///< the `percentiles` of the data's finite values (robust to outliers)
+};
+
+/// @brief Scene-file names of RangeMode.
+inline const sg::EnumNames kRangeModeNames{{"AUTO", RangeMode::Auto},
+                                           {"FIXED", RangeMode::Fixed},
+                                           {"DATA", RangeMode::Data},
+                                           {"PERCENTILE", RangeMode::Percentile}};
+
+/// @brief What a TransferFunction takes from the data it classifies: the value range that maps
+/// onto t in [0, 1] and the world length its opacities are meant for.
+struct DataScale {
+    glm::vec2 range{0.0f, 1.0f}; ///< values mapped to t = 0 and t = 1
+    float unitDistance = 1.0f;   ///< world length over which `opacities` are given, > 0
+};
 
 /// @brief What classification gives one voxel value: the emission-absorption medium the splats
 /// carry (paper, section 2).
@@ -48,19 +80,29 @@ struct Classification {
 /// @brief Maps scalar voxel values to emission and extinction (the transfer function of the
 /// paper's volume-rendering model), for the splat nodes that follow it.
 ///
-/// A value v is first normalized over `range`: t = (v - range[0]) / (range[1] - range[0]),
-/// clamped to [0, 1], so values outside the range classify like its ends (±infinity too); NaN
-/// classifies as fully transparent (no emission, no extinction). Then
+/// A value v is first normalized over the range [a, b]: t = (v - a) / (b - a), clamped to
+/// [0, 1], so values outside the range classify like its ends (±infinity too); NaN classifies as
+/// fully transparent (no emission, no extinction). The range comes from `rangeMode`: FIXED uses
+/// `range`; DATA the smallest and largest finite value of the data the splat node draws (for
+/// vectors: of their magnitudes); PERCENTILE the `percentiles` (in percent) of those values;
+/// AUTO, the default, is FIXED when `range` has been written and DATA when it has not, so scenes
+/// that give a range keep it and new ones fit their data. Data of one value v gets
+/// [v - 0.5, v + 0.5]. Then
 /// - the colour S(t) interpolates `colors` at the positions `colorValues` (in t), piecewise
-///   linearly, constant beyond the first and last point; when both fields are empty the named
-///   `preset` gives the control points;
+///   linearly, constant beyond the first and last point; when both fields are empty the colour
+///   map of `colorMapFile` (a ParaView colour-map JSON file, colormap::ParaViewColorMap; relative
+///   to the scene file's folder) gives the control points, and when that is empty too the named
+///   `preset`;
 /// - the opacity τ(t) interpolates `opacities` at `opacityValues` (in t) the same way; τ is an
-///   extinction coefficient, opacity per unit length in units of 1 / world length, so the result
-///   does not depend on the voxel spacing;
-/// - the emission per unit length is C = S · (τ + emission). With `emission` 0 a voxel glows as
-///   much as it absorbs (the usual "colour times opacity" medium); `emission` adds glow that does
-///   not absorb, so fully transparent glowing voxels (opacities 0, emission 1: C = S, τ = 0) are
-///   expressible, as the paper's Figure 2 experiment needs.
+///   extinction coefficient, opacity per `unitDistance` of world length. `unitDistance` 1 (the
+///   default) makes τ plain extinction per world unit, so a grid twice as finely spaced over the
+///   same box looks the same; `unitDistance` 0 means one voxel of the data (the geometric mean of
+///   its spacing), so the same voxel values look the same at any spacing, as ParaView's
+///   "scalar opacity unit distance" set to the cell length does;
+/// - the emission per unit length is C = S · (τ + emission), over the same unit distance. With
+///   `emission` 0 a voxel glows as much as it absorbs (the usual "colour times opacity" medium);
+///   `emission` adds glow that does not absorb, so fully transparent glowing voxels (opacities
+///   0, emission 1: C = S, τ = 0) are expressible, as the paper's Figure 2 experiment needs.
 ///
 /// Control positions may repeat (a step) but must not decrease. Every check happens on first use
 /// after a change and throws DataError naming the field ("TransferFunction 'tf': colorValues has
@@ -70,44 +112,71 @@ struct Classification {
 /// File format:
 /// @code
 /// TransferFunction {
-///     preset         GRAY      # GRAY, HOT, VIRIDIS, BROWNS, COOL_WARM
+///     preset         GRAY      # GRAY, HOT, VIRIDIS, BROWNS, COOL_WARM, MAGMA, INFERNO,
+///                              # PLASMA, CIVIDIS, TURBO
+///     colorMapFile   ""        # a ParaView colour-map .json; replaces the preset
 ///     colorValues    [ ]
 ///     colors         [ ]
 ///     opacityValues  [ 0, 1 ]
 ///     opacities      [ 0, 1 ]
 ///     range          0 1
+///     rangeMode      AUTO      # AUTO, FIXED, DATA, PERCENTILE
+///     percentiles    1 99
+///     unitDistance   1         # world length of the opacities; 0: one voxel
 ///     emission       0
 /// }
 /// @endcode
-class TransferFunction : public sg::Declare<TransferFunction, sg::Node> {
+class TransferFunction : public sg::Declare<TransferFunction, sg::Node>,
+                         public sg::RelativeFileNames {
 public:
     /// @brief The scene-file name.
     static constexpr const char* kTypeName = "TransferFunction";
 
-    sg::SFEnum preset;          ///< colour map used when `colors` is empty (ColorPreset)
+    sg::SFEnum preset;          ///< colour map used when `colors` and `colorMapFile` are empty
+    sg::SFString colorMapFile;  ///< a ParaView colour-map JSON file; replaces `preset`
     sg::MFFloat colorValues;    ///< positions of `colors`, in normalized t
-    sg::MFColor colors;         ///< explicit colour control points; override the preset
+    sg::MFColor colors;         ///< explicit colour control points; override the colour map
     sg::MFFloat opacityValues;  ///< positions of `opacities`, in normalized t
-    sg::MFFloat opacities;      ///< extinction τ at the control points, 1 / world length, >= 0
-    sg::SFVec2f range;          ///< data values mapped to t = 0 and t = 1
+    sg::MFFloat opacities;      ///< extinction τ at the control points, per unitDistance, >= 0
+    sg::SFVec2f range;          ///< data values mapped to t = 0 and t = 1 (rangeMode FIXED)
+    sg::SFEnum rangeMode;       ///< where the range comes from (RangeMode)
+    sg::SFVec2f percentiles;    ///< the percentiles rangeMode PERCENTILE takes, in [0, 100]
+    sg::SFFloat unitDistance;   ///< world length the opacities are given for; 0: one voxel
     sg::SFFloat emission;       ///< emission per unit length not tied to opacity, >= 0
 
-    /// @brief Checks every field now.
-    /// @throws DataError naming the first bad field.
+    /// @brief Checks every field now (and reads `colorMapFile`).
+    /// @throws DataError naming the first bad field; what reading `colorMapFile` throws.
     void validate() const;
 
-    /// @brief Emission and extinction of one value.
+    /// @brief The range and unit distance this node uses for `grid` (see rangeMode and
+    /// unitDistance); scans the grid's values unless rangeMode resolves to FIXED.
+    /// @throws DataError when the fields are invalid.
+    DataScale dataScale(const volume::ScalarGrid& grid) const;
+    /// @brief dataScale() of a vector grid: the range of its magnitudes.
+    DataScale dataScale(const volume::VectorGrid& grid) const;
+
+    /// @brief Emission and extinction of one value, with `range` and a unit distance of 1 when
+    /// `unitDistance` is 0 (no data, no voxel): the fields as written, whatever `rangeMode`.
     /// @throws DataError when the fields are invalid (see validate()).
     Classification classify(float value) const;
+    /// @brief Emission and extinction of one value over `scale` (from dataScale()), per world
+    /// length.
+    Classification classify(float value, const DataScale& scale) const;
 
     /// @brief The colour map S(t) alone at `value` (normalized over `range` as classify() does;
     /// NaN gives black): the polygon colour of vector splats, which take their opacity from the
     /// extinction and the mark table rather than from an emission-absorption slab.
     /// @throws DataError when the fields are invalid.
     glm::vec3 color(float value) const;
+    /// @brief color() over the range of `scale`.
+    glm::vec3 color(float value, const DataScale& scale) const;
+    /// @brief The colour map S at normalized position `t` (clamped to [0, 1]): what a colour
+    /// legend draws.
+    glm::vec3 colorAt(float t) const;
 
-    /// @brief Classifies every non-empty voxel of `grid` (same dimensions, spacing and origin);
-    /// empty voxels, and voxels that classify to zero, stay empty, so they produce no splats.
+    /// @brief Classifies every non-empty voxel of `grid` (same dimensions, spacing and origin)
+    /// over dataScale(grid); empty voxels, and voxels that classify to zero, stay empty, so they
+    /// produce no splats.
     /// @throws DataError when the fields are invalid.
     std::shared_ptr<octree::ClassifiedGrid> classify(const volume::ScalarGrid& grid) const;
 
@@ -123,6 +192,7 @@ protected:
 private:
     std::shared_ptr<const detail::TransferTable> table() const;
     std::shared_ptr<const detail::TransferTable> buildTable() const;
+    template <class T> DataScale scaleOf(const volume::Grid<T>& grid) const;
 
     mutable std::mutex mTableMutex;
     mutable std::shared_ptr<const detail::TransferTable> mTable;

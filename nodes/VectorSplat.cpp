@@ -71,7 +71,8 @@ VectorSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*s
         classified->enableVectors();
         const int axis = static_cast<int>(positionAxis.as<Axis>());
         const glm::vec2 coordinates = positionRange.value();
-        const glm::vec2 values = transfer.range.value();
+        const DataScale scale = transfer.dataScale(*vectors);
+        const glm::vec2 values = scale.range;
         vectors->forEachActive([&](const glm::i64vec3& index, const glm::vec3& vector) {
             // In double: a huge vector's squared length overflows float.
             const double magnitude = glm::length(glm::dvec3(vector));
@@ -81,24 +82,24 @@ VectorSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*s
             if (mask && !(mask->isActive(index) && isInMask(mask->value(index)))) {
                 return;
             }
-            const Classification medium = transfer.classify(static_cast<float>(magnitude));
+            const Classification medium = transfer.classify(static_cast<float>(magnitude), scale);
             if (!(medium.extinction > 0.0f)) {
                 return;
             }
             glm::vec3 polygon = color.value();
             switch (mode) {
             case VectorColorMode::Magnitude:
-                polygon = transfer.color(static_cast<float>(magnitude));
+                polygon = transfer.color(static_cast<float>(magnitude), scale);
                 break;
             case VectorColorMode::Scalar:
-                polygon = colors->isActive(index) ? transfer.color(colors->value(index))
+                polygon = colors->isActive(index) ? transfer.color(colors->value(index), scale)
                                                   : glm::vec3(0.0f);
                 break;
             case VectorColorMode::Position: {
                 const glm::vec4 world =
                     model * glm::vec4(glm::vec3(geometry.indexToWorld(glm::dvec3(index))), 1.0f);
                 const float t = (world[axis] - coordinates.x) / (coordinates.y - coordinates.x);
-                polygon = transfer.color(values.x + t * (values.y - values.x));
+                polygon = transfer.color(values.x + t * (values.y - values.x), scale);
                 break;
             }
             case VectorColorMode::Constant:

@@ -38,7 +38,9 @@ inline const sg::EnumNames kAxisNames{{"X", Axis::X}, {"Y", Axis::Y}, {"Z", Axis
 /// Voxels whose vector is zero, or outside the mask, or whose magnitude classifies to τ = 0 draw
 /// nothing. `stretch` > 1 elongates each square along its projected vector (figure 6's wisps).
 /// For colour by position the coordinate is the voxel centre in world space (the model matrix
-/// applied), mapped linearly from `positionRange` onto the TransferFunction's `range`.
+/// applied), mapped linearly from `positionRange` onto the TransferFunction's range. A range
+/// taken from the data (TransferFunction::rangeMode) is that of the vector magnitudes, for
+/// colour by a second scalar too.
 ///
 /// RayCastAction leaves vector splats out (marks are not a medium; it logs a warning).
 ///

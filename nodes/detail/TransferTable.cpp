@@ -1,6 +1,7 @@
 #include "nodes/detail/TransferTable.h"
 
 #include "nodes/TransferFunction.h"
+#include "nodes/colormap/ListedColormaps.h"
 #include "nodes/image/detail/Viridis.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Random.h"
@@ -39,6 +40,11 @@ PiecewiseLinear<glm::vec3> evenlySpaced(std::vector<glm::vec3> colors) {
     }
     map.y = std::move(colors);
     return map;
+}
+
+// A listed colour map's 256 entries as control points at t = i / 255.
+PiecewiseLinear<glm::vec3> listed(const colormap::ColorTable& table) {
+    return evenlySpaced(std::vector<glm::vec3>(table.begin(), table.end()));
 }
 
 // A fixed integer hash (splitmix64's finalizer) mapped to [0, 1): the same noise everywhere.
@@ -96,6 +102,16 @@ PiecewiseLinear<glm::vec3> presetColors(int preset) {
                              {0.865f, 0.865f, 0.865f},
                              {0.958f, 0.604f, 0.482f},
                              {0.706f, 0.016f, 0.150f}});
+    case ColorPreset::Magma:
+        return listed(colormap::magma());
+    case ColorPreset::Inferno:
+        return listed(colormap::inferno());
+    case ColorPreset::Plasma:
+        return listed(colormap::plasma());
+    case ColorPreset::Cividis:
+        return listed(colormap::cividis());
+    case ColorPreset::Turbo:
+        return listed(colormap::turbo());
     }
     TEXSPLAT_ASSERT(false, "presetColors(): unknown preset");
     return evenlySpaced({glm::vec3(0.0f), glm::vec3(1.0f)});

@@ -21,8 +21,11 @@ extern template struct PiecewiseLinear<glm::vec3>;
 
 /// @brief A TransferFunction's fields, checked and ready for fast, thread-safe lookups.
 struct TransferTable {
-    float rangeMin = 0.0f;
+    float rangeMin = 0.0f; ///< the `range` field
     float rangeMax = 1.0f;
+    int rangeMode = 0;                    ///< nodes::RangeMode, never Auto (resolved)
+    glm::dvec2 percentiles{1.0, 99.0};    ///< in percent
+    float unitDistance = 1.0f;            ///< 0: one voxel
     PiecewiseLinear<glm::vec3> colors;
     PiecewiseLinear<float> opacities;
     float emission = 0.0f;

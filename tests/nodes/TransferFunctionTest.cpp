@@ -208,6 +208,7 @@ TEST(TransferFunction, classifiesAGridIntoTheOctreeInput) {
     grid.setValue({1, 1, 0}, 7.0f); // clamps to 1
     grid.setValue({2, 1, 0}, 0.25f);
     const auto tf = TransferFunction::create();
+    tf->range = glm::vec2(0.0f, 1.0f); // written: kept, not fitted to the data (rangeMode AUTO)
     const std::shared_ptr<octree::ClassifiedGrid> classified = tf->classify(grid);
     EXPECT_EQ(classified->dims(), glm::u64vec3(3, 2, 1));
     EXPECT_EQ(classified->origin(), glm::dvec3(10.0, 20.0, 30.0));

@@ -1,0 +1,71 @@
+#include "nodes/detail/DataRange.h"
+
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <vector>
+
+namespace texsplat::nodes::detail {
+namespace {
+
+double scalarOf(float value) { return value; }
+// In double: a huge vector's squared length overflows float.
+double scalarOf(const glm::vec3& value) { return glm::length(glm::dvec3(value)); }
+
+glm::dvec2 widened(double low, double high) {
+    return low < high ? glm::dvec2(low, high) : glm::dvec2(low - 0.5, low + 0.5);
+}
+
+} // namespace
+
+template <class T> glm::dvec2 valueRange(const volume::Grid<T>& grid) {
+    const volume::GridStatistics statistics = grid.statistics();
+    if (statistics.finiteCount == 0) {
+        return {0.0, 1.0};
+    }
+    return widened(statistics.minimum, statistics.maximum);
+}
+
+template <class T>
+glm::dvec2 percentileRange(const volume::Grid<T>& grid, double low, double high) {
+    const volume::GridStatistics statistics = grid.statistics();
+    if (statistics.finiteCount == 0) {
+        return {0.0, 1.0};
+    }
+    const double minimum = statistics.minimum;
+    const double span = statistics.maximum - minimum;
+    if (!(span > 0.0)) {
+        return widened(minimum, minimum);
+    }
+    constexpr std::size_t kBins = 65536;
+    std::vector<std::uint64_t> counts(kBins, 0);
+    grid.forEachActive([&](const glm::i64vec3& /*index*/, const T& value) {
+        const double t = (scalarOf(value) - minimum) / span;
+        counts[std::min(kBins - 1, static_cast<std::size_t>(std::max(0.0, t) * kBins))] += 1;
+    });
+    // The value of rank p (0..count-1) interpolated within its bin, values spread evenly in it.
+    const auto percentile = [&](double percent) {
+        const double rank = percent / 100.0 * double(statistics.finiteCount - 1);
+        double below = 0.0;
+        for (std::size_t bin = 0; bin < kBins; ++bin) {
+            const double inBin = double(counts[bin]);
+            if (inBin > 0.0 && rank < below + inBin) {
+                const double within = (rank - below + 0.5) / inBin;
+                return minimum + span * (double(bin) + within) / double(kBins);
+            }
+            below += inBin;
+        }
+        return statistics.maximum;
+    };
+    return widened(std::max(minimum, percentile(low)),
+                   std::min(statistics.maximum, percentile(high)));
+}
+
+template glm::dvec2 valueRange(const volume::Grid<float>&);
+template glm::dvec2 valueRange(const volume::Grid<glm::vec3>&);
+template glm::dvec2 percentileRange(const volume::Grid<float>&, double, double);
+template glm::dvec2 percentileRange(const volume::Grid<glm::vec3>&, double, double);
+
+} // namespace texsplat::nodes::detail
