@@ -6,7 +6,9 @@
 #include "nodes/volume/JetStream.h"
 #include "nodes/volume/Magnitude.h"
 #include "nodes/volume/MarschnerLobb.h"
+#include "nodes/volume/NetCdfVolume.h"
 #include "nodes/volume/NpyVolume.h"
+#include "nodes/volume/NrrdVolume.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/volume/Tornado.h"
 #include "nodes/volume/VdbVolume.h"
@@ -48,6 +50,7 @@ VolumeData::VolumeData() {
     addField(gridName, "gridName", std::string());
     addField(resolution, "resolution", glm::vec3(64.0f));
     addField(time, "time", 0.0f);
+    addField(timeStep, "timeStep", 0);
     addField(component, "component", VolumeComponent::Magnitude, kVolumeComponentNames);
     addField(dimensions, "dimensions", glm::vec3(0.0f));
     addField(dataType, "dataType", volume::RawValueType::Float32, kVolumeDataTypeNames);
@@ -118,6 +121,17 @@ std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
     case VolumeSource::FileNpy: {
         const std::string path = requireFile();
         result->grid = volume::readNpyVolume(path, loadProgress(*this, path));
+        break;
+    }
+    case VolumeSource::FileNrrd: {
+        const std::string path = requireFile();
+        result->grid = volume::readNrrdVolume(path, loadProgress(*this, path));
+        break;
+    }
+    case VolumeSource::FileNetCdf: {
+        const std::string path = requireFile();
+        result->grid = volume::readNetCdfVariable(path, gridName.value(), timeStep.value(),
+                                                  loadProgress(*this, path));
         break;
     }
     case VolumeSource::FileVdb: {

@@ -24,6 +24,8 @@ enum class VolumeSource {
     FileRawHeaderless, ///< raw values without a header (`fileName`), laid out as `dimensions`,
                        ///< `dataType`, `byteOrder`, `headerBytes` and `components` say
     FileNpy,           ///< a NumPy .npy array (`fileName`): (z, y, x) scalars, (z, y, x, 3) vectors
+    FileNrrd,          ///< a NRRD volume (`fileName`: .nrrd, or a detached .nhdr header)
+    FileNetCdf,        ///< variable `gridName` of a NetCDF file (`fileName`), step `timeStep`
     Tornado,       ///< Crawfis's tornado (vectors; `resolution`, `time`)
     MarschnerLobb, ///< the Marschner-Lobb test signal (scalar; `resolution`)
     Blob,          ///< a sum of seeded Gaussians (scalar; `resolution`)
@@ -37,6 +39,8 @@ inline const sg::EnumNames kVolumeSourceNames{{"FILE_RAW", VolumeSource::FileRaw
                                               {"FILE_RAW_HEADERLESS",
                                                VolumeSource::FileRawHeaderless},
                                               {"FILE_NPY", VolumeSource::FileNpy},
+                                              {"FILE_NRRD", VolumeSource::FileNrrd},
+                                              {"FILE_NETCDF", VolumeSource::FileNetCdf},
                                               {"TORNADO", VolumeSource::Tornado},
                                               {"MARSCHNER_LOBB", VolumeSource::MarschnerLobb},
                                               {"BLOB", VolumeSource::Blob},
@@ -82,11 +86,13 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 /// - `fileName`: the file of the FILE_ sources. A relative name is relative to the folder of the
 ///   scene file the node was read from (sg::RelativeFileNames), or to the working directory for
 ///   a node made in C++; errors name the path tried.
-/// - `gridName`: FILE_VDB: the grid in the file (may stay empty when the file has one grid); with
+/// - `gridName`: FILE_VDB: the grid in the file (may stay empty when the file has one grid);
+///   FILE_NETCDF: the variable (may stay empty when one variable is 3-D or 4-D); with
 ///   `component SCALAR`: the generator's scalar grid (JET_STREAM: "cloudiness").
 /// - `resolution`: samples along x, y, z for the generators, as an SFVec3f of whole numbers >= 1
 ///   (Inventor has no integer vector field); files bring their own.
 /// - `time`: animation time of TORNADO (frames) and JET_STREAM (days).
+/// - `timeStep`: FILE_NETCDF: the step of a 4-D variable's first (time) dimension, from 0.
 /// - `component`: how scalarGrid() is made from vector data (VolumeComponent); scalar data is
 ///   used as it is with either value.
 /// - `dimensions`, `dataType`, `byteOrder`, `headerBytes`, `components`: the layout of a
@@ -102,12 +108,13 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 /// File format:
 /// @code
 /// VolumeData {
-///     source      BLOB   # FILE_RAW, FILE_VDB, FILE_RAW_HEADERLESS, FILE_NPY, TORNADO,
-///                        # MARSCHNER_LOBB, BLOB, JET_STREAM, AEROGEL
+///     source      BLOB   # FILE_RAW, FILE_VDB, FILE_RAW_HEADERLESS, FILE_NPY, FILE_NRRD,
+///                        # FILE_NETCDF, TORNADO, MARSCHNER_LOBB, BLOB, JET_STREAM, AEROGEL
 ///     fileName    ""
 ///     gridName    ""
 ///     resolution  64 64 64
 ///     time        0
+///     timeStep    0
 ///     component   MAGNITUDE   # MAGNITUDE, SCALAR
 ///     dimensions  0 0 0
 ///     dataType    FLOAT32     # UINT8, INT8, UINT16, INT16, UINT32, INT32, FLOAT32, FLOAT64
@@ -122,10 +129,11 @@ public:
     static constexpr const char* kTypeName = "VolumeData";
 
     sg::SFEnum source;      ///< VolumeSource
-    sg::SFString fileName;  ///< FILE_RAW / FILE_VDB file
-    sg::SFString gridName;  ///< VDB grid, or the generator's scalar for component SCALAR
+    sg::SFString fileName;  ///< the file of the FILE_ sources
+    sg::SFString gridName;  ///< VDB grid, NetCDF variable, or the generator's scalar grid
     sg::SFVec3f resolution; ///< generator samples per axis (whole numbers)
     sg::SFFloat time;       ///< generator time
+    sg::SFInt32 timeStep;   ///< FILE_NETCDF step of a (time, z, y, x) variable
     sg::SFEnum component;   ///< VolumeComponent
     sg::SFVec3f dimensions; ///< FILE_RAW_HEADERLESS voxels per axis (whole numbers)
     sg::SFEnum dataType;    ///< FILE_RAW_HEADERLESS value type (volume::RawValueType)

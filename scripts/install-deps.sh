@@ -12,6 +12,9 @@ packages=(
     libgtest-dev libbenchmark-dev libcoin-dev
     clang libclang-rt-14-dev xvfb xauth locales
     python3-numpy
+    libnetcdf-dev zlib1g-dev
+    # ncgen and unu write the NetCDF and NRRD files of the readers' tests.
+    netcdf-bin teem-apps
 )
 apt-get update
 apt-get install -y --no-install-recommends "${packages[@]}"

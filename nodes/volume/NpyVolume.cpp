@@ -5,7 +5,6 @@
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 
-#include <filesystem>
 #include <fstream>
 
 namespace texsplat::volume {
@@ -13,10 +12,7 @@ namespace texsplat::volume {
 AnyGrid readNpyVolume(const std::string& path, const ProgressCallback& progress) {
     std::ifstream in = detail::openForReading(path);
     const NpyHeader header = NpyHeader::parse(in, path);
-    std::error_code sizeError;
-    const auto fileSize = static_cast<std::int64_t>(std::filesystem::file_size(path, sizeError));
-    if (sizeError)
-        throw IoError(path + ": cannot read file size (" + sizeError.message() + ")");
+    const std::int64_t fileSize = detail::fileSize(path);
     const std::int64_t available = fileSize - header.dataOffset;
     const std::int64_t needed = header.layout.dataBytes();
     const std::string asks = "the header's shape " + header.shapeText() + " of '" + header.descr +

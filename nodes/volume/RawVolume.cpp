@@ -137,10 +137,7 @@ AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress)
     std::ifstream in = detail::openForReading(path);
     const RawHeader header = RawHeader::parse(in, path);
     const std::int64_t dataStart = in.tellg();
-    std::error_code sizeError;
-    const auto fileSize = static_cast<std::int64_t>(std::filesystem::file_size(path, sizeError));
-    if (sizeError)
-        throw IoError(path + ": cannot read file size (" + sizeError.message() + ")");
+    const std::int64_t fileSize = detail::fileSize(path);
     const std::int64_t available = fileSize - dataStart;
     const std::int64_t needed = [&] {
         try {
@@ -165,10 +162,7 @@ AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout
     if (headerBytes < 0)
         throw DataError(path + ": headerBytes must be 0 or more, got " +
                         std::to_string(headerBytes));
-    std::error_code sizeError;
-    const auto fileSize = static_cast<std::int64_t>(std::filesystem::file_size(path, sizeError));
-    if (sizeError)
-        throw IoError(path + ": cannot read file size (" + sizeError.message() + ")");
+    const std::int64_t fileSize = detail::fileSize(path);
     const std::int64_t needed = [&] {
         try {
             const std::int64_t dataBytes = layout.dataBytes();
@@ -196,6 +190,13 @@ AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& 
     const GridGeometry geometry(layout.dims, layout.origin, layout.spacing);
     const glm::i64vec3 dims = layout.dims;
     const std::int64_t voxels = geometry.voxelCount();
+    // A compressed file (NRRD gzip) or a sparse one declares any size in a few bytes.
+    detail::checkFitsInMemory(path + ": a grid of " + std::to_string(dims.x) + " x " +
+                                  std::to_string(dims.y) + " x " + std::to_string(dims.z) +
+                                  " voxels x " + std::to_string(layout.components) +
+                                  (layout.components == 1 ? " float" : " floats"),
+                              static_cast<std::uint64_t>(voxels) *
+                                  static_cast<std::uint64_t>(layout.components) * sizeof(float));
     // Our index of value number `n` of a file that stores z fastest (NumPy's Fortran order of a
     // (z, y, x[, component]) array: each component is a block of its own).
     const auto zFastest = [dims, voxels](std::int64_t n, std::int64_t& voxel, int& component) {

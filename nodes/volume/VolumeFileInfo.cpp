@@ -1,7 +1,10 @@
 #include "nodes/volume/VolumeFileInfo.h"
 
+#include "nodes/volume/NetCdfVolume.h"
 #include "nodes/volume/NpyHeader.h"
 #include "nodes/volume/NpyVolume.h"
+#include "nodes/volume/NrrdHeader.h"
+#include "nodes/volume/NrrdVolume.h"
 #include "nodes/volume/RawHeader.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/volume/VdbVolume.h"
@@ -128,6 +131,11 @@ VolumeFileFormat detectVolumeFileFormat(const std::string& path) {
         return VolumeFileFormat::TexsplatRaw;
     if (head.substr(0, 6) == "\x93NUMPY")
         return VolumeFileFormat::Npy;
+    if (head.substr(0, 4) == "NRRD")
+        return VolumeFileFormat::Nrrd;
+    // NetCDF classic ("CDF\1"), 64-bit offset ("CDF\2"), CDF-5 ("CDF\5"); NetCDF-4 is HDF5.
+    if (head.substr(0, 3) == "CDF" || head.substr(0, 8) == "\x89HDF\r\n\x1a\n")
+        return VolumeFileFormat::NetCdf;
     // OpenVDB's magic number 0x56444220 ("VDB "), written little endian.
     if (head.substr(0, 4) == std::string_view(" BDV", 4))
         return VolumeFileFormat::Vdb;
@@ -138,6 +146,10 @@ VolumeFileFormat detectVolumeFileFormat(const std::string& path) {
         return VolumeFileFormat::TexsplatRaw;
     if (extension == ".npy")
         return VolumeFileFormat::Npy;
+    if (extension == ".nrrd" || extension == ".nhdr")
+        return VolumeFileFormat::Nrrd;
+    if (extension == ".nc" || extension == ".nc4")
+        return VolumeFileFormat::NetCdf;
     if (extension == ".vdb")
         return VolumeFileFormat::Vdb;
     return VolumeFileFormat::Unknown;
@@ -164,6 +176,47 @@ std::string describeVolumeFile(const std::string& path, int histogramBins) {
         text += describe(readNpyVolume(path), histogramBins);
         return text + snippet("FILE_NPY", path);
     }
+    case VolumeFileFormat::Nrrd: {
+        std::ifstream in = detail::openForReading(path);
+        const NrrdHeader header = NrrdHeader::parse(in, path);
+        std::string text = path + ": NRRD, type '" + header.typeName + "' (" +
+                           toString(header.layout.type) + "), sizes " + header.sizesText() +
+                           ", " + header.encodingName() + " encoding, " +
+                           (header.layout.endian == RawEndian::Little ? "little" : "big") +
+                           " endian" +
+                           (header.dataFile.empty() ? std::string()
+                                                    : ", data file '" + header.dataFile + "'") +
+                           "\n";
+        text += describe(readNrrdVolume(path), histogramBins);
+        return text + snippet("FILE_NRRD", path);
+    }
+    case VolumeFileFormat::NetCdf: {
+        const std::vector<NetCdfVariableInfo> variables = listNetCdfVariables(path);
+        std::string text = path + ": NetCDF, " + std::to_string(variables.size()) +
+                           (variables.size() == 1 ? " variable\n" : " variables\n");
+        const auto volumes = std::count_if(variables.begin(), variables.end(),
+                                           [](const auto& info) { return info.isVolume(); });
+        for (const NetCdfVariableInfo& info : variables) {
+            text += "variable " + info.declaration() + "\n";
+            if (info.isCoordinate) {
+                text += "  coordinate of dimension '" + info.name + "'\n";
+                continue;
+            }
+            if (!info.isVolume()) {
+                text += "  not readable: texsplat reads 3-D (z, y, x) and 4-D (time, z, y, x) "
+                        "variables of numbers\n";
+                continue;
+            }
+            if (info.dimensions.size() == 4)
+                text += "  time steps    " + std::to_string(info.dimensions[0].length) +
+                        " along '" + info.dimensions[0].name +
+                        "' (VolumeData timeStep 0 to " +
+                        std::to_string(info.dimensions[0].length - 1) + "; step 0 below)\n";
+            text += describe(readNetCdfVariable(path, info.name), histogramBins);
+            text += snippet("FILE_NETCDF", path, volumes == 1 ? std::string() : info.name);
+        }
+        return text;
+    }
     case VolumeFileFormat::Vdb: {
         const std::vector<VdbGridInfo> grids = listVdbGrids(path);
         std::string text = path + ": OpenVDB, " + std::to_string(grids.size()) +
@@ -182,7 +235,7 @@ std::string describeVolumeFile(const std::string& path, int histogramBins) {
     case VolumeFileFormat::Unknown: break;
     }
     throw IoError(path + ": not a data file texsplat reads whole; expected texsplat-raw, NumPy "
-                         ".npy or OpenVDB .vdb");
+                         ".npy, NRRD, NetCDF or OpenVDB .vdb");
 }
 
 } // namespace texsplat::volume

@@ -29,6 +29,14 @@ TEST(VolumeFileInfo, detectsTheFormatByItsFirstBytesThenItsExtension) {
               VolumeFileFormat::Npy);
     EXPECT_EQ(detectVolumeFileFormat(write(testPath("a.dat"), std::string(" BDV\0\0\0\0", 8))),
               VolumeFileFormat::Vdb);
+    EXPECT_EQ(detectVolumeFileFormat(write(testPath("a.dat"), "NRRD0004\n")),
+              VolumeFileFormat::Nrrd);
+    EXPECT_EQ(detectVolumeFileFormat(write(testPath("a.dat"), std::string("CDF\x01", 4))),
+              VolumeFileFormat::NetCdf);
+    EXPECT_EQ(detectVolumeFileFormat(write(testPath("a.dat"), "\x89HDF\r\n\x1a\n")),
+              VolumeFileFormat::NetCdf);
+    EXPECT_EQ(detectVolumeFileFormat(write(testPath("b.nhdr"), "junk")), VolumeFileFormat::Nrrd);
+    EXPECT_EQ(detectVolumeFileFormat(write(testPath("b.nc"), "junk")), VolumeFileFormat::NetCdf);
     EXPECT_EQ(detectVolumeFileFormat(write(testPath("b.raw"), "junk")),
               VolumeFileFormat::TexsplatRaw);
     EXPECT_EQ(detectVolumeFileFormat(write(testPath("b.npy"), "junk")), VolumeFileFormat::Npy);
@@ -48,7 +56,7 @@ TEST(VolumeFileInfo, refusesOtherFiles) {
     } catch (const IoError& error) {
         EXPECT_EQ(std::string(error.what()),
                   path + ": not a data file texsplat reads whole; expected texsplat-raw, NumPy "
-                         ".npy or OpenVDB .vdb");
+                         ".npy, NRRD, NetCDF or OpenVDB .vdb");
     }
 }
 

@@ -21,8 +21,9 @@ enum class RawOrder {
 /// of texsplat-raw, headerless raw and NumPy files. The caller has checked that exactly
 /// `layout.dataBytes()` bytes follow (each with a message of its own format). `path` names the
 /// file in messages and progress.
-/// @throws IoError when reading fails; DataError when the grid does not fit in memory or every
-/// voxel is NaN or infinite; LoadCancelled when `progress` answered false.
+/// @throws IoError when reading fails; DataError when the grid does not fit in memory (checked
+/// against the machine's memory before allocating) or every voxel is NaN or infinite;
+/// LoadCancelled when `progress` answered false.
 AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& layout,
                     RawOrder order, const ProgressCallback& progress);
 

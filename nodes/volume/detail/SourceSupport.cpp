@@ -28,6 +28,14 @@ std::ifstream openForReading(const std::string& path) {
     return in;
 }
 
+std::int64_t fileSize(const std::string& path) {
+    std::error_code error;
+    const std::uintmax_t bytes = std::filesystem::file_size(path, error);
+    if (error)
+        throw IoError(path + ": cannot read file size (" + error.message() + ")");
+    return static_cast<std::int64_t>(bytes);
+}
+
 std::uint64_t physicalMemoryBytes() {
     const long pages = sysconf(_SC_PHYS_PAGES);
     const long pageBytes = sysconf(_SC_PAGE_SIZE);

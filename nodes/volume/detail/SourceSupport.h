@@ -14,6 +14,10 @@ namespace texsplat::volume::detail {
 /// opening it, which for a FIFO would block.
 std::ifstream openForReading(const std::string& path);
 
+/// @brief The size of the file `path` in bytes.
+/// @throws IoError "path: cannot read file size (reason)".
+std::int64_t fileSize(const std::string& path);
+
 /// @brief This machine's physical memory in bytes (0 when the system does not say).
 std::uint64_t physicalMemoryBytes();
 

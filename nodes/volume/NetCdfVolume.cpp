@@ -1,0 +1,349 @@
+#include "nodes/volume/NetCdfVolume.h"
+
+#include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/detail/Format.h"
+#include "nodes/volume/detail/SourceSupport.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Log.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <optional>
+
+#ifdef TEXSPLAT_WITH_NETCDF
+#include <netcdf.h>
+#endif
+
+namespace texsplat::volume {
+namespace {
+
+// Whether values of the CDL type `type` are numbers.
+bool isNumberType(const std::string& type) {
+    return type != "char" && type != "string" && type != "user-defined type";
+}
+
+} // namespace
+
+bool NetCdfVariableInfo::isVolume() const {
+    return isNumberType(type) && !isCoordinate &&
+           (dimensions.size() == 3 || dimensions.size() == 4);
+}
+
+std::string NetCdfVariableInfo::declaration() const {
+    std::string text = type + " " + name + "(";
+    for (std::size_t i = 0; i < dimensions.size(); ++i)
+        text += (i == 0 ? "" : ", ") + dimensions[i].name + "=" +
+                std::to_string(dimensions[i].length);
+    return text + ")";
+}
+
+#ifdef TEXSPLAT_WITH_NETCDF
+
+namespace {
+
+// netCDF-C is not thread-safe, and VolumeData nodes may load on several threads at once: every
+// call into it holds this lock.
+std::mutex sNetCdfMutex;
+
+std::string variableList(const std::vector<NetCdfVariableInfo>& variables) {
+    std::string names;
+    for (const NetCdfVariableInfo& info : variables)
+        if (!info.isCoordinate)
+            names += (names.empty() ? "" : ", ") + info.declaration();
+    return names.empty() ? "no variables but coordinates" : names;
+}
+
+// nc_strerror() names itself: "NetCDF: Unknown file format".
+void check(int status, const std::string& where, const std::string& what) {
+    if (status != NC_NOERR)
+        throw IoError(where + ": " + what + " (" + nc_strerror(status) + ")");
+}
+
+// An open file, closed when it goes.
+class NetCdfFile {
+public:
+    explicit NetCdfFile(const std::string& path) : mPath(path) {
+        // The same messages as every reader for missing files, folders and FIFOs.
+        static_cast<void>(detail::openForReading(path));
+        const int status = nc_open(path.c_str(), NC_NOWRITE, &mId);
+        if (status == NC_ENOTNC || status == NC_EHDFERR)
+            throw ParseError(path + ": not a NetCDF file: expected NetCDF classic, 64-bit offset, "
+                                    "CDF-5 or NetCDF-4 (" +
+                             nc_strerror(status) + ")");
+        check(status, path, "cannot open NetCDF file");
+    }
+    ~NetCdfFile() { nc_close(mId); }
+    NetCdfFile(const NetCdfFile&) = delete;
+    NetCdfFile& operator=(const NetCdfFile&) = delete;
+
+    int id() const { return mId; }
+    const std::string& path() const { return mPath; }
+
+private:
+    std::string mPath;
+    int mId = -1;
+};
+
+std::string typeName(nc_type type) {
+    switch (type) {
+    case NC_BYTE: return "byte";
+    case NC_CHAR: return "char";
+    case NC_SHORT: return "short";
+    case NC_INT: return "int";
+    case NC_FLOAT: return "float";
+    case NC_DOUBLE: return "double";
+    case NC_UBYTE: return "ubyte";
+    case NC_USHORT: return "ushort";
+    case NC_UINT: return "uint";
+    case NC_INT64: return "int64";
+    case NC_UINT64: return "uint64";
+    case NC_STRING: return "string";
+    default: return "user-defined type";
+    }
+}
+
+// The fill value netCDF writes where nothing was written, for a variable without _FillValue;
+// none for bytes, whose whole range is data by convention (NetCDF users' guide, "Fill Values").
+std::optional<double> defaultFill(nc_type type) {
+    switch (type) {
+    case NC_SHORT: return NC_FILL_SHORT;
+    case NC_INT: return NC_FILL_INT;
+    case NC_FLOAT: return NC_FILL_FLOAT;
+    case NC_DOUBLE: return NC_FILL_DOUBLE;
+    case NC_USHORT: return NC_FILL_USHORT;
+    case NC_UINT: return NC_FILL_UINT;
+    case NC_INT64: return static_cast<double>(NC_FILL_INT64);
+    case NC_UINT64: return static_cast<double>(NC_FILL_UINT64);
+    default: return std::nullopt;
+    }
+}
+
+NetCdfVariableInfo variableInfo(const NetCdfFile& file, int variable) {
+    char name[NC_MAX_NAME + 1] = {};
+    nc_type type = NC_NAT;
+    int dimensionCount = 0;
+    check(nc_inq_var(file.id(), variable, name, &type, &dimensionCount, nullptr, nullptr),
+          file.path(), "cannot read variable " + std::to_string(variable));
+    std::vector<int> dimensionIds(static_cast<std::size_t>(dimensionCount));
+    check(nc_inq_vardimid(file.id(), variable, dimensionIds.data()), file.path(),
+          std::string("cannot read the dimensions of variable '") + name + "'");
+    NetCdfVariableInfo info;
+    info.name = name;
+    info.type = typeName(type);
+    for (const int id : dimensionIds) {
+        char dimensionName[NC_MAX_NAME + 1] = {};
+        std::size_t length = 0;
+        check(nc_inq_dim(file.id(), id, dimensionName, &length), file.path(),
+              "cannot read dimension " + std::to_string(id));
+        info.dimensions.push_back({dimensionName, static_cast<std::int64_t>(length)});
+    }
+    info.isCoordinate = info.dimensions.size() == 1 && info.dimensions[0].name == info.name;
+    return info;
+}
+
+std::vector<NetCdfVariableInfo> variableInfos(const NetCdfFile& file) {
+    int count = 0;
+    check(nc_inq_nvars(file.id(), &count), file.path(), "cannot list the variables");
+    std::vector<NetCdfVariableInfo> infos;
+    for (int variable = 0; variable < count; ++variable)
+        infos.push_back(variableInfo(file, variable));
+    return infos;
+}
+
+// A number attribute's values; empty when the variable has no such attribute.
+std::vector<double> numberAttribute(const NetCdfFile& file, int variable, const char* name) {
+    nc_type type = NC_NAT;
+    std::size_t length = 0;
+    if (nc_inq_att(file.id(), variable, name, &type, &length) != NC_NOERR || type == NC_CHAR ||
+        type == NC_STRING || length == 0)
+        return {};
+    std::vector<double> values(length);
+    check(nc_get_att_double(file.id(), variable, name, values.data()), file.path(),
+          std::string("cannot read attribute '") + name + "'");
+    return values;
+}
+
+// Origin and spacing of one axis from its coordinate variable, if that is evenly spaced and
+// increasing; nullopt otherwise.
+std::optional<std::pair<double, double>> coordinateAxis(const NetCdfFile& file,
+                                                        const NetCdfDimension& dimension) {
+    int variable = -1;
+    if (nc_inq_varid(file.id(), dimension.name.c_str(), &variable) != NC_NOERR)
+        return std::nullopt;
+    const NetCdfVariableInfo info = variableInfo(file, variable);
+    if (!info.isCoordinate || !isNumberType(info.type))
+        return std::nullopt;
+    std::vector<double> values(static_cast<std::size_t>(dimension.length));
+    check(nc_get_var_double(file.id(), variable, values.data()), file.path(),
+          "cannot read coordinate variable '" + dimension.name + "'");
+    if (values.size() == 1)
+        return std::isfinite(values[0]) ? std::optional(std::pair(values[0], 1.0)) : std::nullopt;
+    const double step = (values.back() - values.front()) / double(values.size() - 1);
+    if (!(std::isfinite(step) && step > 0.0))
+        return std::nullopt;
+    constexpr double kTolerance = 1e-4; // of a step: float coordinates written as 0.1, 0.2, ...
+    for (std::size_t i = 0; i < values.size(); ++i)
+        if (!(std::abs(values[i] - (values.front() + double(i) * step)) <= kTolerance * step))
+            return std::nullopt;
+    return std::pair(values.front(), step);
+}
+
+// The one variable to read: `name`, or the only volume when `name` is empty.
+int findVariable(const NetCdfFile& file, const std::string& name) {
+    const std::vector<NetCdfVariableInfo> variables = variableInfos(file);
+    if (name.empty()) {
+        int found = -1;
+        int volumes = 0;
+        for (std::size_t i = 0; i < variables.size(); ++i)
+            if (variables[i].isVolume()) {
+                found = static_cast<int>(i);
+                ++volumes;
+            }
+        if (volumes == 1)
+            return found;
+        throw DataError(file.path() + ": no variable named, and the file has " +
+                        std::to_string(volumes) +
+                        " 3-D or 4-D variables; name one (VolumeData's gridName) of: " +
+                        variableList(variables));
+    }
+    for (std::size_t i = 0; i < variables.size(); ++i)
+        if (variables[i].name == name)
+            return static_cast<int>(i);
+    throw DataError(file.path() + ": no variable named '" + name + "'; the file has: " +
+                    variableList(variables));
+}
+
+} // namespace
+
+bool isNetCdfAvailable() { return true; }
+
+std::vector<NetCdfVariableInfo> listNetCdfVariables(const std::string& path) {
+    const std::lock_guard<std::mutex> lock(sNetCdfMutex);
+    const NetCdfFile file(path);
+    return variableInfos(file);
+}
+
+AnyGrid readNetCdfVariable(const std::string& path, const std::string& variable,
+                           std::int64_t timeStep, const ProgressCallback& progress) {
+    const std::lock_guard<std::mutex> lock(sNetCdfMutex);
+    const NetCdfFile file(path);
+    const int id = findVariable(file, variable);
+    const NetCdfVariableInfo info = variableInfo(file, id);
+    const std::string where = path + ": variable '" + info.name + "'";
+    const std::size_t axes = info.dimensions.size();
+    if (axes != 3 && axes != 4)
+        throw DataError(where + " has " + std::to_string(axes) + " dimension" +
+                        (axes == 1 ? "" : "s") + " (" + info.declaration() +
+                        "); texsplat reads 3-D variables (z, y, x) and 4-D ones (time, z, y, x)");
+    if (!info.isVolume())
+        throw DataError(where + " holds " + info.type + " values; texsplat reads numbers");
+    const bool hasTime = axes == 4;
+    const std::int64_t steps = hasTime ? info.dimensions[0].length : 1;
+    if (timeStep < 0 || timeStep >= steps)
+        throw DataError(where + ": timeStep " + std::to_string(timeStep) + " is outside " +
+                        (hasTime ? "its " + std::to_string(steps) + " steps along '" +
+                                       info.dimensions[0].name + "' (0 to " +
+                                       std::to_string(steps - 1) + ")"
+                                 : std::string("a variable without a time dimension (0)")));
+
+    // Dimensions slowest first: (time,) z, y, x.
+    const std::size_t first = hasTime ? 1 : 0;
+    glm::i64vec3 dims;
+    glm::dvec3 origin(0.0);
+    glm::dvec3 spacing(1.0);
+    for (int axis = 0; axis < 3; ++axis) {
+        const NetCdfDimension& dimension = info.dimensions[first + std::size_t(2 - axis)];
+        dims[axis] = dimension.length;
+        if (dimension.length == 0)
+            continue; // GridGeometry refuses it below
+        if (const auto coordinates = coordinateAxis(file, dimension)) {
+            origin[axis] = coordinates->first;
+            spacing[axis] = coordinates->second;
+        } else if (int coordinate = -1;
+                   nc_inq_varid(file.id(), dimension.name.c_str(), &coordinate) == NC_NOERR) {
+            log(LogLevel::Warning, where + ": coordinate '" + dimension.name +
+                                       "' is not evenly spaced and increasing; its axis (" +
+                                       "xyz"[axis] + ") is indexed 0, 1, 2, ...");
+        }
+    }
+    const GridGeometry geometry = [&] {
+        try {
+            return GridGeometry(dims, origin, spacing);
+        } catch (const DataError& error) {
+            throw DataError(where + ": " + error.what());
+        }
+    }();
+    detail::checkFitsInMemory(where + ": a grid of " + std::to_string(dims.x) + " x " +
+                                  std::to_string(dims.y) + " x " + std::to_string(dims.z) +
+                                  " floats",
+                              static_cast<std::uint64_t>(geometry.voxelCount()) * sizeof(float));
+
+    const std::vector<double> scale = numberAttribute(file, id, "scale_factor");
+    const std::vector<double> offset = numberAttribute(file, id, "add_offset");
+    std::vector<double> missing = numberAttribute(file, id, "missing_value");
+    const std::vector<double> fill = numberAttribute(file, id, "_FillValue");
+    nc_type type = NC_NAT;
+    check(nc_inq_vartype(file.id(), id, &type), where, "cannot read the type");
+    if (!fill.empty())
+        missing.push_back(fill.front());
+    else if (const auto fallback = defaultFill(type))
+        missing.push_back(*fallback);
+    const double scaleFactor = scale.empty() ? 1.0 : scale.front();
+    const double addOffset = offset.empty() ? 0.0 : offset.front();
+
+    auto grid = std::make_shared<DenseScalarGrid>(geometry);
+    float* target = grid->values().data();
+    const auto sliceValues = static_cast<std::size_t>(dims.x * dims.y);
+    std::vector<double> slice(sliceValues);
+    const std::string message = "reading variable '" + info.name + "'";
+    reportProgress(progress, path, 0.0, message);
+    for (std::int64_t z = 0; z < dims.z; ++z) {
+        std::size_t start[4] = {};
+        std::size_t count[4] = {};
+        const std::size_t zAxis = first;
+        if (hasTime) {
+            start[0] = static_cast<std::size_t>(timeStep);
+            count[0] = 1;
+        }
+        start[zAxis] = static_cast<std::size_t>(z);
+        count[zAxis] = 1;
+        count[zAxis + 1] = static_cast<std::size_t>(dims.y);
+        count[zAxis + 2] = static_cast<std::size_t>(dims.x);
+        check(nc_get_vara_double(file.id(), id, start, count, slice.data()), where,
+              "cannot read z slice " + std::to_string(z));
+        for (const double raw : slice) {
+            const bool isMissing = std::find(missing.begin(), missing.end(), raw) != missing.end();
+            *target++ = isMissing ? std::numeric_limits<float>::quiet_NaN()
+                                  : static_cast<float>(raw * scaleFactor + addOffset);
+        }
+        reportProgress(progress, path, double(z + 1) / double(dims.z), message);
+    }
+    detail::checkFiniteVoxels(where, grid->statistics());
+    return grid;
+}
+
+#else
+
+namespace {
+
+[[noreturn]] void notBuiltIn(const std::string& path) {
+    throw IoError(path + ": cannot read NetCDF files: texsplat was built without NetCDF "
+                         "(TEXSPLAT_WITH_NETCDF=OFF)");
+}
+
+} // namespace
+
+bool isNetCdfAvailable() { return false; }
+
+std::vector<NetCdfVariableInfo> listNetCdfVariables(const std::string& path) { notBuiltIn(path); }
+
+AnyGrid readNetCdfVariable(const std::string& path, const std::string&, std::int64_t,
+                           const ProgressCallback&) {
+    notBuiltIn(path);
+}
+
+#endif
+
+} // namespace texsplat::volume

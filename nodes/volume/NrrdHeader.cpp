@@ -1,0 +1,544 @@
+#include "nodes/volume/NrrdHeader.h"
+
+#include "nodes/volume/GridGeometry.h"
+#include "nodes/volume/detail/Format.h"
+#include "nodes/volume/detail/Printable.h"
+#include "scenegraph/Error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <string_view>
+
+namespace texsplat::volume {
+namespace {
+
+using detail::formatNumber;
+using detail::printable;
+
+constexpr std::size_t kMaxLineLength = 8192;
+// Far beyond any real header (teem writes a few hundred bytes); bounds the work on garbage.
+constexpr std::int64_t kMaxHeaderBytes = std::int64_t{1} << 20;
+constexpr int kMaxDimension = 4;
+constexpr int kSpaceDimension = 3;
+
+// Where a value stands in the header, for messages.
+struct Place {
+    int line = 0;
+    int column = 0;
+};
+
+struct NamedType {
+    const char* name;
+    RawValueType type;
+};
+
+// teem's spellings of the types we read (nrrdType airEnum).
+constexpr NamedType kTypes[] = {
+    {"signed char", RawValueType::Int8},        {"int8", RawValueType::Int8},
+    {"int8_t", RawValueType::Int8},             {"uchar", RawValueType::UInt8},
+    {"unsigned char", RawValueType::UInt8},     {"uint8", RawValueType::UInt8},
+    {"uint8_t", RawValueType::UInt8},           {"short", RawValueType::Int16},
+    {"short int", RawValueType::Int16},         {"signed short", RawValueType::Int16},
+    {"signed short int", RawValueType::Int16},  {"int16", RawValueType::Int16},
+    {"int16_t", RawValueType::Int16},           {"ushort", RawValueType::UInt16},
+    {"unsigned short", RawValueType::UInt16},   {"unsigned short int", RawValueType::UInt16},
+    {"uint16", RawValueType::UInt16},           {"uint16_t", RawValueType::UInt16},
+    {"int", RawValueType::Int32},               {"signed int", RawValueType::Int32},
+    {"int32", RawValueType::Int32},             {"int32_t", RawValueType::Int32},
+    {"uint", RawValueType::UInt32},             {"unsigned int", RawValueType::UInt32},
+    {"uint32", RawValueType::UInt32},           {"uint32_t", RawValueType::UInt32},
+    {"float", RawValueType::Float32},           {"double", RawValueType::Float64}};
+
+constexpr const char* kUnsupportedTypes[] = {
+    "longlong", "long long", "long long int", "signed long long", "signed long long int",
+    "int64", "int64_t", "ulonglong", "unsigned long long", "unsigned long long int", "uint64",
+    "uint64_t", "block"};
+
+constexpr const char* kIgnoredFields[] = {
+    "content", "number", "kinds", "centers", "centerings", "labels", "units", "thicknesses",
+    "axis mins", "axismins", "axis maxs", "axismaxs", "min", "max", "old min", "oldmin",
+    "old max", "oldmax", "measurement frame", "space units", "sample units", "sampleunits"};
+
+// Old spellings of fields, by their current names.
+const std::map<std::string, std::string> kFieldAliases{
+    {"byteskip", "byte skip"}, {"lineskip", "line skip"}, {"datafile", "data file"}};
+
+// Named spaces and their dimension (nrrdSpace airEnum).
+const std::map<std::string, int> kSpaces{
+    {"right-anterior-superior", 3}, {"ras", 3}, {"left-anterior-superior", 3}, {"las", 3},
+    {"left-posterior-superior", 3}, {"lps", 3}, {"scanner-xyz", 3}, {"3d-right-handed", 3},
+    {"3d-left-handed", 3}, {"right-anterior-superior-time", 4}, {"rast", 4},
+    {"left-anterior-superior-time", 4}, {"last", 4}, {"left-posterior-superior-time", 4},
+    {"lpst", 4}, {"scanner-xyz-time", 4}, {"3d-right-handed-time", 4},
+    {"3d-left-handed-time", 4}};
+
+std::string lowercase(std::string text) {
+    std::transform(text.begin(), text.end(), text.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return text;
+}
+
+// Reads the header line by line, counting the bytes it consumed.
+class LineReader {
+public:
+    LineReader(std::istream& in, const std::string& source) : mIn(in), mSource(source) {}
+
+    // False at the end of input.
+    bool next(std::string& text) {
+        text.clear();
+        char c = 0;
+        bool any = false;
+        while (mIn.get(c)) {
+            any = true;
+            ++mConsumed;
+            if (c == '\n')
+                break;
+            if (text.size() == kMaxLineLength)
+                throw ParseError(where({mLine + 1, 1}) + "header line longer than " +
+                                 std::to_string(kMaxLineLength) +
+                                 " characters; is this a NRRD file?");
+            text += c;
+        }
+        if (!any)
+            return false;
+        if (mConsumed > kMaxHeaderBytes)
+            throw ParseError(where({mLine + 1, 1}) + "NRRD header longer than " +
+                             std::to_string(kMaxHeaderBytes) + " bytes; is this a NRRD file?");
+        if (!text.empty() && text.back() == '\r')
+            text.pop_back();
+        ++mLine;
+        return true;
+    }
+
+    std::string where(Place place) const {
+        return mSource + ":" + std::to_string(place.line) + ":" + std::to_string(place.column) +
+               ": ";
+    }
+    int line() const { return mLine; }
+    std::int64_t consumed() const { return mConsumed; }
+    void countMagic(std::int64_t bytes) { mConsumed += bytes; }
+
+private:
+    std::istream& mIn;
+    const std::string& mSource;
+    int mLine = 0;
+    std::int64_t mConsumed = 0;
+};
+
+// A field's value as words (and parenthesized vectors), each knowing its column.
+class ValueScanner {
+public:
+    ValueScanner(std::string_view text, int firstColumn, const LineReader& reader, int line)
+        : mText(text), mFirstColumn(firstColumn), mReader(reader), mLine(line) {}
+
+    bool atEnd() {
+        skipBlanks();
+        return mPosition >= mText.size();
+    }
+    Place place() const {
+        return {mLine, mFirstColumn + static_cast<int>(mPosition)};
+    }
+    [[noreturn]] void fail(Place at, const std::string& what) const {
+        throw ParseError(mReader.where(at) + what);
+    }
+
+    std::string word() {
+        skipBlanks();
+        const std::size_t start = mPosition;
+        while (mPosition < mText.size() && mText[mPosition] != ' ' && mText[mPosition] != '\t')
+            ++mPosition;
+        return std::string(mText.substr(start, mPosition - start));
+    }
+
+    template <typename Number> Number number(const std::string& field, const char* kind) {
+        skipBlanks();
+        const Place at = place();
+        const std::string text = word();
+        Number value{};
+        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (text.empty() || error != std::errc() || end != text.data() + text.size())
+            fail(at, "expected " + std::string(kind) + " in '" + field + "', found " +
+                         (text.empty() ? std::string("nothing") : "'" + printable(text) + "'"));
+        return value;
+    }
+
+    // "(1,0,0)" -> {1, 0, 0}; "none" -> nullopt.
+    std::optional<std::vector<double>> vector(const std::string& field) {
+        skipBlanks();
+        const Place at = place();
+        if (mText.substr(mPosition, 4) == "none") {
+            mPosition += 4;
+            return std::nullopt;
+        }
+        if (mPosition >= mText.size() || mText[mPosition] != '(')
+            fail(at, "expected a vector '(x,y,z)' or 'none' in '" + field + "', found " +
+                         (mPosition >= mText.size() ? std::string("nothing")
+                                                    : "'" + printable(word()) + "'"));
+        const std::size_t close = mText.find(')', mPosition);
+        if (close == std::string_view::npos)
+            fail(at, "vector in '" + field + "' is not closed with ')'");
+        std::vector<double> values;
+        std::string_view inside = mText.substr(mPosition + 1, close - mPosition - 1);
+        mPosition = close + 1;
+        while (true) {
+            const std::size_t comma = std::min(inside.find(','), inside.size());
+            std::string_view item = inside.substr(0, comma);
+            while (!item.empty() && (item.front() == ' ' || item.front() == '\t'))
+                item.remove_prefix(1);
+            while (!item.empty() && (item.back() == ' ' || item.back() == '\t'))
+                item.remove_suffix(1);
+            double value = 0.0;
+            const char* last = item.data() + item.size();
+            const auto [end, error] = std::from_chars(item.data(), last, value);
+            if (item.empty() || error != std::errc() || end != last)
+                fail(at, "expected numbers in the vector of '" + field + "', found '" +
+                             printable(item) + "'");
+            values.push_back(value);
+            if (comma == inside.size())
+                break;
+            inside.remove_prefix(comma + 1);
+        }
+        return values;
+    }
+
+private:
+    void skipBlanks() {
+        while (mPosition < mText.size() && (mText[mPosition] == ' ' || mText[mPosition] == '\t'))
+            ++mPosition;
+    }
+
+    std::string_view mText;
+    int mFirstColumn;
+    const LineReader& mReader;
+    int mLine;
+    std::size_t mPosition = 0;
+};
+
+std::string vectorText(const std::vector<double>& values) {
+    std::string text = "(";
+    for (std::size_t i = 0; i < values.size(); ++i)
+        text += (i == 0 ? "" : ",") + formatNumber(values[i]);
+    return text + ")";
+}
+
+// The fields read so far, before they are checked against each other.
+struct Fields {
+    std::map<std::string, Place> seen;
+    int dimension = 0;
+    std::optional<std::vector<double>> spacings;
+    std::vector<std::optional<std::vector<double>>> directions;
+    std::optional<std::vector<double>> origin;
+    int spaceDimension = 0;
+    bool hasEndian = false;
+};
+
+void readMagic(std::istream& in, const std::string& source, LineReader& reader) {
+    char start[8] = {};
+    in.read(start, sizeof start);
+    const std::string_view magic(start, static_cast<std::size_t>(in.gcount()));
+    reader.countMagic(in.gcount());
+    if (magic.size() < 8 || magic.substr(0, 4) != "NRRD")
+        throw ParseError(source + ": not a NRRD file: expected it to start with 'NRRD0001' to "
+                                  "'NRRD0005'");
+    if (magic.substr(4, 3) != "000" || magic[7] < '1' || magic[7] > '5')
+        throw ParseError(source + ": unsupported NRRD version '" + printable(magic) +
+                         "'; this reader reads NRRD0001 to NRRD0005");
+    std::string rest;
+    reader.next(rest);
+    if (!rest.empty())
+        throw ParseError(reader.where({1, 9}) + "expected the end of the line after '" +
+                         std::string(magic) + "', found '" + printable(rest) + "'");
+}
+
+RawValueType parseType(const std::string& name, const LineReader& reader, Place at) {
+    const std::string key = lowercase(name);
+    for (const NamedType& known : kTypes)
+        if (key == known.name)
+            return known.type;
+    const std::string expected = "; texsplat reads int8, uint8, int16, uint16, int32, uint32, "
+                                 "float and double";
+    for (const char* unsupported : kUnsupportedTypes)
+        if (key == unsupported)
+            throw DataError(reader.where(at) + "type '" + printable(name) + "' is not supported" +
+                            expected);
+    throw ParseError(reader.where(at) + "unknown type '" + printable(name) + "'" + expected);
+}
+
+NrrdEncoding parseEncoding(const std::string& name, const LineReader& reader, Place at) {
+    const std::string key = lowercase(name);
+    if (key == "raw")
+        return NrrdEncoding::Raw;
+    if (key == "gzip" || key == "gz")
+        return NrrdEncoding::Gzip;
+    const std::string expected = "; texsplat reads raw and gzip (convert with: unu save -f nrrd "
+                                 "-e gzip -i IN -o OUT.nrrd)";
+    for (const char* other : {"ascii", "text", "txt", "hex", "bzip2", "bz2", "zrl"})
+        if (key == other)
+            throw DataError(reader.where(at) + "encoding '" + printable(name) +
+                            "' is not supported" + expected);
+    throw ParseError(reader.where(at) + "unknown encoding '" + printable(name) + "'" + expected);
+}
+
+// Reads the value of one field into `header` and `fields`.
+void readField(const std::string& field, ValueScanner& value, const LineReader& reader,
+               NrrdHeader& header, Fields& fields) {
+    const Place at = value.place();
+    const auto requireDimension = [&] {
+        if (fields.dimension == 0)
+            value.fail(at, "'" + field + "' comes before 'dimension'");
+    };
+    const auto perAxis = [&](auto read) {
+        requireDimension();
+        for (int axis = 0; axis < fields.dimension; ++axis) {
+            if (value.atEnd())
+                value.fail(value.place(), "'" + field + "' needs " +
+                                              std::to_string(fields.dimension) +
+                                              " values (one per axis), found " +
+                                              std::to_string(axis));
+            read();
+        }
+    };
+    if (field == "dimension") {
+        fields.dimension = value.number<int>(field, "a whole number");
+        if (fields.dimension < 1 || fields.dimension > kMaxDimension)
+            throw DataError(reader.where(at) + "dimension " + std::to_string(fields.dimension) +
+                            " is not supported; texsplat reads 1- to 3-D scalars and 4-D "
+                            "arrays of 3-vectors (sizes 3 X Y Z)");
+    } else if (field == "type") {
+        header.typeName = std::string(value.word());
+        std::string rest = value.word();
+        while (!rest.empty()) { // "unsigned short int" is one type of several words
+            header.typeName += " " + rest;
+            rest = value.word();
+        }
+        header.layout.type = parseType(header.typeName, reader, at);
+    } else if (field == "sizes") {
+        perAxis([&] { header.sizes.push_back(value.number<std::int64_t>(field, "a size")); });
+    } else if (field == "endian") {
+        const std::string name = lowercase(value.word());
+        if (name != "little" && name != "big")
+            value.fail(at, "unknown endian '" + printable(name) + "'; expected little or big");
+        header.layout.endian = name == "little" ? RawEndian::Little : RawEndian::Big;
+        fields.hasEndian = true;
+    } else if (field == "encoding") {
+        header.encoding = parseEncoding(value.word(), reader, at);
+    } else if (field == "spacings") {
+        fields.spacings.emplace();
+        perAxis([&] { fields.spacings->push_back(value.number<double>(field, "a number")); });
+    } else if (field == "space directions") {
+        perAxis([&] { fields.directions.push_back(value.vector(field)); });
+    } else if (field == "space origin") {
+        fields.origin = value.vector(field);
+        if (!fields.origin)
+            value.fail(at, "'space origin' must be a vector '(x,y,z)'");
+    } else if (field == "space") {
+        const std::string name = value.word();
+        const auto known = kSpaces.find(lowercase(name));
+        if (known == kSpaces.end())
+            value.fail(at, "unknown space '" + printable(name) + "'");
+        fields.spaceDimension = known->second;
+    } else if (field == "space dimension") {
+        fields.spaceDimension = value.number<int>(field, "a whole number");
+        if (fields.spaceDimension < 1)
+            value.fail(at, "'space dimension' must be 1 or more, found " +
+                               std::to_string(fields.spaceDimension));
+    } else if (field == "byte skip") {
+        header.byteSkip = value.number<std::int64_t>(field, "a whole number");
+        if (header.byteSkip < -1)
+            value.fail(at, "'byte skip' must be -1 or more, found " +
+                               std::to_string(header.byteSkip));
+    } else if (field == "line skip") {
+        header.lineSkip = value.number<std::int64_t>(field, "a whole number");
+        if (header.lineSkip < 0)
+            value.fail(at, "'line skip' must be 0 or more, found " +
+                               std::to_string(header.lineSkip));
+    } else if (field == "data file") {
+        std::string name = value.word();
+        for (std::string more = value.word(); !more.empty(); more = value.word())
+            name += " " + more;
+        if (name.empty())
+            value.fail(at, "'data file' names no file");
+        if (name.rfind("LIST", 0) == 0 ||
+            (name.find('%') != std::string::npos && name.find(' ') != std::string::npos))
+            throw DataError(reader.where(at) + "several data files are not supported; join "
+                                               "them into one (unu join)");
+        header.dataFile = name;
+        return; // the rest of the line is the name
+    } else {
+        value.fail({at.line, 1}, "unknown field '" + printable(field) + "'");
+    }
+    if (!value.atEnd())
+        value.fail(value.place(), "unexpected '" + printable(value.word()) + "' after the " +
+                                      "value of '" + field + "'");
+}
+
+// "axis 2" in messages counts from 0, as teem does.
+std::string axisName(int axis) { return "axis " + std::to_string(axis); }
+
+// Spacing and origin from `spacings` or `space directions` and `space origin`.
+void readGeometry(const Fields& fields, const LineReader& reader, int firstSpatialAxis,
+                  NrrdHeader& header) {
+    const auto placeOf = [&](const char* field) { return reader.where(fields.seen.at(field)); };
+    const bool hasDirections = fields.seen.count("space directions") != 0;
+    if (fields.spacings && hasDirections)
+        throw ParseError(placeOf("spacings") + "a header gives either 'spacings' or 'space "
+                                               "directions', not both");
+    const int spaceDimension = fields.spaceDimension != 0 ? fields.spaceDimension : kSpaceDimension;
+    if ((hasDirections || fields.origin) && spaceDimension != kSpaceDimension)
+        throw DataError(placeOf(fields.seen.count("space") ? "space" : "space dimension") +
+                        "space dimension " + std::to_string(spaceDimension) +
+                        " is not supported; expected 3");
+    for (int axis = 0; axis < fields.dimension; ++axis) {
+        const bool spatial = axis >= firstSpatialAxis;
+        const int world = axis - firstSpatialAxis;
+        if (fields.spacings) {
+            const double spacing = (*fields.spacings)[static_cast<std::size_t>(axis)];
+            if (!spatial)
+                continue; // teem writes nan for the vector axis
+            if (!(std::isfinite(spacing) && spacing > 0.0))
+                throw DataError(placeOf("spacings") + "the spacing of " + axisName(axis) +
+                                " must be a finite number above 0, found " +
+                                formatNumber(spacing));
+            header.layout.spacing[world] = spacing;
+        }
+        if (hasDirections) {
+            const auto& direction = fields.directions[static_cast<std::size_t>(axis)];
+            if (!spatial) {
+                if (direction)
+                    throw DataError(placeOf("space directions") + axisName(axis) +
+                                    " holds the 3 vector components; its direction must be "
+                                    "'none', found " + vectorText(*direction));
+                continue;
+            }
+            if (!direction)
+                throw DataError(placeOf("space directions") + "the direction of " +
+                                axisName(axis) + " is 'none'; a spatial axis needs a vector");
+            if (direction->size() != kSpaceDimension)
+                throw ParseError(placeOf("space directions") + "the direction of " +
+                                 axisName(axis) + " has " + std::to_string(direction->size()) +
+                                 " components; the space has 3");
+            for (int component = 0; component < kSpaceDimension; ++component)
+                if ((component == world) != ((*direction)[std::size_t(component)] != 0.0))
+                    throw DataError(placeOf("space directions") + "the direction of " +
+                                    axisName(axis) + " is " + vectorText(*direction) +
+                                    ", not along world axis " + "xyz"[world] +
+                                    "; oblique, rotated or permuted grids are not supported "
+                                    "(resample the volume onto an axis-aligned grid)");
+            const double length = (*direction)[static_cast<std::size_t>(world)];
+            if (!(std::isfinite(length) && length > 0.0))
+                throw DataError(placeOf("space directions") + "the direction of " +
+                                axisName(axis) + " is " + vectorText(*direction) +
+                                "; mirrored axes (negative directions) are not supported");
+            header.layout.spacing[world] = length;
+        }
+    }
+    if (fields.origin) {
+        if (fields.origin->size() != kSpaceDimension)
+            throw ParseError(placeOf("space origin") + "'space origin' has " +
+                             std::to_string(fields.origin->size()) +
+                             " components; the space has 3");
+        for (int world = 0; world < kSpaceDimension; ++world)
+            header.layout.origin[world] = (*fields.origin)[static_cast<std::size_t>(world)];
+    }
+}
+
+// Checks the fields against each other and completes the layout.
+void finish(const Fields& fields, const LineReader& reader, NrrdHeader& header) {
+    for (const char* required : {"dimension", "type", "sizes", "encoding"})
+        if (fields.seen.count(required) == 0)
+            throw ParseError(reader.where({reader.line(), 1}) + "the header has no '" +
+                             required + "' field");
+    const Place sizesAt = fields.seen.at("sizes");
+    const bool vectors = fields.dimension == kMaxDimension;
+    if (vectors && header.sizes[0] != 3)
+        throw DataError(reader.where(sizesAt) + "a 4-D array must hold 3-vectors along its "
+                                                "first axis (sizes 3 X Y Z), found sizes " +
+                        header.sizesText());
+    const int firstSpatialAxis = vectors ? 1 : 0;
+    header.layout.components = vectors ? 3 : 1;
+    glm::i64vec3 dims(1);
+    for (int axis = firstSpatialAxis; axis < fields.dimension; ++axis)
+        dims[axis - firstSpatialAxis] = header.sizes[static_cast<std::size_t>(axis)];
+    if (!fields.hasEndian && header.layout.bytesPerValue() > 1)
+        throw ParseError(reader.where(fields.seen.at("type")) + "type '" +
+                         printable(header.typeName) +
+                         "' has several bytes, but the header has no 'endian' field");
+    if (header.byteSkip == -1 && header.encoding != NrrdEncoding::Raw)
+        throw DataError(reader.where(fields.seen.at("byte skip")) +
+                        "'byte skip: -1' works with raw encoding only");
+    readGeometry(fields, reader, firstSpatialAxis, header);
+    try {
+        static_cast<void>(GridGeometry(dims, header.layout.origin, header.layout.spacing));
+        header.layout.dims = dims;
+        static_cast<void>(header.layout.dataBytes());
+    } catch (const DataError& error) {
+        throw DataError(reader.where(sizesAt) + error.what());
+    }
+}
+
+} // namespace
+
+const char* NrrdHeader::encodingName() const {
+    return encoding == NrrdEncoding::Raw ? "raw" : "gzip";
+}
+
+std::string NrrdHeader::sizesText() const {
+    std::string text;
+    for (const std::int64_t size : sizes)
+        text += (text.empty() ? "" : " ") + std::to_string(size);
+    return text;
+}
+
+NrrdHeader NrrdHeader::parse(std::istream& in, const std::string& source) {
+    LineReader reader(in, source);
+    readMagic(in, source, reader);
+    NrrdHeader header;
+    Fields fields;
+    std::string line;
+    bool blankLine = false;
+    while (reader.next(line)) {
+        if (line.empty()) {
+            blankLine = true;
+            break;
+        }
+        if (line[0] == '#')
+            continue;
+        const std::size_t separator = line.find(": ");
+        const std::size_t keyValue = line.find(":=");
+        if (keyValue != std::string::npos && keyValue < separator)
+            continue; // key/value pairs describe, they do not lay out the data
+        if (separator == std::string::npos)
+            throw ParseError(reader.where({reader.line(), 1}) +
+                             "expected 'field: value' or 'key:=value', found '" +
+                             printable(line) + "'");
+        std::string field = lowercase(line.substr(0, separator));
+        const auto alias = kFieldAliases.find(field);
+        if (alias != kFieldAliases.end())
+            field = alias->second;
+        const Place at{reader.line(), 1};
+        if (std::find(std::begin(kIgnoredFields), std::end(kIgnoredFields), field) !=
+            std::end(kIgnoredFields))
+            continue;
+        const auto [previous, isNew] = fields.seen.emplace(field, at);
+        if (!isNew)
+            throw ParseError(reader.where(at) + "duplicate field '" + printable(field) +
+                             "' (first given on line " + std::to_string(previous->second.line) +
+                             ")");
+        ValueScanner value(std::string_view(line).substr(separator + 2),
+                           static_cast<int>(separator) + 3, reader, reader.line());
+        readField(field, value, reader, header, fields);
+    }
+    if (!blankLine && header.dataFile.empty())
+        throw ParseError(reader.where({reader.line() + 1, 1}) +
+                         "the header ends without the blank line before its data and names "
+                         "no 'data file'");
+    finish(fields, reader, header);
+    header.dataOffset = reader.consumed();
+    return header;
+}
+
+} // namespace texsplat::volume

@@ -1,0 +1,200 @@
+#include "nodes/volume/NetCdfVolume.h"
+
+#include "ExternalTool.h"
+#include "SceneNodesTestSupport.h"
+#include "nodes/VolumeData.h"
+#include "nodes/volume/VolumeFileInfo.h"
+#include "scenegraph/Error.h"
+#include "tests/scenegraph/TestFifo.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+namespace texsplat::volume {
+namespace {
+
+using texsplat::nodes::test::errorOf;
+using texsplat::nodes::test::findTool;
+using texsplat::nodes::test::runTool;
+using texsplat::nodes::test::shellQuoted;
+using texsplat::nodes::test::testPath;
+
+#ifdef TEXSPLAT_WITH_NETCDF
+
+const std::string& ncgen() {
+    static const std::string tool = findTool({"ncgen"});
+    return tool;
+}
+
+#define REQUIRE_NCGEN()                                                                        \
+    if (ncgen().empty())                                                                       \
+    GTEST_SKIP() << "NetCDF's ncgen is not installed (netcdf-bin); it writes the test's files"
+
+// The NetCDF file ncgen writes from `cdl`, in the format `kind` ("classic", "nc4", ...).
+std::string generate(const std::string& name, const std::string& cdl,
+                     const std::string& kind = "classic") {
+    const std::string source = testPath(name + ".cdl");
+    std::ofstream(source) << cdl;
+    const std::string path = testPath(name + ".nc");
+    EXPECT_TRUE(runTool(ncgen() + " -k " + shellQuoted(kind) + " -o " + shellQuoted(path) + " " +
+                        shellQuoted(source)))
+        << cdl;
+    return path;
+}
+
+// v[z][y][x] = x + 10 y + 100 z, with evenly spaced coordinates along x, y and z.
+const char* const kRamp = R"(netcdf ramp {
+dimensions:
+    z = 2 ; y = 3 ; x = 4 ;
+variables:
+    double z(z) ; float y(y) ; float x(x) ;
+    float v(z, y, x) ;
+    float flat(y, x) ;
+data:
+    z = -5, -3 ;
+    y = 0, 1, 2 ;
+    x = 10, 10.5, 11, 11.5 ;
+    v = 0, 1, 2, 3, 10, 11, 12, 13, 20, 21, 22, 23,
+        100, 101, 102, 103, 110, 111, 112, 113, 120, 121, 122, 123 ;
+    flat = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11 ;
+}
+)";
+
+TEST(NetCdfVolume, readsA3DVariableInCOrderWithItsCoordinatesAsNcgenWritesIt) {
+    REQUIRE_NCGEN();
+    for (const char* kind : {"classic", "64-bit offset", "cdf5", "nc4"}) {
+        SCOPED_TRACE(kind);
+        const std::string path = generate("ramp", kRamp, kind);
+        const auto grid = std::get<ScalarGridPtr>(readNetCdfVariable(path, "v"));
+        EXPECT_EQ(grid->geometry(), GridGeometry({4, 3, 2}, {10.0, 0.0, -5.0}, {0.5, 1.0, 2.0}));
+        for (int z = 0; z < 2; ++z)
+            for (int y = 0; y < 3; ++y)
+                for (int x = 0; x < 4; ++x)
+                    ASSERT_EQ(grid->value({x, y, z}), float(x + 10 * y + 100 * z));
+    }
+}
+
+TEST(NetCdfVolume, appliesScaleAndOffsetAndMakesFillValuesEmpty) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("packed", R"(netcdf packed {
+dimensions:
+    z = 2 ; y = 1 ; x = 2 ;
+variables:
+    short t(z, y, x) ;
+        t:scale_factor = 0.5 ;
+        t:add_offset = 10. ;
+        t:_FillValue = -1s ;
+data:
+    t = 0, 4, _, 8 ;
+}
+)");
+    const auto grid = std::get<ScalarGridPtr>(readNetCdfVariable(path, "t"));
+    EXPECT_EQ(grid->value({0, 0, 0}), 10.0f);
+    EXPECT_EQ(grid->value({1, 0, 0}), 12.0f);
+    EXPECT_FALSE(grid->isActive({0, 0, 1})) << "the fill value is an empty voxel";
+    EXPECT_EQ(grid->value({1, 0, 1}), 14.0f);
+}
+
+const char* const kSeries = R"(netcdf series {
+dimensions:
+    time = UNLIMITED ; z = 1 ; y = 1 ; x = 2 ;
+variables:
+    double time(time) ;
+    int w(time, z, y, x) ;
+    float flat(y, x) ;
+data:
+    time = 0, 6 ;
+    w = 1, 2, 3, 4 ;
+    flat = 1, 2 ;
+}
+)";
+
+TEST(NetCdfVolume, readsATimeStepOfA4DVariable) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("series", kSeries);
+    const auto second = std::get<ScalarGridPtr>(readNetCdfVariable(path, "w", 1));
+    EXPECT_EQ(second->value({0, 0, 0}), 3.0f);
+    EXPECT_EQ(second->value({1, 0, 0}), 4.0f);
+    // No name: the file's only 3-D or 4-D variable.
+    EXPECT_EQ(std::get<ScalarGridPtr>(readNetCdfVariable(path, ""))->value({1, 0, 0}), 2.0f);
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "w", 2); }),
+              path + ": variable 'w': timeStep 2 is outside its 2 steps along 'time' (0 to 1)");
+}
+
+TEST(NetCdfVolume, aMissingOrWrongVariableGetsTheVariablesListed) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("ramp", kRamp);
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "temperature"); }),
+              path + ": no variable named 'temperature'; the file has: float v(z=2, y=3, x=4), "
+                     "float flat(y=3, x=4)");
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "flat"); }),
+              path + ": variable 'flat' has 2 dimensions (float flat(y=3, x=4)); texsplat reads "
+                     "3-D variables (z, y, x) and 4-D ones (time, z, y, x)");
+    const std::string two = generate("two", R"(netcdf two {
+dimensions:
+    z = 1 ; y = 1 ; x = 1 ;
+variables:
+    float a(z, y, x) ;
+    byte b(z, y, x) ;
+}
+)");
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(two, ""); }),
+              two + ": no variable named, and the file has 2 3-D or 4-D variables; name one "
+                    "(VolumeData's gridName) of: float a(z=1, y=1, x=1), byte b(z=1, y=1, x=1)");
+}
+
+TEST(NetCdfVolume, aFileThatIsNotNetCdfGetsTheFormatNamed) {
+    const std::string path = testPath("not.nc");
+    std::ofstream(path, std::ios::binary) << std::string("\x00\x01\xfe\xff binary", 11);
+    EXPECT_EQ(errorOf<ParseError>([&] { readNetCdfVariable(path, "v"); }),
+              path + ": not a NetCDF file: expected NetCDF classic, 64-bit offset, CDF-5 or "
+                     "NetCDF-4 (NetCDF: Unknown file format)");
+    const texsplat::test::TestFifo pipe(testPath("data.nc"));
+    EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(pipe.path()); }),
+              pipe.path() + ": cannot read file: it is a FIFO, not a regular file");
+}
+
+TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("series", kSeries);
+    const auto volume = nodes::VolumeData::create();
+    volume->source.setValue(nodes::VolumeSource::FileNetCdf);
+    volume->fileName.setValue(path);
+    volume->gridName.setValue("w");
+    volume->timeStep.setValue(1);
+    EXPECT_EQ(volume->scalarGrid()->value({1, 0, 0}), 4.0f);
+
+    const std::string info = describeVolumeFile(path, 2);
+    EXPECT_EQ(info.substr(0, info.find("  values")),
+              path + ": NetCDF, 3 variables\n"
+                     "variable double time(time=2)\n"
+                     "  coordinate of dimension 'time'\n"
+                     "variable int w(time=2, z=1, y=1, x=2)\n"
+                     "  time steps    2 along 'time' (VolumeData timeStep 0 to 1; step 0 below)\n");
+    EXPECT_NE(info.find("  dimensions    2 x 1 x 1 voxels (x, y, z)\n"), std::string::npos)
+        << info;
+    EXPECT_NE(info.find("  value range   1 .. 2\n"), std::string::npos) << info;
+    EXPECT_NE(info.find("  scene         VolumeData { source FILE_NETCDF fileName \"" + path +
+                        "\" }\n"
+                        "variable float flat(y=1, x=2)\n"
+                        "  not readable: texsplat reads 3-D (z, y, x) and 4-D (time, z, y, x) "
+                        "variables of numbers\n"),
+              std::string::npos)
+        << info;
+}
+
+#else
+
+TEST(NetCdfVolume, saysWhenItIsNotBuiltIn) {
+    EXPECT_FALSE(isNetCdfAvailable());
+    EXPECT_EQ(errorOf<IoError>([] { readNetCdfVariable("a.nc", "v"); }),
+              "a.nc: cannot read NetCDF files: texsplat was built without NetCDF "
+              "(TEXSPLAT_WITH_NETCDF=OFF)");
+}
+
+#endif
+
+} // namespace
+} // namespace texsplat::volume
