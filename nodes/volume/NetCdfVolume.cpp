@@ -52,7 +52,7 @@ std::string variableList(const std::vector<NetCdfVariableInfo>& variables) {
     for (const NetCdfVariableInfo& info : variables)
         if (!info.isCoordinate)
             names += (names.empty() ? "" : ", ") + info.declaration();
-    return names.empty() ? "no variables but coordinates" : names;
+    return names.empty() ? "only coordinate variables" : names;
 }
 
 // nc_strerror() names itself: "NetCDF: Unknown file format".
@@ -68,7 +68,7 @@ public:
         // The same messages as every reader for missing files, folders and FIFOs.
         static_cast<void>(detail::openForReading(path));
         const int status = nc_open(path.c_str(), NC_NOWRITE, &mId);
-        if (status == NC_ENOTNC || status == NC_EHDFERR)
+        if (status == NC_ENOTNC)
             throw ParseError(path + ": not a NetCDF file: expected NetCDF classic, 64-bit offset, "
                                     "CDF-5 or NetCDF-4 (" +
                              nc_strerror(status) + ")");
@@ -203,6 +203,9 @@ int findVariable(const NetCdfFile& file, const std::string& name) {
             }
         if (volumes == 1)
             return found;
+        if (volumes == 0)
+            throw DataError(file.path() + ": no 3-D or 4-D variable to read; the file has: " +
+                            variableList(variables));
         throw DataError(file.path() + ": no variable named, and the file has " +
                         std::to_string(volumes) +
                         " 3-D or 4-D variables; name one (VolumeData's gridName) of: " +

@@ -143,6 +143,16 @@ variables:
     EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(two, ""); }),
               two + ": no variable named, and the file has 2 3-D or 4-D variables; name one "
                     "(VolumeData's gridName) of: float a(z=1, y=1, x=1), byte b(z=1, y=1, x=1)");
+    const std::string flat = generate("flat", R"(netcdf flat {
+dimensions:
+    y = 1 ; x = 2 ;
+variables:
+    float x(x) ;
+    float sst(y, x) ;
+}
+)");
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(flat, ""); }),
+              flat + ": no 3-D or 4-D variable to read; the file has: float sst(y=1, x=2)");
 }
 
 TEST(NetCdfVolume, aFileThatIsNotNetCdfGetsTheFormatNamed) {
