@@ -2,12 +2,12 @@
 
 #include "nodes/volume/GridGeometry.h"
 #include "nodes/volume/detail/Format.h"
+#include "nodes/volume/detail/NrrdHeaderText.h"
 #include "nodes/volume/detail/Printable.h"
 #include "scenegraph/Error.h"
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -17,19 +17,13 @@ namespace texsplat::volume {
 namespace {
 
 using detail::formatNumber;
+using detail::NrrdLineReader;
+using detail::NrrdPlace;
+using detail::NrrdValueScanner;
 using detail::printable;
 
-constexpr std::size_t kMaxLineLength = 8192;
-// Far beyond any real header (teem writes a few hundred bytes); bounds the work on garbage.
-constexpr std::int64_t kMaxHeaderBytes = std::int64_t{1} << 20;
 constexpr int kMaxDimension = 4;
 constexpr int kSpaceDimension = 3;
-
-// Where a value stands in the header, for messages.
-struct Place {
-    int line = 0;
-    int column = 0;
-};
 
 struct NamedType {
     const char* name;
@@ -82,142 +76,7 @@ std::string lowercase(std::string text) {
     return text;
 }
 
-// Reads the header line by line, counting the bytes it consumed.
-class LineReader {
-public:
-    LineReader(std::istream& in, const std::string& source) : mIn(in), mSource(source) {}
-
-    // False at the end of input.
-    bool next(std::string& text) {
-        text.clear();
-        char c = 0;
-        bool any = false;
-        while (mIn.get(c)) {
-            any = true;
-            ++mConsumed;
-            if (c == '\n')
-                break;
-            if (text.size() == kMaxLineLength)
-                throw ParseError(where({mLine + 1, 1}) + "header line longer than " +
-                                 std::to_string(kMaxLineLength) +
-                                 " characters; is this a NRRD file?");
-            text += c;
-        }
-        if (!any)
-            return false;
-        if (mConsumed > kMaxHeaderBytes)
-            throw ParseError(where({mLine + 1, 1}) + "NRRD header longer than " +
-                             std::to_string(kMaxHeaderBytes) + " bytes; is this a NRRD file?");
-        if (!text.empty() && text.back() == '\r')
-            text.pop_back();
-        ++mLine;
-        return true;
-    }
-
-    std::string where(Place place) const {
-        return mSource + ":" + std::to_string(place.line) + ":" + std::to_string(place.column) +
-               ": ";
-    }
-    int line() const { return mLine; }
-    std::int64_t consumed() const { return mConsumed; }
-    void countMagic(std::int64_t bytes) { mConsumed += bytes; }
-
-private:
-    std::istream& mIn;
-    const std::string& mSource;
-    int mLine = 0;
-    std::int64_t mConsumed = 0;
-};
-
-// A field's value as words (and parenthesized vectors), each knowing its column.
-class ValueScanner {
-public:
-    ValueScanner(std::string_view text, int firstColumn, const LineReader& reader, int line)
-        : mText(text), mFirstColumn(firstColumn), mReader(reader), mLine(line) {}
-
-    bool atEnd() {
-        skipBlanks();
-        return mPosition >= mText.size();
-    }
-    Place place() const {
-        return {mLine, mFirstColumn + static_cast<int>(mPosition)};
-    }
-    [[noreturn]] void fail(Place at, const std::string& what) const {
-        throw ParseError(mReader.where(at) + what);
-    }
-
-    std::string word() {
-        skipBlanks();
-        const std::size_t start = mPosition;
-        while (mPosition < mText.size() && mText[mPosition] != ' ' && mText[mPosition] != '\t')
-            ++mPosition;
-        return std::string(mText.substr(start, mPosition - start));
-    }
-
-    template <typename Number> Number number(const std::string& field, const char* kind) {
-        skipBlanks();
-        const Place at = place();
-        const std::string text = word();
-        Number value{};
-        const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (text.empty() || error != std::errc() || end != text.data() + text.size())
-            fail(at, "expected " + std::string(kind) + " in '" + field + "', found " +
-                         (text.empty() ? std::string("nothing") : "'" + printable(text) + "'"));
-        return value;
-    }
-
-    // "(1,0,0)" -> {1, 0, 0}; "none" -> nullopt.
-    std::optional<std::vector<double>> vector(const std::string& field) {
-        skipBlanks();
-        const Place at = place();
-        if (mText.substr(mPosition, 4) == "none") {
-            mPosition += 4;
-            return std::nullopt;
-        }
-        if (mPosition >= mText.size() || mText[mPosition] != '(')
-            fail(at, "expected a vector '(x,y,z)' or 'none' in '" + field + "', found " +
-                         (mPosition >= mText.size() ? std::string("nothing")
-                                                    : "'" + printable(word()) + "'"));
-        const std::size_t close = mText.find(')', mPosition);
-        if (close == std::string_view::npos)
-            fail(at, "vector in '" + field + "' is not closed with ')'");
-        std::vector<double> values;
-        std::string_view inside = mText.substr(mPosition + 1, close - mPosition - 1);
-        mPosition = close + 1;
-        while (true) {
-            const std::size_t comma = std::min(inside.find(','), inside.size());
-            std::string_view item = inside.substr(0, comma);
-            while (!item.empty() && (item.front() == ' ' || item.front() == '\t'))
-                item.remove_prefix(1);
-            while (!item.empty() && (item.back() == ' ' || item.back() == '\t'))
-                item.remove_suffix(1);
-            double value = 0.0;
-            const char* last = item.data() + item.size();
-            const auto [end, error] = std::from_chars(item.data(), last, value);
-            if (item.empty() || error != std::errc() || end != last)
-                fail(at, "expected numbers in the vector of '" + field + "', found '" +
-                             printable(item) + "'");
-            values.push_back(value);
-            if (comma == inside.size())
-                break;
-            inside.remove_prefix(comma + 1);
-        }
-        return values;
-    }
-
-private:
-    void skipBlanks() {
-        while (mPosition < mText.size() && (mText[mPosition] == ' ' || mText[mPosition] == '\t'))
-            ++mPosition;
-    }
-
-    std::string_view mText;
-    int mFirstColumn;
-    const LineReader& mReader;
-    int mLine;
-    std::size_t mPosition = 0;
-};
-
+// "(0.6,0.8,0)": a direction as a message quotes it.
 std::string vectorText(const std::vector<double>& values) {
     std::string text = "(";
     for (std::size_t i = 0; i < values.size(); ++i)
@@ -227,7 +86,7 @@ std::string vectorText(const std::vector<double>& values) {
 
 // The fields read so far, before they are checked against each other.
 struct Fields {
-    std::map<std::string, Place> seen;
+    std::map<std::string, NrrdPlace> seen;
     int dimension = 0;
     std::optional<std::vector<double>> spacings;
     std::vector<std::optional<std::vector<double>>> directions;
@@ -236,7 +95,7 @@ struct Fields {
     bool hasEndian = false;
 };
 
-void readMagic(std::istream& in, const std::string& source, LineReader& reader) {
+void readMagic(std::istream& in, const std::string& source, NrrdLineReader& reader) {
     char start[8] = {};
     in.read(start, sizeof start);
     const std::string_view magic(start, static_cast<std::size_t>(in.gcount()));
@@ -254,7 +113,7 @@ void readMagic(std::istream& in, const std::string& source, LineReader& reader) 
                          std::string(magic) + "', found '" + printable(rest) + "'");
 }
 
-RawValueType parseType(const std::string& name, const LineReader& reader, Place at) {
+RawValueType parseType(const std::string& name, const NrrdLineReader& reader, NrrdPlace at) {
     const std::string key = lowercase(name);
     for (const NamedType& known : kTypes)
         if (key == known.name)
@@ -268,7 +127,7 @@ RawValueType parseType(const std::string& name, const LineReader& reader, Place 
     throw ParseError(reader.where(at) + "unknown type '" + printable(name) + "'" + expected);
 }
 
-NrrdEncoding parseEncoding(const std::string& name, const LineReader& reader, Place at) {
+NrrdEncoding parseEncoding(const std::string& name, const NrrdLineReader& reader, NrrdPlace at) {
     const std::string key = lowercase(name);
     if (key == "raw")
         return NrrdEncoding::Raw;
@@ -284,9 +143,9 @@ NrrdEncoding parseEncoding(const std::string& name, const LineReader& reader, Pl
 }
 
 // Reads the value of one field into `header` and `fields`.
-void readField(const std::string& field, ValueScanner& value, const LineReader& reader,
+void readField(const std::string& field, NrrdValueScanner& value, const NrrdLineReader& reader,
                NrrdHeader& header, Fields& fields) {
-    const Place at = value.place();
+    const NrrdPlace at = value.place();
     const auto requireDimension = [&] {
         if (fields.dimension == 0)
             value.fail(at, "'" + field + "' comes before 'dimension'");
@@ -309,12 +168,7 @@ void readField(const std::string& field, ValueScanner& value, const LineReader& 
                             " is not supported; texsplat reads 1- to 3-D scalars and 4-D "
                             "arrays of 3-vectors (sizes 3 X Y Z)");
     } else if (field == "type") {
-        header.typeName = std::string(value.word());
-        std::string rest = value.word();
-        while (!rest.empty()) { // "unsigned short int" is one type of several words
-            header.typeName += " " + rest;
-            rest = value.word();
-        }
+        header.typeName = value.words(); // "unsigned short int" is one type
         header.layout.type = parseType(header.typeName, reader, at);
     } else if (field == "sizes") {
         perAxis([&] { header.sizes.push_back(value.number<std::int64_t>(field, "a size")); });
@@ -357,9 +211,7 @@ void readField(const std::string& field, ValueScanner& value, const LineReader& 
             value.fail(at, "'line skip' must be 0 or more, found " +
                                std::to_string(header.lineSkip));
     } else if (field == "data file") {
-        std::string name = value.word();
-        for (std::string more = value.word(); !more.empty(); more = value.word())
-            name += " " + more;
+        const std::string name = value.words();
         if (name.empty())
             value.fail(at, "'data file' names no file");
         if (name.rfind("LIST", 0) == 0 ||
@@ -367,7 +219,6 @@ void readField(const std::string& field, ValueScanner& value, const LineReader& 
             throw DataError(reader.where(at) + "several data files are not supported; join "
                                                "them into one (unu join)");
         header.dataFile = name;
-        return; // the rest of the line is the name
     } else {
         value.fail({at.line, 1}, "unknown field '" + printable(field) + "'");
     }
@@ -380,7 +231,7 @@ void readField(const std::string& field, ValueScanner& value, const LineReader& 
 std::string axisName(int axis) { return "axis " + std::to_string(axis); }
 
 // Spacing and origin from `spacings` or `space directions` and `space origin`.
-void readGeometry(const Fields& fields, const LineReader& reader, int firstSpatialAxis,
+void readGeometry(const Fields& fields, const NrrdLineReader& reader, int firstSpatialAxis,
                   NrrdHeader& header) {
     const auto placeOf = [&](const char* field) { return reader.where(fields.seen.at(field)); };
     const bool hasDirections = fields.seen.count("space directions") != 0;
@@ -447,12 +298,12 @@ void readGeometry(const Fields& fields, const LineReader& reader, int firstSpati
 }
 
 // Checks the fields against each other and completes the layout.
-void finish(const Fields& fields, const LineReader& reader, NrrdHeader& header) {
+void finish(const Fields& fields, const NrrdLineReader& reader, NrrdHeader& header) {
     for (const char* required : {"dimension", "type", "sizes", "encoding"})
         if (fields.seen.count(required) == 0)
             throw ParseError(reader.where({reader.line(), 1}) + "the header has no '" +
                              required + "' field");
-    const Place sizesAt = fields.seen.at("sizes");
+    const NrrdPlace sizesAt = fields.seen.at("sizes");
     const bool vectors = fields.dimension == kMaxDimension;
     if (vectors && header.sizes[0] != 3)
         throw DataError(reader.where(sizesAt) + "a 4-D array must hold 3-vectors along its "
@@ -494,7 +345,7 @@ std::string NrrdHeader::sizesText() const {
 }
 
 NrrdHeader NrrdHeader::parse(std::istream& in, const std::string& source) {
-    LineReader reader(in, source);
+    NrrdLineReader reader(in, source);
     readMagic(in, source, reader);
     NrrdHeader header;
     Fields fields;
@@ -519,7 +370,7 @@ NrrdHeader NrrdHeader::parse(std::istream& in, const std::string& source) {
         const auto alias = kFieldAliases.find(field);
         if (alias != kFieldAliases.end())
             field = alias->second;
-        const Place at{reader.line(), 1};
+        const NrrdPlace at{reader.line(), 1};
         if (std::find(std::begin(kIgnoredFields), std::end(kIgnoredFields), field) !=
             std::end(kIgnoredFields))
             continue;
@@ -528,7 +379,7 @@ NrrdHeader NrrdHeader::parse(std::istream& in, const std::string& source) {
             throw ParseError(reader.where(at) + "duplicate field '" + printable(field) +
                              "' (first given on line " + std::to_string(previous->second.line) +
                              ")");
-        ValueScanner value(std::string_view(line).substr(separator + 2),
+        NrrdValueScanner value(std::string_view(line).substr(separator + 2),
                            static_cast<int>(separator) + 3, reader, reader.line());
         readField(field, value, reader, header, fields);
     }
