@@ -2,9 +2,11 @@
 
 #include "ExternalTool.h"
 #include "SceneNodesTestSupport.h"
+#include "nodes/NodeTypes.h"
 #include "nodes/VolumeData.h"
 #include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
@@ -169,12 +171,12 @@ TEST(NetCdfVolume, aFileThatIsNotNetCdfGetsTheFormatNamed) {
 TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {
     REQUIRE_NCGEN();
     const std::string path = generate("series", kSeries);
-    const auto volume = nodes::VolumeData::create();
-    volume->source.setValue(nodes::VolumeSource::FileNetCdf);
-    volume->fileName.setValue(path);
-    volume->gridName.setValue("w");
-    volume->timeStep.setValue(1);
-    EXPECT_EQ(volume->scalarGrid()->value({1, 0, 0}), 4.0f);
+    nodes::registerNodeTypes();
+    const sg::Node::Ptr root = sg::SceneReader::readString(
+        "#Inventor V2.1 ascii\nVolumeData { source FILE_NETCDF fileName \"" + path +
+        "\" gridName \"w\" timeStep 1 }\n");
+    const auto& volume = static_cast<const nodes::VolumeData&>(*root);
+    EXPECT_EQ(volume.scalarGrid()->value({1, 0, 0}), 4.0f);
 
     const std::string info = describeVolumeFile(path, 2);
     EXPECT_EQ(info.substr(0, info.find("  values")),

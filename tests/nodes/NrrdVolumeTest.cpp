@@ -2,11 +2,13 @@
 
 #include "ExternalTool.h"
 #include "SceneNodesTestSupport.h"
+#include "nodes/NodeTypes.h"
 #include "nodes/VolumeData.h"
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
@@ -231,10 +233,11 @@ TEST(NrrdVolume, isASourceOfVolumeDataAndOfInfo) {
     const std::string path = testPath("ramp.nrrd");
     runUnu("make -i " + shellQuoted(raw) + " -t uchar -s 4 3 2 -sp 1 1 2 -e raw -o " +
            shellQuoted(path));
-    const auto volume = nodes::VolumeData::create();
-    volume->source.setValue(nodes::VolumeSource::FileNrrd);
-    volume->fileName.setValue(path);
-    EXPECT_EQ(volume->scalarGrid()->value({1, 2, 1}), 121.0f);
+    nodes::registerNodeTypes();
+    const sg::Node::Ptr root = sg::SceneReader::readString(
+        "#Inventor V2.1 ascii\nVolumeData { source FILE_NRRD fileName \"" + path + "\" }\n");
+    const auto& volume = static_cast<const nodes::VolumeData&>(*root);
+    EXPECT_EQ(volume.scalarGrid()->value({1, 2, 1}), 121.0f);
 
     const std::string info = describeVolumeFile(path, 2);
     EXPECT_EQ(info.substr(0, info.find('\n') + 1),
