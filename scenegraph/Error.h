@@ -2,6 +2,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 namespace texsplat {
 
@@ -12,6 +13,27 @@ namespace texsplat {
 class Error : public std::runtime_error {
 public:
     using std::runtime_error::runtime_error;
+
+    /// @brief Puts `where` (a node's place in its scene file, "scene.iv:12:5") in front of the
+    /// message, once: the first node an action was in when the error passed through it claims
+    /// it (Action::traverse()), enclosing nodes leave it alone. An empty `where` (a node made
+    /// in code) claims it without changing the message, so that no enclosing node is blamed.
+    void locateAtNode(std::string_view where) {
+        if (mIsLocatedAtNode) {
+            return;
+        }
+        mIsLocatedAtNode = true;
+        if (!where.empty()) {
+            std::runtime_error::operator=(
+                std::runtime_error(std::string(where) + ": " + what()));
+        }
+    }
+
+    /// @brief Whether a node has claimed the error (locateAtNode()).
+    [[nodiscard]] bool isLocatedAtNode() const { return mIsLocatedAtNode; }
+
+private:
+    bool mIsLocatedAtNode = false;
 };
 
 /// @brief A scene file or other text input that does not follow its grammar.

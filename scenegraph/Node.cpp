@@ -21,6 +21,14 @@ const NodeType& Node::classType() {
 
 void Node::doAction(Action& /*action*/) {}
 
+std::string Node::sourceLocation() const {
+    if (mSourceFile == 0) {
+        return {};
+    }
+    return sourceFileName(mSourceFile) + ":" + std::to_string(mSourceLine) + ":" +
+           std::to_string(mSourceColumn);
+}
+
 void Node::getBoundingBox(BoundingBoxAction& action) { doAction(action); }
 
 void Node::search(SearchAction& action) {

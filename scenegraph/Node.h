@@ -1,8 +1,10 @@
 #pragma once
 
 #include "scenegraph/FieldContainer.h"
+#include "scenegraph/SourceFiles.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -65,6 +67,17 @@ public:
     /// @brief This node as a shared pointer (nodes are always created by `create()`).
     Ptr sharedNode();
 
+    /// @brief Records where the node was read: at `line`, `column` (from 1) of `file`. The
+    /// scene reader calls it; errors raised while an action is at the node start with it.
+    void setSourceLocation(SourceFileId file, std::uint32_t line, std::uint32_t column) {
+        mSourceFile = file;
+        mSourceLine = line;
+        mSourceColumn = column;
+    }
+
+    /// @brief "scene.iv:12:5", where the node was read; empty for a node made in code.
+    std::string sourceLocation() const;
+
 protected:
     Node() = default;
 
@@ -78,8 +91,11 @@ private:
 
     std::vector<FieldContainer*> mParents;
     // How many nodes this node references (children, node fields): zero means no cycle can
-    // pass through it.
-    std::size_t mReferenceCount = 0;
+    // pass through it. 32 bits, like the location, so that the location costs 8 bytes a node.
+    std::uint32_t mReferenceCount = 0;
+    SourceFileId mSourceFile = 0;
+    std::uint32_t mSourceLine = 0;
+    std::uint32_t mSourceColumn = 0;
 };
 
 } // namespace texsplat::sg

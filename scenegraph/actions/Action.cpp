@@ -39,10 +39,17 @@ void Action::traverse(Node& node) {
         std::vector<Node*>& path;
         ~PopPath() { path.pop_back(); }
     } popPath{mPath};
-    if (MethodTable::Method method = mMethods->find(node.type())) {
-        method(*this, node);
-    } else {
-        node.doAction(*this);
+    // An error raised while the action is at a node starts with where the node was read, so
+    // that checks made after parsing point into the scene file as syntax errors do.
+    try {
+        if (MethodTable::Method method = mMethods->find(node.type())) {
+            method(*this, node);
+        } else {
+            node.doAction(*this);
+        }
+    } catch (Error& error) {
+        error.locateAtNode(node.sourceLocation());
+        throw;
     }
 }
 

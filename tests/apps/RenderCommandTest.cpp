@@ -176,7 +176,9 @@ TEST_F(RenderCommandTest, reportsBadInputsAndWritesNothing) {
                                                  "VolumeData { source FILE_RAW fileName \"" +
                                                      raw + "\" }\nTextureSplat { }\n}\n");
     expectError(nanScene + " -o " + png,
-                "VolumeData: " + raw + ": all 8 voxels are NaN or infinite; nothing to draw", png);
+                nanScene + ":3:1: VolumeData: " + raw +
+                    ": all 8 voxels are NaN or infinite; nothing to draw",
+                png);
     const auto missing = runTexsplat("render " + path("missing.iv") + " -o " + png);
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_NE(missing.standardError.find(path("missing.iv")), std::string::npos);

@@ -7,6 +7,7 @@
 #include "scenegraph/Group.h"
 #include "scenegraph/NodeRegistry.h"
 #include "scenegraph/Separator.h"
+#include "scenegraph/SourceFiles.h"
 #include "scenegraph/fields/Field.h"
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/fields/ValueFormat.h"
@@ -40,7 +41,8 @@ bool startsNumber(char c) {
 } // namespace
 
 SceneParser::SceneParser(std::string_view text, std::string fileName, std::string baseDirectory)
-    : mLexer(text, std::move(fileName)), mBaseDirectory(std::move(baseDirectory)) {}
+    : mSourceFile(internSourceFile(fileName)), mLexer(text, std::move(fileName)),
+      mBaseDirectory(std::move(baseDirectory)) {}
 
 std::shared_ptr<Node> SceneParser::parseFile() {
     mLexer.readHeader();
@@ -196,6 +198,10 @@ std::shared_ptr<FieldContainer> SceneParser::readInstance(const std::string& typ
         mLexer.fail(brace, "expected '{' after " + typeName + ", got " + mLexer.describeNext());
     }
     const std::shared_ptr<FieldContainer> container = createInstance(typeName, where);
+    if (Node* node = container->asNode()) {
+        node->setSourceLocation(mSourceFile, static_cast<std::uint32_t>(where.line),
+                                static_cast<std::uint32_t>(where.column));
+    }
     if (!defName.empty()) {
         // `name+N` is how Inventor writers make repeated or missing names unique: the node's
         // own name is the part before '+'. "+N" (ours) and "_+N" (Coin's) mean it has none, and

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "scenegraph/SourceFiles.h"
 #include "scenegraph/fields/FieldValueReader.h"
 #include "scenegraph/io/detail/ConnectionSources.h"
 #include "scenegraph/io/detail/SceneLexer.h"
@@ -77,6 +78,7 @@ private:
     std::string fieldContext() const;
     [[noreturn]] void failExpected(const std::string& what, const std::string& got);
 
+    SourceFileId mSourceFile; // where the nodes read were, for Node::sourceLocation()
     SceneLexer mLexer;
     std::string mBaseDirectory;
     std::map<std::string, std::shared_ptr<FieldContainer>, std::less<>> mDefinitions;
