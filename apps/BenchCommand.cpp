@@ -1,4 +1,5 @@
 #include "apps/Commands.h"
+#include "apps/MemoryLimitOption.h"
 
 #include "apps/OptionError.h"
 #include "apps/SceneSetup.h"
@@ -40,6 +41,7 @@ struct BenchArguments {
     bool noReference = false;
     std::string csv;
     std::string plot;
+    std::string memoryLimit;
 };
 
 std::vector<glm::ivec2> parseSizes(const std::string& text) {
@@ -109,6 +111,7 @@ std::string deviceSummary(const bench::BenchOptions& options,
 }
 
 void runBench(const BenchArguments& arguments) {
+    applyMemoryLimit(arguments.memoryLimit);
     bench::BenchOptions options;
     options.datasets =
         withOption("--dataset", [&] { return bench::BenchDataset::parseList(arguments.datasets); });
@@ -217,6 +220,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     command->add_option("--csv", arguments->csv, "Also write the results as CSV to this file");
     command->add_option("--plot", arguments->plot,
                         "Also write a plot of error against frame time (SVG) to this file");
+    addMemoryLimitOption(*command, arguments->memoryLimit);
     command->callback([arguments, &exitCode] {
         runBench(*arguments);
         exitCode = kExitOk;

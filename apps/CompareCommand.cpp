@@ -1,4 +1,5 @@
 #include "apps/Commands.h"
+#include "apps/MemoryLimitOption.h"
 
 #include "nodes/image/ImageComparison.h"
 #include "nodes/image/ImageIo.h"
@@ -24,6 +25,7 @@ struct CompareArguments {
     double diffScale = 0.0;
     double peak = 1.0;
     std::string region;
+    std::string memoryLimit;
     bool json = false;
 };
 
@@ -142,6 +144,7 @@ ImageComparison compareFiles(const CompareArguments& arguments, const image::Ima
 }
 
 void runCompare(const CompareArguments& arguments) {
+    applyMemoryLimit(arguments.memoryLimit);
     const image::Image reference = image::readImage(arguments.reference);
     const image::Image test = image::readImage(arguments.test);
     image::ComparisonOptions options;
@@ -203,6 +206,7 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
     command->add_option("--peak", arguments->peak, "Peak value for PSNR (default 1)")
         ->check(CLI::PositiveNumber);
     command->add_flag("--json", arguments->json, "Print the results as JSON");
+    addMemoryLimitOption(*command, arguments->memoryLimit);
     command->callback([arguments, &exitCode] {
         runCompare(*arguments);
         exitCode = kExitOk;

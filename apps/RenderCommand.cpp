@@ -1,4 +1,5 @@
 #include "apps/Commands.h"
+#include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
 
 #include "nodes/image/ImageIo.h"
@@ -8,6 +9,7 @@
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/Splat.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/engines/TimeInputs.h"
 #include "scenegraph/sensors/SensorQueue.h"
@@ -46,6 +48,11 @@ double secondsSince(Clock::time_point start) {
 
 constexpr int kMaxFrames = 1000000;
 constexpr int kMaxThreads = 1024;
+// What to do when reading the volumes runs out of memory.
+constexpr const char* kReadAdvice = "use a volume of lower resolution";
+// What to do when drawing a frame runs out of memory.
+constexpr const char* kRenderAdvice =
+    "use a smaller --size, a splat budget (--max-splats), or --backend cpu";
 
 struct RenderArguments {
     std::string scene;
@@ -60,6 +67,7 @@ struct RenderArguments {
     std::string backend = "auto";
     int threads = 0;
     std::string background = "black";
+    std::string memoryLimit;
     BudgetOverride budget;
 };
 
@@ -423,6 +431,7 @@ void runRender(const RenderArguments& arguments) {
                         std::to_string(kMaxThreads) + ", got " +
                         std::to_string(arguments.threads));
     }
+    applyMemoryLimit(arguments.memoryLimit);
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -430,8 +439,10 @@ void runRender(const RenderArguments& arguments) {
     setup.readScene = secondsSince(start);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     start = Clock::now();
+    // Framing takes the bounding box, which reads the volumes.
     const sg::Node::Ptr root =
-        withCamera(scene, framingOf(arguments), aspect);
+        withMemoryStage("reading the scene's volumes", 0, kReadAdvice,
+                        [&] { return withCamera(scene, framingOf(arguments), aspect); });
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 
@@ -451,13 +462,17 @@ void runRender(const RenderArguments& arguments) {
         clock.reportWritten(frame);
     };
     std::optional<render::cpu::CpuRenderer> cpu;
+    const std::string stage = "rendering a " + arguments.size + " image";
+    const std::uint64_t imageBytes = std::uint64_t(size.x) * std::uint64_t(size.y) *
+                                     sizeof(glm::vec4);
     if (backend.backend == render::Backend::Cpu) {
         cpu.emplace(arguments.threads);
         render::FrameAction action(size.x, size.y, background);
         for (int frame = 0; frame < animation.frames; ++frame) {
             clock.moveTo(frame);
-            const image::Image image =
-                cpu->draw(action.collect(*root), action.statistics(), withDepth);
+            const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
+                return cpu->draw(action.collect(*root), action.statistics(), withDepth);
+            });
             total += action.statistics();
             writeFrame(image, frame);
         }
@@ -468,9 +483,11 @@ void runRender(const RenderArguments& arguments) {
         action.setBackground(background);
         for (int frame = 0; frame < animation.frames; ++frame) {
             clock.moveTo(frame);
-            action.render(*root);
-            const image::Image image = render::renderedImage(
-                action, withDepth ? render::DepthReadback::With : render::DepthReadback::Without);
+            const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
+                action.render(*root);
+                return render::renderedImage(action, withDepth ? render::DepthReadback::With
+                                                               : render::DepthReadback::Without);
+            });
             total += action.statistics();
             writeFrame(image, frame);
         }
@@ -486,8 +503,7 @@ void runRender(const RenderArguments& arguments) {
         }
 #endif
         printTimes(total, setup, report, write, clock, animation,
-                   static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) *
-                       sizeof(glm::vec4));
+                   static_cast<std::size_t>(imageBytes));
     }
 }
 
@@ -549,6 +565,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
     command->add_option("--raycast-step", arguments->rayCastStep,
                         "Integration step of --raycast in voxels")
         ->capture_default_str();
+    addMemoryLimitOption(*command, arguments->memoryLimit);
     command->callback([arguments, &exitCode] {
         runRender(*arguments);
         exitCode = kExitOk;

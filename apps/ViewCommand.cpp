@@ -1,5 +1,6 @@
 #include "apps/Commands.h"
 
+#include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
 #include "apps/viewer/Viewer.h"
 
@@ -15,6 +16,7 @@ struct ViewArguments {
     ViewerOptions options;
     std::string size = "960x720";
     std::string backend = "auto";
+    std::string memoryLimit;
 };
 
 } // namespace
@@ -51,7 +53,9 @@ void addViewCommand(CLI::App& app, int& exitCode) {
     command->add_option("--screenshot", options.screenshot,
                         "At the end, write the last rendered view (without the panel) as PNG "
                         "or EXR");
+    addMemoryLimitOption(*command, arguments->memoryLimit);
     command->callback([arguments, &exitCode] {
+        applyMemoryLimit(arguments->memoryLimit);
         ViewerOptions viewerOptions = arguments->options;
         viewerOptions.framing.sceneName = viewerOptions.scene;
         viewerOptions.size = parseSize(arguments->size);

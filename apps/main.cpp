@@ -7,6 +7,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <new>
 #include <string>
 
 namespace {
@@ -72,6 +73,12 @@ int main(int argc, char** argv) {
         return kExitUsage;
     } catch (const texsplat::Error& e) {
         std::fprintf(stderr, "texsplat: error: %s\n", e.what());
+        return kExitFailure;
+    } catch (const std::bad_alloc&) {
+        // Work in a known stage reports itself as a ResourceError (MemoryLimit.h); this is
+        // what ran out elsewhere.
+        std::fprintf(stderr, "texsplat: error: out of memory; use a smaller volume, image or "
+                             "splat budget, or a larger --memory-limit\n");
         return kExitFailure;
     } catch (const std::exception& e) {
         std::fprintf(stderr, "texsplat: internal error: %s\n", e.what());

@@ -3,6 +3,7 @@
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 #include "nodes/detail/NodeContext.h"
+#include "nodes/detail/SplatMemory.h"
 #include "nodes/elements/TransferFunctionElement.h"
 #include "nodes/elements/VolumeElement.h"
 #include "nodes/render/CameraView.h"
@@ -18,6 +19,7 @@
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/ModelMatrixElement.h"
 #include "scenegraph/actions/RayCastAction.h"
@@ -96,14 +98,30 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
     const VolumeData& volume = inputs.first;
     const TransferFunction& transfer = inputs.second;
     // Loading counts as such, not as classification.
-    timed(statistics, sg::RenderPhase::Load, [&volume] { volume.bounds(); });
+    timed(statistics, sg::RenderPhase::Load, [&] {
+        withMemoryStage("reading the volume of " + detail::nodeContext(volume), 0,
+                        detail::kSplatMemoryAdvice, [&volume] { volume.bounds(); });
+    });
+    std::optional<octree::VectorEmission> vectors = vectorEmission();
+    const bool fullResolution = errorThreshold.value() == 0.0f && maxSplats.value() == 0;
+    // Every stage's allocation, estimated and refused before the first one is made.
+    const detail::SplatMemory memory = detail::withNodeContext(*this, [&] {
+        const detail::SplatMemory estimate = detail::estimateSplatMemory(
+            volume, vectors.has_value(), !fullResolution,
+            static_cast<std::uint64_t>(maxSplats.value()));
+        detail::checkSplatMemory(estimate);
+        return estimate;
+    });
     const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
         timed(statistics, sg::RenderPhase::Classify, [&] {
-            return detail::withNodeContext(
-                *this, [&] { return classify(*mCache, state, volume, transfer, model); });
+            return detail::withNodeContext(*this, [&] {
+                return withMemoryStage("classifying", memory.classified,
+                                       detail::kSplatMemoryAdvice, [&] {
+                                           return classify(*mCache, state, volume, transfer, model);
+                                       });
+            });
         });
-    std::optional<octree::VectorEmission> vectors = vectorEmission();
     if (vectors) {
         vectors->localToCamera = camera.view * model;
         vectors->isPerspective = camera.projection[3][3] == 0.0f;
@@ -116,12 +134,16 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
     result.marks = markDrawing();
     result.footprint = timed(statistics, sg::RenderPhase::Classify, [this] { return footprint(); });
     auto splats = std::make_shared<octree::SplatList>();
-    const bool fullResolution = errorThreshold.value() == 0.0f && maxSplats.value() == 0;
     if (!fullResolution) {
         // The octree is part of the cached classification; build it outside the ordering time.
-        timed(statistics, sg::RenderPhase::Classify, [this] { mCache->octree(); });
+        timed(statistics, sg::RenderPhase::Classify, [&] {
+            detail::withNodeContext(*this, [&] {
+                withMemoryStage("building the octree", memory.octree, detail::kSplatMemoryAdvice,
+                                [this] { mCache->octree(); });
+            });
+        });
     }
-    timed(statistics, sg::RenderPhase::Order, [&] {
+    const auto emit = [&] {
         const octree::View order = result.view.octreeView();
         if (fullResolution) {
             octree::emitVoxelSplats(*classified, order, *splats, emission);
@@ -138,6 +160,11 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
             cut = refiner.cut();
         }
         octree::emitSplats(cut, order, *splats, emission);
+    };
+    timed(statistics, sg::RenderPhase::Order, [&] {
+        detail::withNodeContext(*this, [&] {
+            withMemoryStage("emitting splats", memory.splats, detail::kSplatMemoryAdvice, emit);
+        });
     });
     statistics.splats += splats->size();
     result.splats = std::move(splats);

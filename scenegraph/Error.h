@@ -55,6 +55,13 @@ public:
     using Error::Error;
 };
 
+/// @brief Work that needs more memory than the limit allows or the system gives
+/// (MemoryLimit.h): the message names the stage, the bytes where known, and what to do.
+class ResourceError : public Error {
+public:
+    using Error::Error;
+};
+
 /// @brief An OpenGL failure: no context, a shader that does not compile, a GL error.
 class GlError : public Error {
 public:

@@ -26,6 +26,8 @@ template <class Load> auto withNodeContext(const sg::FieldContainer& node, Load&
         throw IoError(nodeContext(node) + ": " + error.what());
     } catch (const DataError& error) {
         throw DataError(nodeContext(node) + ": " + error.what());
+    } catch (const ResourceError& error) {
+        throw ResourceError(nodeContext(node) + ": " + error.what());
     } catch (const GlError& error) {
         throw GlError(nodeContext(node) + ": " + error.what());
     } catch (const volume::LoadCancelled& error) {

@@ -46,7 +46,8 @@ constexpr std::size_t kMaxReadPixels = std::size_t{1} << 26;
 /// unreadable or malformed file, or one that is not a regular file (a FIFO, a device); DataError
 /// for an EXR without R, G, B channels, and for an image of more than kMaxReadPixels pixels
 /// ("big.png: the image is 16000 x 16000 pixels; texsplat reads images of at most 67108864
-/// pixels (8192 x 8192)").
+/// pixels (8192 x 8192)"); ResourceError, before decoding, when decoding would need more than
+/// the memory limit (texsplat::memoryLimit(), `--memory-limit`).
 Image readImage(const std::string& path);
 
 } // namespace texsplat::image

@@ -156,3 +156,18 @@ TEST_F(CompareCommandTest, badRegionIsAnError) {
               std::string::npos)
         << shortRegion.standardError;
 }
+
+TEST_F(CompareCommandTest, imagesTooLargeForTheMemoryLimitAreRefusedFromTheirHeaders) {
+    // A 1000 x 1000 PNG of one colour is a few kilobytes; decoding it takes 24 bytes a pixel.
+    Image large(1000, 1000);
+    large.fill({0.5f, 0.5f, 0.5f, 1.0f});
+    const std::string png = path("large.png");
+    texsplat::image::writeImage(large, png);
+    const auto result = runTexsplat("compare " + png + " " + png + " --memory-limit 10M");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_EQ(result.standardError,
+              "texsplat: error: " + png + ": decoding its 1000 x 1000 pixels would need 24000000 "
+              "bytes (22.9 MiB), more than the memory limit of 10485760 bytes (10 MiB); use "
+              "smaller images, or a larger --memory-limit\n");
+    EXPECT_EQ(runTexsplat("compare " + png + " " + png + " --memory-limit 64M").exitCode, 0);
+}

@@ -3,8 +3,10 @@
 #include "nodes/image/ImageIo.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/InputFile.h"
+#include "scenegraph/MemoryLimit.h"
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -26,11 +28,13 @@ std::vector<char> readFileBytes(const std::string& path) {
 void checkDecodedSize(const std::string& path, long long width, long long height) {
     // Both sides come from a file's header: divide rather than multiply, which could overflow.
     constexpr auto kLimit = static_cast<long long>(kMaxReadPixels);
-    if (width <= kLimit && height <= kLimit && (height == 0 || width <= kLimit / height))
-        return;
-    throw DataError(path + ": the image is " + std::to_string(width) + " x " +
-                    std::to_string(height) + " pixels; texsplat reads images of at most " +
-                    std::to_string(kMaxReadPixels) + " pixels (8192 x 8192)");
+    const std::string size = std::to_string(width) + " x " + std::to_string(height) + " pixels";
+    if (width > kLimit || height > kLimit || (height != 0 && width > kLimit / height))
+        throw DataError(path + ": the image is " + size + "; texsplat reads images of at most " +
+                        std::to_string(kMaxReadPixels) + " pixels (8192 x 8192)");
+    checkMemory(path + ": decoding its " + size,
+                static_cast<std::uint64_t>(width * height) * kDecodeBytesPerPixel,
+                "use smaller images, or a larger --memory-limit");
 }
 
 } // namespace texsplat::image::detail

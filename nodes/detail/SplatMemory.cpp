@@ -1,0 +1,65 @@
+#include "nodes/detail/SplatMemory.h"
+
+#include "nodes/VolumeData.h"
+#include "octree/OctreeNode.h"
+#include "octree/Splat.h"
+#include "scenegraph/MemoryLimit.h"
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include <algorithm>
+#include <string>
+
+namespace texsplat::nodes::detail {
+namespace {
+
+// Per splat: the list, and its depth ordering (two 64-bit keys and the sorted copy of the list,
+// octree/DepthSort.cpp), and one camera depth.
+constexpr std::uint64_t kBytesPerSplat =
+    2 * sizeof(octree::Splat) + 2 * sizeof(std::uint64_t) + sizeof(float);
+constexpr std::uint64_t kBytesPerVectorSplat = 2 * sizeof(octree::SplatVector);
+
+std::string sizeText(std::uint64_t bytes) {
+    // bytesText() without the exact count: the parts of a sum, read beside it.
+    const std::string text = bytesText(bytes);
+    return text.substr(text.find('(') + 1, text.size() - text.find('(') - 2);
+}
+
+} // namespace
+
+const char* const kSplatMemoryAdvice =
+    "use a volume of lower resolution, a splat budget (maxSplats, or --max-splats) to bound "
+    "the splats, or a larger --memory-limit";
+
+SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool withOctree,
+                                std::uint64_t maxSplats) {
+    // The vector field when there is one: scalarGrid() of vector data would make a component.
+    const volume::VectorGridPtr vectors = volume.vectorGrid();
+    SplatMemory memory;
+    memory.dims = vectors ? vectors->geometry().dims() : volume.scalarGrid()->geometry().dims();
+    const auto voxels = static_cast<std::uint64_t>(memory.dims.x) *
+                        static_cast<std::uint64_t>(memory.dims.y) *
+                        static_cast<std::uint64_t>(memory.dims.z);
+    memory.classified = voxels * (sizeof(glm::vec4) + (withVectors ? sizeof(glm::vec3) : 0));
+    // Records exist for non-empty nodes of level >= 1: at most one per 7 voxels (1/8 + 1/64 +
+    // ...), with a mean vector each for vector grids.
+    memory.octree = withOctree ? (voxels / 7 + 1) * (sizeof(octree::OctreeNode) +
+                                                     (withVectors ? sizeof(glm::vec3) : 0))
+                               : 0;
+    const std::uint64_t splats = maxSplats > 0 ? std::min(voxels, maxSplats) : voxels;
+    memory.splats = splats * (kBytesPerSplat + (withVectors ? kBytesPerVectorSplat : 0));
+    return memory;
+}
+
+void checkSplatMemory(const SplatMemory& memory) {
+    const std::string what = "classifying and splatting " + std::to_string(memory.dims.x) + "x" +
+                             std::to_string(memory.dims.y) + "x" + std::to_string(memory.dims.z) +
+                             " voxels";
+    checkMemory(what, memory.total(),
+                "the classified grid takes " + sizeText(memory.classified) + ", the octree " +
+                    sizeText(memory.octree) + ", the splats " + sizeText(memory.splats) + "; " +
+                    kSplatMemoryAdvice);
+}
+
+} // namespace texsplat::nodes::detail

@@ -1,0 +1,41 @@
+#pragma once
+
+#include <glm/ext/vector_int3_sized.hpp>
+
+#include <cstdint>
+
+namespace texsplat::nodes {
+class VolumeData;
+} // namespace texsplat::nodes
+
+namespace texsplat::nodes::detail {
+
+/// @brief What a splat node's frame allocates once its volume is loaded, estimated before
+/// classifying, when nothing is known of the voxels but their number: an upper bound, since
+/// transparent voxels make no splat but classifying is what finds them.
+struct SplatMemory {
+    glm::i64vec3 dims{0};         ///< voxels per axis of the grid classified
+    std::uint64_t classified = 0; ///< the classified grid: colour and extinction (and vector)
+    std::uint64_t octree = 0;     ///< the octree's records, when a cut is asked for
+    std::uint64_t splats = 0;     ///< the splat list and its depth ordering
+
+    /// @brief Everything together.
+    [[nodiscard]] std::uint64_t total() const { return classified + octree + splats; }
+};
+
+/// @brief The estimate for `volume`'s grid (loaded; its vector field for vector splats).
+/// `withOctree`: a cut is asked for (an error threshold or a budget); `maxSplats` > 0 bounds
+/// the splats, else every voxel may be one.
+SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool withOctree,
+                                std::uint64_t maxSplats);
+
+/// @brief Refuses a frame whose estimate exceeds the memory limit (texsplat::memoryLimit()),
+/// before anything is allocated: throws ResourceError "classifying and splatting 1200x1200x1200
+/// voxels would need <total>, more than the memory limit of …; the classified grid takes …, the
+/// octree …, the splats …; <kSplatMemoryAdvice>".
+void checkSplatMemory(const SplatMemory& memory);
+
+/// @brief What to do when a splat node's stages run out of memory.
+extern const char* const kSplatMemoryAdvice;
+
+} // namespace texsplat::nodes::detail

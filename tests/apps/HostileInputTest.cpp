@@ -1,0 +1,130 @@
+#include "RunCommand.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+namespace fs = std::filesystem;
+using texsplat::test::runTexsplat;
+
+namespace {
+
+// Issue 14's hostile inputs that the command line meets as a whole: memory the estimate of a
+// frame must see, and errors found after parsing, which must point into the scene file.
+class HostileInputTest : public texsplat::test::ScratchDirectoryTest {
+protected:
+    // An all-zero (all transparent) 64^3 uint8 raw volume as texture splats, in a scene file.
+    std::string writeZeroVolumeScene() const {
+        const std::string raw = write("zero.raw", "texsplat-raw 1\ndims 64 64 64\ntype uint8\n"
+                                                  "data\n" +
+                                                      std::string(64 * 64 * 64, '\0'));
+        return write("zero.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                                "TransferFunction { preset HOT range 0 1 }\n"
+                                "VolumeData { source FILE_RAW fileName \"" +
+                                    raw + "\" }\nTextureSplat { }\n}\n");
+    }
+
+    // Expects a failure with exactly `message` and no image left behind.
+    void expectError(const std::string& arguments, const std::string& message) const {
+        const auto result = runTexsplat("render " + arguments + " -o " + path("out.png"));
+        EXPECT_EQ(result.exitCode, 1) << result.standardError;
+        EXPECT_EQ(result.standardError, "texsplat: error: " + message + "\n");
+        EXPECT_FALSE(fs::exists(path("out.png")));
+    }
+};
+
+TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
+    // The grid (1 MiB of floats) fits; classification (16 bytes a voxel) and the splats (every
+    // voxel may be one) would not. Before the estimate, a 1200^3 grid of zeros passed the grid's
+    // check and died of std::bad_alloc in classification, as "internal error".
+    const std::string scene = writeZeroVolumeScene();
+    expectError(scene + " --memory-limit 8M",
+                scene + ":5:1: TextureSplat: classifying and splatting 64x64x64 voxels would "
+                        "need 26214400 bytes (25 MiB), more than the memory limit of 8388608 "
+                        "bytes (8 MiB); the classified grid takes 4 MiB, the octree 0 KiB, the "
+                        "splats 21 MiB; use a volume of lower resolution, a splat budget "
+                        "(maxSplats, or --max-splats) to bound the splats, or a larger "
+                        "--memory-limit");
+    // A splat budget bounds the splats: the same frame fits.
+    const auto budget = runTexsplat("render " + scene + " --memory-limit 8M --max-splats 1000 -o " +
+                                    path("out.png"));
+    EXPECT_EQ(budget.exitCode, 0) << budget.standardError;
+    EXPECT_TRUE(fs::exists(path("out.png")));
+}
+
+TEST_F(HostileInputTest, runningOutOfMemoryNamesTheStageNotAnInternalError) {
+#if defined(__SANITIZE_ADDRESS__)
+    GTEST_SKIP() << "AddressSanitizer reserves more address space than the ulimit below allows";
+#else
+    // A 256^3 grid (64 MiB of floats) loads under a 400 MB address-space limit; classifying it
+    // (256 MiB more) cannot, and the estimate passes a limit of 1 TiB. Before, std::bad_alloc
+    // came out as "internal error: std::bad_alloc", with no file, stage or size.
+    std::string values(256, '\0');
+    for (int value = 0; value < 256; ++value) {
+        values[static_cast<std::size_t>(value)] = static_cast<char>(value);
+    }
+    std::string voxels;
+    voxels.reserve(256 * 256 * 256);
+    for (int row = 0; row < 256 * 256; ++row) {
+        voxels += values;
+    }
+    const std::string raw =
+        write("ramp.raw", "texsplat-raw 1\ndims 256 256 256\ntype uint8\ndata\n" + voxels);
+    const std::string scene = write("ramp.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                                               "TransferFunction { preset HOT range 0 255 }\n"
+                                               "VolumeData { source FILE_RAW fileName \"" +
+                                                   raw + "\" }\nTextureSplat { }\n}\n");
+    const auto result =
+        runTexsplat("render " + scene + " --memory-limit 1T --backend cpu --threads 1 --size "
+                    "64x64 -o " + path("out.png"),
+                    "ulimit -v 400000 &&");
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_EQ(result.standardError.find("internal error"), std::string::npos)
+        << result.standardError;
+    EXPECT_NE(result.standardError.find(
+                  scene + ":5:1: TextureSplat: classifying: out of memory (this stage was "
+                          "estimated at 268435456 bytes (256 MiB)); the memory limit is "
+                          "1099511627776 bytes (1 TiB); use a volume of lower resolution"),
+              std::string::npos)
+        << result.standardError;
+#endif
+}
+
+TEST_F(HostileInputTest, theMemoryLimitMustBeAByteCount) {
+    const std::string scene = writeZeroVolumeScene();
+    expectError(scene + " --memory-limit lots",
+                "--memory-limit: expected a byte count such as 512M or 8G, got 'lots'");
+    const auto bench = runTexsplat("bench --memory-limit 0");
+    EXPECT_EQ(bench.exitCode, 1);
+    EXPECT_EQ(bench.standardError, "texsplat: error: --memory-limit: expected a byte count such "
+                                   "as 512M or 8G, got '0'\n");
+}
+
+TEST_F(HostileInputTest, errorsFoundAfterParsingNameTheSceneFileAndLine) {
+    const std::string header = "#Inventor V2.1 ascii\nSeparator {\n";
+    const std::string transfer = "TransferFunction { preset HOT range 0 1 }\n";
+    const std::string blob = "VolumeData { source BLOB resolution 12 12 12 }\n";
+    const std::string range = write("range.iv", header +
+                                                    "TransferFunction { range 0.5 0.5 }\n" +
+                                                    blob + "TextureSplat { }\n}\n");
+    expectError(range, range + ":5:1: TextureSplat: TransferFunction: range must be finite with "
+                               "range[0] < range[1], got 0.5 0.5");
+    const std::string size =
+        write("size.iv", header + transfer + blob + "\n  TextureSplat { size -1.6 }\n}\n");
+    expectError(size, size + ":6:3: TextureSplat: size must be finite and > 0, got -1.6");
+    const std::string missing =
+        write("missing.iv", header + transfer +
+                                "DEF cloud VolumeData { source FILE_RAW fileName \"none.raw\" }\n"
+                                "TextureSplat { }\n}\n");
+    expectError(missing, missing + ":4:11: VolumeData 'cloud': " + path("none.raw") +
+                             ": cannot open file (No such file or directory)");
+    const std::string resolution =
+        write("resolution.iv", header + transfer +
+                                   "VolumeData { source BLOB resolution 16.5 16 16 }\n"
+                                   "TextureSplat { }\n}\n");
+    expectError(resolution, resolution + ":4:1: VolumeData: resolution must hold whole numbers "
+                                         "from 1 to 1e9, got 16.5 16 16");
+}
+
+} // namespace
