@@ -26,6 +26,8 @@ void requireFileExtension(const std::string& path, const std::vector<std::string
     std::string list;
     for (const std::string& each : supported)
         list += (list.empty() ? "" : ", ") + each;
+    if (path.empty())
+        throw IoError("the " + kind + " file name is empty (supported extensions: " + list + ")");
     const std::string found = extension.empty()
                                   ? "no " + kind + " extension"
                                   : "unknown " + kind + " extension '" + extension + "'";

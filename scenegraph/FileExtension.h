@@ -11,7 +11,8 @@ std::string fileExtension(const std::string& path);
 
 /// @brief Throws IoError("p.png: unknown plot extension '.png' (supported: .svg)") unless
 /// fileExtension(path) is one of `supported` (lower case, with their dots); `kind` names the
-/// file in the message ("no plot extension" when the name has none). Writers call it before any
+/// file in the message ("no plot extension" when the name has none; "the plot file name is
+/// empty (supported extensions: .svg)" for an empty name). Writers call it before any
 /// work, so a file name they would fill with the wrong format fails at once and writes nothing.
 void requireFileExtension(const std::string& path, const std::vector<std::string>& supported,
                           const std::string& kind);

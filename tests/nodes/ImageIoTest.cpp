@@ -81,6 +81,9 @@ TEST(ImageIo, formatComesFromTheExtensionCaseInsensitively) {
               "out.tif: unknown image extension '.tif' (supported: .png, .exr)");
     EXPECT_EQ(ioErrorMessage([] { imageFormatOf("dir.png/out"); }),
               "dir.png/out: no image extension (supported: .png, .exr)");
+    // `-o ""` said ": no image extension".
+    EXPECT_EQ(ioErrorMessage([] { imageFormatOf(""); }),
+              "the image file name is empty (supported extensions: .png, .exr)");
 }
 
 TEST_F(ImageIoTest, exrRoundTripIsExactIncludingDepth) {
