@@ -218,23 +218,8 @@ int findVariable(const NetCdfFile& file, const std::string& name) {
                     variableList(variables));
 }
 
-} // namespace
-
-bool isNetCdfAvailable() { return true; }
-
-std::vector<NetCdfVariableInfo> listNetCdfVariables(const std::string& path) {
-    const std::lock_guard<std::mutex> lock(sNetCdfMutex);
-    const NetCdfFile file(path);
-    return variableInfos(file);
-}
-
-AnyGrid readNetCdfVariable(const std::string& path, const std::string& variable,
-                           std::int64_t timeStep, const ProgressCallback& progress) {
-    const std::lock_guard<std::mutex> lock(sNetCdfMutex);
-    const NetCdfFile file(path);
-    const int id = findVariable(file, variable);
-    const NetCdfVariableInfo info = variableInfo(file, id);
-    const std::string where = path + ": variable '" + info.name + "'";
+// Refuses variables of another number of dimensions or type, and time steps they do not have.
+void checkShape(const NetCdfVariableInfo& info, const std::string& where, std::int64_t timeStep) {
     const std::size_t axes = info.dimensions.size();
     if (axes != 3 && axes != 4)
         throw DataError(where + " has " + std::to_string(axes) + " dimension" +
@@ -242,17 +227,21 @@ AnyGrid readNetCdfVariable(const std::string& path, const std::string& variable,
                         "); texsplat reads 3-D variables (z, y, x) and 4-D ones (time, z, y, x)");
     if (!info.isVolume())
         throw DataError(where + " holds " + info.type + " values; texsplat reads numbers");
-    const bool hasTime = axes == 4;
-    const std::int64_t steps = hasTime ? info.dimensions[0].length : 1;
-    if (timeStep < 0 || timeStep >= steps)
-        throw DataError(where + ": timeStep " + std::to_string(timeStep) + " is outside " +
-                        (hasTime ? "its " + std::to_string(steps) + " steps along '" +
-                                       info.dimensions[0].name + "' (0 to " +
-                                       std::to_string(steps - 1) + ")"
-                                 : std::string("a variable without a time dimension (0)")));
+    if (axes == 3 && timeStep != 0)
+        throw DataError(where + ": timeStep " + std::to_string(timeStep) +
+                        " asks for a time step of a variable without a time dimension");
+    const std::int64_t steps = axes == 4 ? info.dimensions[0].length : 1;
+    if (axes == 4 && (timeStep < 0 || timeStep >= steps))
+        throw DataError(where + ": timeStep " + std::to_string(timeStep) + " is outside its " +
+                        std::to_string(steps) + " steps along '" + info.dimensions[0].name +
+                        "'" + (steps > 0 ? " (0 to " + std::to_string(steps - 1) + ")" : ""));
+}
 
-    // Dimensions slowest first: (time,) z, y, x.
-    const std::size_t first = hasTime ? 1 : 0;
+// Dims from the last three dimensions (x the last); origin and spacing from their coordinate
+// variables where those are evenly spaced and increasing.
+GridGeometry variableGeometry(const NetCdfFile& file, const NetCdfVariableInfo& info,
+                              const std::string& where) {
+    const std::size_t first = info.dimensions.size() - 3;
     glm::i64vec3 dims;
     glm::dvec3 origin(0.0);
     glm::dvec3 spacing(1.0);
@@ -271,41 +260,79 @@ AnyGrid readNetCdfVariable(const std::string& path, const std::string& variable,
                                        "xyz"[axis] + ") is indexed 0, 1, 2, ...");
         }
     }
-    const GridGeometry geometry = [&] {
-        try {
-            return GridGeometry(dims, origin, spacing);
-        } catch (const DataError& error) {
-            throw DataError(where + ": " + error.what());
-        }
-    }();
-    detail::checkFitsInMemory(where + ": a grid of " + std::to_string(dims.x) + " x " +
-                                  std::to_string(dims.y) + " x " + std::to_string(dims.z) +
-                                  " floats",
-                              static_cast<std::uint64_t>(geometry.voxelCount()) * sizeof(float));
+    try {
+        return GridGeometry(dims, origin, spacing);
+    } catch (const DataError& error) {
+        throw DataError(where + ": " + error.what());
+    }
+}
 
-    const std::vector<double> scale = numberAttribute(file, id, "scale_factor");
-    const std::vector<double> offset = numberAttribute(file, id, "add_offset");
-    std::vector<double> missing = numberAttribute(file, id, "missing_value");
-    const std::vector<double> fill = numberAttribute(file, id, "_FillValue");
+// Stored values to voxel values, by the CF conventions' attributes of the variable.
+struct ValueMapping {
+    double scale = 1.0;           // scale_factor
+    double offset = 0.0;          // add_offset
+    std::vector<double> missing;  // _FillValue (or the default fill) and missing_value
+
+    float operator()(double raw) const {
+        if (std::find(missing.begin(), missing.end(), raw) != missing.end())
+            return std::numeric_limits<float>::quiet_NaN();
+        return static_cast<float>(raw * scale + offset);
+    }
+};
+
+ValueMapping valueMapping(const NetCdfFile& file, int variable, const std::string& where) {
+    ValueMapping mapping;
+    const std::vector<double> scale = numberAttribute(file, variable, "scale_factor");
+    const std::vector<double> offset = numberAttribute(file, variable, "add_offset");
+    const std::vector<double> fill = numberAttribute(file, variable, "_FillValue");
+    mapping.missing = numberAttribute(file, variable, "missing_value");
     nc_type type = NC_NAT;
-    check(nc_inq_vartype(file.id(), id, &type), where, "cannot read the type");
+    check(nc_inq_vartype(file.id(), variable, &type), where, "cannot read the type");
     if (!fill.empty())
-        missing.push_back(fill.front());
+        mapping.missing.push_back(fill.front());
     else if (const auto fallback = defaultFill(type))
-        missing.push_back(*fallback);
-    const double scaleFactor = scale.empty() ? 1.0 : scale.front();
-    const double addOffset = offset.empty() ? 0.0 : offset.front();
+        mapping.missing.push_back(*fallback);
+    if (!scale.empty())
+        mapping.scale = scale.front();
+    if (!offset.empty())
+        mapping.offset = offset.front();
+    return mapping;
+}
+
+} // namespace
+
+bool isNetCdfAvailable() { return true; }
+
+std::vector<NetCdfVariableInfo> listNetCdfVariables(const std::string& path) {
+    const std::lock_guard<std::mutex> lock(sNetCdfMutex);
+    const NetCdfFile file(path);
+    return variableInfos(file);
+}
+
+AnyGrid readNetCdfVariable(const std::string& path, const std::string& variable,
+                           std::int64_t timeStep, const ProgressCallback& progress) {
+    const std::lock_guard<std::mutex> lock(sNetCdfMutex);
+    const NetCdfFile file(path);
+    const int id = findVariable(file, variable);
+    const NetCdfVariableInfo info = variableInfo(file, id);
+    const std::string where = path + ": variable '" + info.name + "'";
+    checkShape(info, where, timeStep);
+    const bool hasTime = info.dimensions.size() == 4;
+    const GridGeometry geometry = variableGeometry(file, info, where);
+    detail::checkGridFitsInMemory(where, geometry, 1);
+    const ValueMapping mapping = valueMapping(file, id, where);
 
     auto grid = std::make_shared<DenseScalarGrid>(geometry);
     float* target = grid->values().data();
-    const auto sliceValues = static_cast<std::size_t>(dims.x * dims.y);
-    std::vector<double> slice(sliceValues);
+    const glm::i64vec3 dims = geometry.dims();
+    std::vector<double> slice(static_cast<std::size_t>(dims.x * dims.y));
     const std::string message = "reading variable '" + info.name + "'";
     reportProgress(progress, path, 0.0, message);
     for (std::int64_t z = 0; z < dims.z; ++z) {
+        // One z slice: (time step,) z, all y, all x.
         std::size_t start[4] = {};
         std::size_t count[4] = {};
-        const std::size_t zAxis = first;
+        const std::size_t zAxis = hasTime ? 1 : 0;
         if (hasTime) {
             start[0] = static_cast<std::size_t>(timeStep);
             count[0] = 1;
@@ -316,11 +343,8 @@ AnyGrid readNetCdfVariable(const std::string& path, const std::string& variable,
         count[zAxis + 2] = static_cast<std::size_t>(dims.x);
         check(nc_get_vara_double(file.id(), id, start, count, slice.data()), where,
               "cannot read z slice " + std::to_string(z));
-        for (const double raw : slice) {
-            const bool isMissing = std::find(missing.begin(), missing.end(), raw) != missing.end();
-            *target++ = isMissing ? std::numeric_limits<float>::quiet_NaN()
-                                  : static_cast<float>(raw * scaleFactor + addOffset);
-        }
+        for (const double raw : slice)
+            *target++ = mapping(raw);
         reportProgress(progress, path, double(z + 1) / double(dims.z), message);
     }
     detail::checkFiniteVoxels(where, grid->statistics());

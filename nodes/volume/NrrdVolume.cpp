@@ -6,6 +6,7 @@
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 
@@ -60,23 +61,25 @@ AnyGrid readRaw(std::istream& in, const std::string& path, const NrrdHeader& hea
 AnyGrid readGzip(std::istream& in, const std::string& path, const NrrdHeader& header,
                  const std::string& asks, const ProgressCallback& progress) {
     detail::GzipInputStream data(in);
+    // The data ended (cleanly, or at damage) before the values did.
     const auto ended = [&] {
-        return DataError(path + ": " + data.failure() + " after " +
-                         std::to_string(data.decompressedBytes() - header.byteSkip) +
-                         " bytes; " + asks);
+        const std::string held = std::to_string(
+            std::max<std::int64_t>(0, data.decompressedBytes() - header.byteSkip));
+        return DataError(path + ": " +
+                         (data.failure().empty()
+                              ? "truncated data: the gzip data holds only " + held + " bytes"
+                              : data.failure() + " after " + held + " bytes") +
+                         (header.byteSkip > 0 ? " past 'byte skip'" : "") + "; " + asks);
     };
     data.ignore(static_cast<std::streamsize>(header.byteSkip));
     if (data.gcount() != header.byteSkip)
-        throw DataError(path + ": " + data.failure() + " within the " +
-                        std::to_string(header.byteSkip) + " bytes of 'byte skip'");
+        throw ended();
     AnyGrid grid;
     try {
         grid = detail::readRawData(data, path, header.layout, detail::RawOrder::XFastest,
                                    progress);
     } catch (const IoError&) {
-        if (data.failure().empty())
-            throw;
-        throw ended();
+        throw ended(); // the only reads are from the gzip stream
     }
     if (data.peek() != std::istream::traits_type::eof())
         throw DataError(path + ": data size mismatch: " + asks +

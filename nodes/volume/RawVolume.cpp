@@ -190,13 +190,8 @@ AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& 
     const GridGeometry geometry(layout.dims, layout.origin, layout.spacing);
     const glm::i64vec3 dims = layout.dims;
     const std::int64_t voxels = geometry.voxelCount();
-    // A compressed file (NRRD gzip) or a sparse one declares any size in a few bytes.
-    detail::checkFitsInMemory(path + ": a grid of " + std::to_string(dims.x) + " x " +
-                                  std::to_string(dims.y) + " x " + std::to_string(dims.z) +
-                                  " voxels x " + std::to_string(layout.components) +
-                                  (layout.components == 1 ? " float" : " floats"),
-                              static_cast<std::uint64_t>(voxels) *
-                                  static_cast<std::uint64_t>(layout.components) * sizeof(float));
+    // A compressed file (NRRD gzip) declares any size in a few bytes.
+    detail::checkGridFitsInMemory(path, geometry, layout.components);
     // Our index of value number `n` of a file that stores z fastest (NumPy's Fortran order of a
     // (z, y, x[, component]) array: each component is a block of its own).
     const auto zFastest = [dims, voxels](std::int64_t n, std::int64_t& voxel, int& component) {

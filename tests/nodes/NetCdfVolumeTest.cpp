@@ -123,6 +123,10 @@ TEST(NetCdfVolume, readsATimeStepOfA4DVariable) {
     EXPECT_EQ(std::get<ScalarGridPtr>(readNetCdfVariable(path, ""))->value({1, 0, 0}), 2.0f);
     EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "w", 2); }),
               path + ": variable 'w': timeStep 2 is outside its 2 steps along 'time' (0 to 1)");
+    const std::string ramp = generate("ramp", kRamp);
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(ramp, "v", 1); }),
+              ramp + ": variable 'v': timeStep 1 asks for a time step of a variable without a "
+                     "time dimension");
 }
 
 TEST(NetCdfVolume, aMissingOrWrongVariableGetsTheVariablesListed) {

@@ -197,6 +197,18 @@ TEST(NrrdVolume, refusesTruncatedData) {
               made + ": truncated data: the header's sizes 4 3 2 of type 'float' ask for 96 "
                      "bytes, but only 88 bytes follow the header");
 
+    // Complete gzip data of fewer values than the header asks for.
+    const std::string longer = testPath("longer.nrrd");
+    {
+        std::ifstream in(gzipped, std::ios::binary);
+        std::string bytes((std::istreambuf_iterator<char>(in)), {});
+        bytes.replace(bytes.find("sizes: 4 3 2"), 12, "sizes: 4 3 3");
+        writeFile(longer, bytes);
+    }
+    EXPECT_EQ(errorOf<DataError>([&] { readNrrdVolume(longer); }),
+              longer + ": truncated data: the gzip data holds only 96 bytes; the header's sizes "
+                       "4 3 3 of type 'float' ask for 144 bytes");
+
     std::filesystem::resize_file(gzipped, std::filesystem::file_size(gzipped) - 12);
     const std::string error = errorOf<DataError>([&] { readNrrdVolume(gzipped); });
     EXPECT_EQ(error.rfind(gzipped + ": the gzip data ends early after ", 0), 0u) << error;

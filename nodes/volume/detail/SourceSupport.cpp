@@ -55,6 +55,16 @@ void checkFitsInMemory(const std::string& what, std::uint64_t bytes) {
                         ", more than this machine's memory (" + bytesText(memory) + ")");
 }
 
+void checkGridFitsInMemory(const std::string& source, const GridGeometry& geometry,
+                           int components) {
+    const glm::i64vec3& dims = geometry.dims();
+    checkFitsInMemory(source + ": a grid of " + std::to_string(dims.x) + " x " +
+                          std::to_string(dims.y) + " x " + std::to_string(dims.z) + " voxels x " +
+                          std::to_string(components) + (components == 1 ? " float" : " floats"),
+                      static_cast<std::uint64_t>(geometry.voxelCount()) *
+                          static_cast<std::uint64_t>(components) * sizeof(float));
+}
+
 void checkFiniteVoxels(const std::string& source, const GridStatistics& statistics) {
     if (statistics.nonFiniteCount == 0)
         return;

@@ -1,5 +1,6 @@
 #pragma once
 
+#include "nodes/volume/GridGeometry.h"
 #include "nodes/volume/GridStatistics.h"
 
 #include <cstdint>
@@ -29,6 +30,11 @@ std::string bytesText(std::uint64_t bytes);
 /// physical memory, so a small file that declares a huge grid fails at once, saying what it
 /// would cost, instead of swapping or dying of std::bad_alloc.
 void checkFitsInMemory(const std::string& what, std::uint64_t bytes);
+
+/// @brief checkFitsInMemory() for the dense grid of `geometry` with `components` floats a voxel,
+/// before a loader allocates it: "<source>: a grid of 4 x 3 x 2 voxels x 1 float would need ...".
+void checkGridFitsInMemory(const std::string& source, const GridGeometry& geometry,
+                           int components);
 
 /// @brief The one check a loader makes of the voxels it read. Logs one warning for empty (NaN or
 /// infinite) voxels, naming the source and the count ("f.raw: 3 voxels are NaN or infinite;
