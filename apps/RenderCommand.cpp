@@ -2,6 +2,7 @@
 #include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
 
+#include "nodes/annotation/ColorLegend.h"
 #include "nodes/image/ImageIo.h"
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/FrameAction.h"
@@ -67,6 +68,8 @@ struct RenderArguments {
     std::string backend = "auto";
     int threads = 0;
     std::string background = "black";
+    bool colorbar = false;
+    std::string colorbarPosition = "right";
     std::string memoryLimit;
     BudgetOverride budget;
 };
@@ -371,10 +374,23 @@ private:
     int mLastPercent = -1;
 };
 
+// Writes `image`, with the legend drawn into a copy when there is one.
+void writeWithLegend(const image::Image& image, const std::string& path,
+                     const std::optional<annotation::ColorLegend>& legend) {
+    if (!legend) {
+        image::writeImage(image, path);
+        return;
+    }
+    image::Image annotated = image;
+    legend->draw(annotated);
+    image::writeImage(annotated, path);
+}
+
 // The reference images of --raycast: no GL context; the same camera, size and background as
 // the GL render, so the two images compare pixel by pixel.
 void runRayCast(const RenderArguments& arguments, const Animation& animation, sg::Node& root,
-                glm::ivec2 size, const glm::vec4& background, const SetupTimes& setup) {
+                glm::ivec2 size, const glm::vec4& background, const SetupTimes& setup,
+                const std::optional<annotation::ColorLegend>& legend) {
     sg::RayCastAction action(size.x, size.y);
     action.setBackground(background);
     action.setStepSize(arguments.rayCastStep);
@@ -389,7 +405,7 @@ void runRayCast(const RenderArguments& arguments, const Animation& animation, sg
         integrate += secondsSince(start);
         const image::Image image = render::rayCastImage(action);
         start = Clock::now();
-        image::writeImage(image, animation.output.name(frame));
+        writeWithLegend(image, animation.output.name(frame), legend);
         write += secondsSince(start);
         clock.reportWritten(frame);
     }
@@ -402,6 +418,21 @@ void runRayCast(const RenderArguments& arguments, const Animation& animation, sg
         printFrameTime("ray cast", integrate, animation.frames, note);
         printFrameTime("write", write, animation.frames, "encode and rename");
     }
+}
+
+// The legend of --colorbar, from the scene as it will be drawn.
+std::optional<annotation::ColorLegend> legendOf(const RenderArguments& arguments,
+                                                sg::Node& root) {
+    if (!arguments.colorbar) {
+        return std::nullopt;
+    }
+    annotation::LegendPosition position = annotation::LegendPosition::Right;
+    try {
+        position = annotation::parseLegendPosition(arguments.colorbarPosition);
+    } catch (const DataError& error) {
+        throw DataError(std::string("--colorbar-position: ") + error.what());
+    }
+    return annotation::ColorLegend::ofScene(root, position);
 }
 
 Framing framingOf(const RenderArguments& arguments) {
@@ -446,8 +477,9 @@ void runRender(const RenderArguments& arguments) {
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 
+    const std::optional<annotation::ColorLegend> legend = legendOf(arguments, *root);
     if (arguments.rayCast) {
-        runRayCast(arguments, animation, *root, size, background, setup);
+        runRayCast(arguments, animation, *root, size, background, setup, legend);
         return;
     }
     render::BackendChoice backend = render::BackendChoice::resolve(request);
@@ -457,7 +489,7 @@ void runRender(const RenderArguments& arguments) {
     double write = 0.0;
     const auto writeFrame = [&](const image::Image& image, int frame) {
         const Clock::time_point writeStart = Clock::now();
-        image::writeImage(image, animation.output.name(frame));
+        writeWithLegend(image, animation.output.name(frame), legend);
         write += secondsSince(writeStart);
         clock.reportWritten(frame);
     };
@@ -558,6 +590,12 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "black|white|transparent|r,g,b: what the scene is composited over, the "
                         "same for PNG and EXR (transparent: the premultiplied layer alone, for "
                         "compositing; EXR keeps it exactly)")
+        ->capture_default_str();
+    command->add_flag("--colorbar", arguments->colorbar,
+                      "Draw a legend of the first TransferFunction's colours with the values of "
+                      "its range into the image");
+    command->add_option("--colorbar-position", arguments->colorbarPosition,
+                        "Where --colorbar draws the legend: right, left, top or bottom")
         ->capture_default_str();
     command->add_flag("--raycast", arguments->rayCast,
                       "Render the reference with the CPU ray caster (exact emission-absorption of "

@@ -1,0 +1,143 @@
+#include "nodes/annotation/ColorLegend.h"
+
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "nodes/annotation/NumberFont.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/actions/SearchAction.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <utility>
+
+namespace texsplat::annotation {
+namespace {
+
+struct Layout {
+    int scale = 1;     // font scale
+    int margin = 0;    // from the image edge
+    int gap = 0;       // between bar and labels
+    int thickness = 0; // of the bar
+};
+
+Layout layoutFor(int width, int height) {
+    const int side = std::min(width, height);
+    Layout layout;
+    layout.scale = 1 + side / 256;
+    layout.margin = 4 * layout.scale + side / 32;
+    layout.gap = 3 * layout.scale;
+    layout.thickness = std::max(6, side / 24);
+    return layout;
+}
+
+bool isVertical(LegendPosition position) {
+    return position == LegendPosition::Right || position == LegendPosition::Left;
+}
+
+template <class T> std::shared_ptr<T> firstOfType(sg::Node& root) {
+    sg::SearchAction search;
+    search.setType(T::classType());
+    search.apply(root);
+    return search.paths().empty() ? nullptr
+                                  : std::dynamic_pointer_cast<T>(search.paths().front().tail());
+}
+
+} // namespace
+
+LegendPosition parseLegendPosition(const std::string& name) {
+    const std::pair<const char*, LegendPosition> names[] = {{"right", LegendPosition::Right},
+                                                            {"left", LegendPosition::Left},
+                                                            {"top", LegendPosition::Top},
+                                                            {"bottom", LegendPosition::Bottom}};
+    for (const auto& [text, position] : names) {
+        if (name == text) {
+            return position;
+        }
+    }
+    throw DataError("legend position must be right, left, top or bottom, got '" + name + "'");
+}
+
+ColorLegend::ColorLegend(ColorMap colorMap, glm::vec2 range, LegendPosition position)
+    : mColorMap(std::move(colorMap)), mRange(range), mPosition(position) {}
+
+ColorLegend ColorLegend::ofScene(sg::Node& root, LegendPosition position) {
+    const auto transfer = firstOfType<nodes::TransferFunction>(root);
+    if (!transfer) {
+        throw DataError("colour legend: the scene has no TransferFunction");
+    }
+    const auto volume = firstOfType<nodes::VolumeData>(root);
+    const glm::vec2 range = volume ? transfer->dataScale(*volume->scalarGrid()).range
+                                   : transfer->range.value();
+    return ColorLegend([transfer](float t) { return transfer->colorAt(t); }, range, position);
+}
+
+image::ImageRegion ColorLegend::barRegion(int width, int height) const {
+    const Layout layout = layoutFor(width, height);
+    const int labelWidth = NumberFont::textWidth(
+        std::max({label(mRange.x), label(mRange.y), label(0.5 * (double(mRange.x) + mRange.y))},
+                 [](const std::string& a, const std::string& b) { return a.size() < b.size(); }),
+        layout.scale);
+    const int labelHeight = NumberFont::kGlyphHeight * layout.scale;
+    image::ImageRegion bar;
+    if (isVertical(mPosition)) {
+        bar.width = layout.thickness;
+        bar.height = std::max(8, height * 3 / 5);
+        bar.y = (height - bar.height) / 2;
+        bar.x = mPosition == LegendPosition::Left
+                    ? layout.margin
+                    : width - layout.margin - labelWidth - layout.gap - bar.width;
+    } else {
+        bar.height = layout.thickness;
+        bar.width = std::max(8, width * 3 / 5);
+        bar.x = (width - bar.width) / 2;
+        bar.y = mPosition == LegendPosition::Top
+                    ? layout.margin
+                    : height - layout.margin - labelHeight - layout.gap - bar.height;
+    }
+    return bar;
+}
+
+void ColorLegend::draw(image::Image& image) const {
+    const Layout layout = layoutFor(image.width(), image.height());
+    const image::ImageRegion bar = barRegion(image.width(), image.height());
+    const bool vertical = isVertical(mPosition);
+    const int length = vertical ? bar.height : bar.width;
+    for (int i = 0; i < length; ++i) {
+        // Pixel centres from t = 0 at the low end to t = 1 at the high end.
+        const float t = (static_cast<float>(i) + 0.5f) / static_cast<float>(length);
+        const glm::vec4 rgba(mColorMap(t), 1.0f);
+        for (int j = 0; j < (vertical ? bar.width : bar.height); ++j) {
+            const int x = vertical ? bar.x + j : bar.x + i;
+            const int y = vertical ? bar.y + bar.height - 1 - i : bar.y + j;
+            if (x >= 0 && y >= 0 && x < image.width() && y < image.height()) {
+                image.setPixel(x, y, rgba);
+            }
+        }
+    }
+    const int labelHeight = NumberFont::kGlyphHeight * layout.scale;
+    for (const float t : {0.0f, 0.5f, 1.0f}) {
+        const std::string text = label(double(mRange.x) + t * (double(mRange.y) - mRange.x));
+        const int textWidth = NumberFont::textWidth(text, layout.scale);
+        glm::ivec2 topLeft;
+        if (vertical) {
+            topLeft.x = bar.x + bar.width + layout.gap;
+            const int centre = bar.y + static_cast<int>((1.0f - t) * float(bar.height - 1));
+            topLeft.y = std::clamp(centre - labelHeight / 2, 0, image.height() - labelHeight);
+        } else {
+            const int centre = bar.x + static_cast<int>(t * float(bar.width - 1));
+            topLeft.x = std::clamp(centre - textWidth / 2, 0, image.width() - textWidth);
+            topLeft.y = bar.y + bar.height + layout.gap;
+        }
+        NumberFont::draw(image, topLeft + glm::ivec2(layout.scale), text, layout.scale,
+                         glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        NumberFont::draw(image, topLeft, text, layout.scale, glm::vec4(1.0f));
+    }
+}
+
+std::string ColorLegend::label(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value == 0.0 ? 0.0 : value);
+    return text;
+}
+
+} // namespace texsplat::annotation

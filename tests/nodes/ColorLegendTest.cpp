@@ -1,0 +1,124 @@
+// The colour legend drawn into rendered images, and its number font.
+
+#include "nodes/annotation/ColorLegend.h"
+#include "nodes/annotation/NumberFont.h"
+
+#include "SceneNodesTestSupport.h"
+#include "nodes/NodeTypes.h"
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/RawVolume.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Separator.h"
+
+#include <gtest/gtest.h>
+
+namespace texsplat::annotation {
+namespace {
+
+using nodes::test::errorOf;
+
+nodes::TransferFunction::Ptr magma() {
+    auto transfer = nodes::TransferFunction::create();
+    transfer->preset.setValue(nodes::ColorPreset::Magma);
+    return transfer;
+}
+
+ColorLegend legendOf(const nodes::TransferFunction::Ptr& transfer, LegendPosition position) {
+    return ColorLegend([transfer](float t) { return transfer->colorAt(t); },
+                       glm::vec2(-0.15f, 0.15f), position);
+}
+
+TEST(ColorLegend, theBarShowsTheColorMapFromLowToHigh) {
+    const auto transfer = magma();
+    for (const LegendPosition position : {LegendPosition::Right, LegendPosition::Left,
+                                          LegendPosition::Top, LegendPosition::Bottom}) {
+        image::Image image(320, 240);
+        const ColorLegend legend = legendOf(transfer, position);
+        legend.draw(image);
+        const image::ImageRegion bar = legend.barRegion(320, 240);
+        const bool vertical = position == LegendPosition::Right || position == LegendPosition::Left;
+        const int length = vertical ? bar.height : bar.width;
+        ASSERT_GT(length, 100);
+        for (int i = 0; i < length; ++i) {
+            const float t = (float(i) + 0.5f) / float(length);
+            const int x = vertical ? bar.x + bar.width / 2 : bar.x + i;
+            const int y = vertical ? bar.y + bar.height - 1 - i : bar.y + bar.height / 2;
+            EXPECT_EQ(image.pixel(x, y), glm::vec4(transfer->colorAt(t), 1.0f))
+                << "position " << int(position) << " pixel " << i;
+        }
+        // Nothing outside the bar and its labels: the corners stay as they were.
+        EXPECT_EQ(image.pixel(0, 0), glm::vec4(0.0f));
+        EXPECT_EQ(image.pixel(319, 239), glm::vec4(0.0f));
+    }
+}
+
+TEST(ColorLegend, labelsAreWrittenBesideTheBar) {
+    image::Image image(320, 240);
+    const ColorLegend legend = legendOf(magma(), LegendPosition::Right);
+    legend.draw(image);
+    const image::ImageRegion bar = legend.barRegion(320, 240);
+    int white = 0;
+    for (int y = 0; y < 240; ++y) {
+        for (int x = bar.x + bar.width; x < 320; ++x) {
+            white += image.pixel(x, y) == glm::vec4(1.0f) ? 1 : 0;
+        }
+    }
+    EXPECT_GT(white, 40);
+    // The bar, the gap and the widest label, "-0.15" (font scale 1 below 256 pixels), fit.
+    EXPECT_LE(bar.x + bar.width + 3 + NumberFont::textWidth("-0.15", 1), 320);
+}
+
+TEST(ColorLegend, labelsAreShortNumbers) {
+    EXPECT_EQ(ColorLegend::label(-0.15f), "-0.15");
+    EXPECT_EQ(ColorLegend::label(0.0), "0");
+    EXPECT_EQ(ColorLegend::label(-0.0), "0");
+    EXPECT_EQ(ColorLegend::label(1.0e6), "1e+06");
+    EXPECT_EQ(ColorLegend::label(123.456), "123");
+}
+
+TEST(ColorLegend, aSceneGivesItsTransferFunctionAndDataRange) {
+    nodes::registerNodeTypes();
+    volume::DenseScalarGrid grid(volume::GridGeometry({3, 1, 1}));
+    grid.setValue({0, 0, 0}, -0.15f);
+    grid.setValue({2, 0, 0}, 0.15f);
+    const std::string path = nodes::test::testPath("distance.raw");
+    volume::writeRawVolume(path, grid);
+    auto volume = nodes::VolumeData::create();
+    volume->source.setValue(nodes::VolumeSource::FileRaw);
+    volume->fileName.setValue(path);
+    const auto root = sg::Separator::create();
+    root->addChild(magma());
+    root->addChild(volume);
+    EXPECT_EQ(ColorLegend::ofScene(*root, LegendPosition::Right).range(),
+              glm::vec2(-0.15f, 0.15f));
+    EXPECT_EQ(errorOf<DataError>([] {
+                  ColorLegend::ofScene(*sg::Separator::create(), LegendPosition::Right);
+              }),
+              "colour legend: the scene has no TransferFunction");
+}
+
+TEST(ColorLegend, positionsAreNamed) {
+    EXPECT_EQ(parseLegendPosition("bottom"), LegendPosition::Bottom);
+    EXPECT_EQ(errorOf<DataError>([] { parseLegendPosition("middle"); }),
+              "legend position must be right, left, top or bottom, got 'middle'");
+}
+
+TEST(NumberFont, drawsGlyphsAtScale) {
+    image::Image image(12, 16);
+    NumberFont::draw(image, {0, 0}, "-", 2, glm::vec4(1.0f));
+    // '-' is the fourth row of five columns: rows 6 and 7 at scale 2.
+    EXPECT_EQ(image.pixel(0, 6), glm::vec4(1.0f));
+    EXPECT_EQ(image.pixel(9, 7), glm::vec4(1.0f));
+    EXPECT_EQ(image.pixel(0, 5), glm::vec4(0.0f));
+    EXPECT_EQ(image.pixel(10, 6), glm::vec4(0.0f));
+    EXPECT_EQ(NumberFont::textWidth("-0.15", 1), 29);
+    EXPECT_TRUE(NumberFont::hasGlyph('e'));
+    EXPECT_FALSE(NumberFont::hasGlyph('x'));
+    EXPECT_EQ(errorOf<DataError>([&] { NumberFont::draw(image, {0, 0}, "1x", 1, {}); }),
+              "NumberFont: no glyph for 'x'; it writes digits, '-', '+', '.', 'e' and space");
+}
+
+} // namespace
+} // namespace texsplat::annotation
