@@ -230,7 +230,12 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
         render::CameraView::current(action.state(), *this, action.aspectRatio());
     const volume::ScalarGridPtr grid = volume.scalarGrid();
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
-        mCache->classified(grid, transfer);
+        detail::withNodeContext(*this, [&] {
+            const detail::SplatMemory memory = detail::estimateSplatMemory(volume, false, false, 0);
+            detail::checkClassificationMemory(memory);
+            return withMemoryStage("classifying", memory.classified, detail::kSplatMemoryAdvice,
+                                   [&] { return mCache->classified(grid, transfer); });
+        });
     const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
     auto medium = detail::withNodeContext(
         *this, [&] { return std::make_shared<render::KernelVolumeMedium>(classified, model); });

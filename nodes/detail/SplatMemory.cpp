@@ -20,6 +20,10 @@ constexpr std::uint64_t kBytesPerSplat =
     2 * sizeof(octree::Splat) + 2 * sizeof(std::uint64_t) + sizeof(float);
 constexpr std::uint64_t kBytesPerVectorSplat = 2 * sizeof(octree::SplatVector);
 
+std::string dimsText(const glm::i64vec3& dims) {
+    return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+}
+
 std::string sizeText(std::uint64_t bytes) {
     // bytesText() without the exact count: the parts of a sum, read beside it.
     const std::string text = bytesText(bytes);
@@ -53,13 +57,15 @@ SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool
 }
 
 void checkSplatMemory(const SplatMemory& memory) {
-    const std::string what = "classifying and splatting " + std::to_string(memory.dims.x) + "x" +
-                             std::to_string(memory.dims.y) + "x" + std::to_string(memory.dims.z) +
-                             " voxels";
-    checkMemory(what, memory.total(),
+    checkMemory("classifying and splatting " + dimsText(memory.dims) + " voxels", memory.total(),
                 "the classified grid takes " + sizeText(memory.classified) + ", the octree " +
                     sizeText(memory.octree) + ", the splats " + sizeText(memory.splats) + "; " +
                     kSplatMemoryAdvice);
+}
+
+void checkClassificationMemory(const SplatMemory& memory) {
+    checkMemory("classifying " + dimsText(memory.dims) + " voxels for the ray-cast reference",
+                memory.classified, "use a volume of lower resolution or a larger --memory-limit");
 }
 
 } // namespace texsplat::nodes::detail

@@ -35,6 +35,12 @@ SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool
 /// octree …, the splats …; <kSplatMemoryAdvice>".
 void checkSplatMemory(const SplatMemory& memory);
 
+/// @brief The ray-cast reference's part of the check: it classifies but makes no splats. Throws
+/// ResourceError "classifying 1200x1200x1200 voxels for the ray-cast reference would need
+/// <classified>, more than the memory limit of …; use a volume of lower resolution or a larger
+/// --memory-limit".
+void checkClassificationMemory(const SplatMemory& memory);
+
 /// @brief What to do when a splat node's stages run out of memory.
 extern const char* const kSplatMemoryAdvice;
 

@@ -46,6 +46,12 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
                         "splats 21 MiB; use a volume of lower resolution, a splat budget "
                         "(maxSplats, or --max-splats) to bound the splats, or a larger "
                         "--memory-limit");
+    // The ray-cast reference classifies too, but makes no splats.
+    expectError(scene + " --raycast --memory-limit 2M",
+                scene + ":5:1: TextureSplat: classifying 64x64x64 voxels for the ray-cast "
+                        "reference would need 4194304 bytes (4 MiB), more than the memory limit "
+                        "of 2097152 bytes (2 MiB); use a volume of lower resolution or a larger "
+                        "--memory-limit");
     // A splat budget bounds the splats: the same frame fits.
     const auto budget = runTexsplat("render " + scene + " --memory-limit 8M --max-splats 1000 -o " +
                                     path("out.png"));
