@@ -7,6 +7,7 @@
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/volume/VolumeFileInfo.h"
+#include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestFifo.h"
@@ -215,6 +216,21 @@ TEST(NrrdVolume, refusesTruncatedData) {
     EXPECT_NE(error.find(" bytes; the header's sizes 4 3 2 of type 'float' ask for 96 bytes"),
               std::string::npos)
         << error;
+}
+
+// A few bytes of gzip can declare any size: the grid is checked against memory before anything
+// is allocated or decompressed.
+TEST(NrrdVolume, refusesAGzipBombBeforeAllocatingForIt) {
+    const std::string path = writeFile(testPath("bomb.nrrd"),
+                                       "NRRD0004\ntype: float\ndimension: 3\n"
+                                       "sizes: 100000 100000 100000\nendian: little\n"
+                                       "encoding: gzip\n\n");
+    const std::uint64_t bytes = std::uint64_t{100000} * 100000 * 100000 * sizeof(float);
+    ASSERT_GT(bytes, detail::physicalMemoryBytes()) << "this machine could hold the grid";
+    EXPECT_EQ(errorOf<DataError>([&] { readNrrdVolume(path); }),
+              path + ": a grid of 100000 x 100000 x 100000 voxels x 1 float would need " +
+                  detail::bytesText(bytes) + ", more than this machine's memory (" +
+                  detail::bytesText(detail::physicalMemoryBytes()) + ")");
 }
 
 TEST(NrrdVolume, aFileThatIsNotNrrdGetsTheFormatNamed) {
