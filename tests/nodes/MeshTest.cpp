@@ -10,6 +10,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -195,6 +196,26 @@ TEST(Mesh, refusesABufferThatIsAFifo) {
     mesh->fileName = fifo;
     EXPECT_EQ(errorOf<IoError>([&] { mesh->triangleMesh(); }),
               "Mesh: " + fifo + ": cannot read glTF file: it is a FIFO, not a regular file");
+}
+
+// A glTF may name a buffer outside its folder (docs/reliability.md, "Decisions"): a scene file
+// names files anywhere already, and models share texture and buffer folders.
+TEST(Mesh, readsABufferInTheFolderAboveTheGltfs) {
+    const float positions[9] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    const std::uint16_t indices[4] = {0, 1, 2, 0};
+    const std::string buffer = testPath("shared-triangle.bin");
+    std::ofstream bytes(buffer, std::ios::binary);
+    bytes.write(reinterpret_cast<const char*>(positions), sizeof positions);
+    bytes.write(reinterpret_cast<const char*>(indices), sizeof indices);
+    bytes.close();
+    std::filesystem::create_directories(testPath("models"));
+    std::string text = triangleGltf("4", "");
+    text.replace(text.find(kBuffer), std::string(kBuffer).size(),
+                 "../" + std::filesystem::path(buffer).filename().string());
+    const auto mesh = Mesh::create();
+    mesh->fileName = writeFile("models/above.gltf", text);
+    EXPECT_EQ(mesh->triangleMesh()->positions,
+              (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
 }
 
 } // namespace
