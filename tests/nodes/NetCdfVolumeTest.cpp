@@ -88,8 +88,11 @@ variables:
         t:scale_factor = 0.5 ;
         t:add_offset = 10. ;
         t:_FillValue = -1s ;
+    float u(z, y, x) ;
+        u:missing_value = -999.f ;
 data:
     t = 0, 4, _, 8 ;
+    u = 1, -999, _, 4 ;
 }
 )");
     const auto grid = std::get<ScalarGridPtr>(readNetCdfVariable(path, "t"));
@@ -97,6 +100,12 @@ data:
     EXPECT_EQ(grid->value({1, 0, 0}), 12.0f);
     EXPECT_FALSE(grid->isActive({0, 0, 1})) << "the fill value is an empty voxel";
     EXPECT_EQ(grid->value({1, 0, 1}), 14.0f);
+    // missing_value, and the type's default fill where nothing was written (no _FillValue).
+    const auto other = std::get<ScalarGridPtr>(readNetCdfVariable(path, "u"));
+    EXPECT_EQ(other->value({0, 0, 0}), 1.0f);
+    EXPECT_FALSE(other->isActive({1, 0, 0}));
+    EXPECT_FALSE(other->isActive({0, 0, 1}));
+    EXPECT_EQ(other->value({1, 0, 1}), 4.0f);
 }
 
 const char* const kSeries = R"(netcdf series {
