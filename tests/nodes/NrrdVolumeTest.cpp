@@ -172,6 +172,15 @@ TEST(NrrdVolume, readsADetachedHeaderWithLineAndByteSkip) {
     const auto grid = std::get<ScalarGridPtr>(readNrrdVolume(header));
     EXPECT_EQ(grid->value({3, 2, 1}), 123.0f);
 
+    // byte skip -1: the data are the file's last bytes, after a header of unknown length.
+    const std::string tail = writeFile(testPath("tail.raw"), "any binary header\x01\x02" +
+                                                                 rampBytes<std::int16_t>());
+    const std::string tailHeader = testPath("tail.nhdr");
+    runUnu("make -h -i " + shellQuoted(std::filesystem::path(tail).filename().string()) +
+               " -t short -s 4 3 2 -en little -bs -1 -o " + shellQuoted(tailHeader),
+           folder);
+    EXPECT_EQ(std::get<ScalarGridPtr>(readNrrdVolume(tailHeader))->value({3, 2, 1}), 123.0f);
+
     // The data file is found next to the header, whatever the working directory.
     const std::string gzipped = testPath("gz.nhdr");
     const std::string full = testPath("full.nrrd");
