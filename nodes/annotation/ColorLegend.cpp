@@ -30,6 +30,12 @@ Layout layoutFor(int width, int height) {
     return layout;
 }
 
+// `start` moved so that [start, start + size) lies inside [0, limit) where it can; at 0 when it
+// cannot (an image smaller than the label: the label is cut, not misplaced).
+int keepInside(int start, int size, int limit) {
+    return std::max(0, std::min(start, limit - size));
+}
+
 bool isVertical(LegendPosition position) {
     return position == LegendPosition::Right || position == LegendPosition::Left;
 }
@@ -122,10 +128,10 @@ void ColorLegend::draw(image::Image& image) const {
         if (vertical) {
             topLeft.x = bar.x + bar.width + layout.gap;
             const int centre = bar.y + static_cast<int>((1.0f - t) * float(bar.height - 1));
-            topLeft.y = std::clamp(centre - labelHeight / 2, 0, image.height() - labelHeight);
+            topLeft.y = keepInside(centre - labelHeight / 2, labelHeight, image.height());
         } else {
             const int centre = bar.x + static_cast<int>(t * float(bar.width - 1));
-            topLeft.x = std::clamp(centre - textWidth / 2, 0, image.width() - textWidth);
+            topLeft.x = keepInside(centre - textWidth / 2, textWidth, image.width());
             topLeft.y = bar.y + bar.height + layout.gap;
         }
         NumberFont::draw(image, topLeft + glm::ivec2(layout.scale), text, layout.scale,

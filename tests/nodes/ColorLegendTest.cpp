@@ -70,6 +70,14 @@ TEST(ColorLegend, labelsAreWrittenBesideTheBar) {
     EXPECT_LE(bar.x + bar.width + 3 + NumberFont::textWidth("-0.15", 1), 320);
 }
 
+TEST(ColorLegend, imagesSmallerThanTheLegendGetWhatFits) {
+    for (const LegendPosition position : {LegendPosition::Right, LegendPosition::Bottom}) {
+        image::Image image(3, 2);
+        legendOf(magma(), position).draw(image);
+        EXPECT_EQ(image.statistics().nonFinitePixels, 0U);
+    }
+}
+
 TEST(ColorLegend, labelsAreShortNumbers) {
     EXPECT_EQ(ColorLegend::label(-0.15f), "-0.15");
     EXPECT_EQ(ColorLegend::label(0.0), "0");
