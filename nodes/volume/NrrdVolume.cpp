@@ -18,7 +18,8 @@ std::string dataFilePath(const std::string& headerPath, const std::string& dataF
     const std::filesystem::path name(dataFile);
     if (name.is_absolute())
         return dataFile;
-    return (std::filesystem::path(headerPath).parent_path() / name).string();
+    // unu writes "./name"; messages name the file without it.
+    return (std::filesystem::path(headerPath).parent_path() / name).lexically_normal().string();
 }
 
 // Skips `count` lines of `in`; answers the bytes skipped.
@@ -43,16 +44,19 @@ AnyGrid readRaw(std::istream& in, const std::string& path, const NrrdHeader& hea
     const std::int64_t skip = header.byteSkip == -1 ? std::max<std::int64_t>(0, available - needed)
                                                     : header.byteSkip;
     available -= skip;
+    // What the data follow, for messages.
+    const std::string after = skip > 0                 ? "the " + std::to_string(skip) +
+                                                             " bytes of 'byte skip'"
+                              : header.lineSkip > 0    ? std::string("the lines of 'line skip'")
+                              : header.dataFile.empty() ? std::string("the header")
+                                                        : std::string("the start of the file");
     if (available < needed)
         throw DataError(path + ": truncated data: " + asks + ", but only " +
-                        std::to_string(std::max<std::int64_t>(0, available)) + " bytes follow" +
-                        (skip > 0 ? " the " + std::to_string(skip) + " bytes of 'byte skip'"
-                                  : " the header"));
+                        std::to_string(std::max<std::int64_t>(0, available)) + " bytes follow " +
+                        after);
     if (available > needed)
         throw DataError(path + ": data size mismatch: " + asks + ", but " +
-                        std::to_string(available) + " bytes follow" +
-                        (skip > 0 ? " the " + std::to_string(skip) + " bytes of 'byte skip'"
-                                  : " the header") +
+                        std::to_string(available) + " bytes follow " + after +
                         " (for data at the end of a longer file, say 'byte skip: -1')");
     in.seekg(static_cast<std::streamoff>(position + skip));
     return detail::readRawData(in, path, header.layout, detail::RawOrder::XFastest, progress);

@@ -207,6 +207,17 @@ TEST(NrrdVolume, refusesTruncatedData) {
               made + ": truncated data: the header's sizes 4 3 2 of type 'float' ask for 96 "
                      "bytes, but only 88 bytes follow the header");
 
+    // A detached header whose data file is short; the message names the data file.
+    const std::string shortData = writeFile(testPath("short.raw"), rampBytes<float>().substr(8));
+    const std::string folder = std::filesystem::path(shortData).parent_path().string();
+    const std::string detached = testPath("short.nhdr");
+    runUnu("make -h -i " + shellQuoted(std::filesystem::path(shortData).filename().string()) +
+               " -t float -s 4 3 2 -en little -o " + shellQuoted(detached),
+           folder);
+    EXPECT_EQ(errorOf<DataError>([&] { readNrrdVolume(detached); }),
+              shortData + ": truncated data: the header's sizes 4 3 2 of type 'float' ask for 96 "
+                          "bytes, but only 88 bytes follow the start of the file");
+
     // Complete gzip data of fewer values than the header asks for.
     const std::string longer = testPath("longer.nrrd");
     {
