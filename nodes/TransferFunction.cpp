@@ -14,6 +14,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 namespace texsplat::nodes {
 
@@ -99,10 +100,13 @@ std::shared_ptr<const detail::TransferTable> TransferFunction::buildTable() cons
     table->unitDistance = unit;
 
     if (colorValues.isEmpty() && colors.isEmpty()) {
-        table->colors = colorMapFile.value().empty()
-                            ? detail::presetColors(preset.value())
-                            : colormap::readParaViewColorMap(resolvedPath(colorMapFile.value()))
-                                  .colors;
+        if (colorMapFile.value().empty()) {
+            table->colors = detail::presetColors(preset.value());
+        } else {
+            colormap::ParaViewColorMap map =
+                colormap::readParaViewColorMap(resolvedPath(colorMapFile.value()));
+            table->colors = {std::move(map.positions), std::move(map.colors)};
+        }
     } else {
         table->colors = controlPoints<glm::vec3>(context, colorValues, colors, [&](std::size_t i) {
             const glm::vec3& color = colors[i];

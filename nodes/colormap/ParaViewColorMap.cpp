@@ -106,14 +106,14 @@ ParaViewColorMap parseParaViewColorMap(const std::string& source, const std::str
                                 sg::formatFloat(color[c]));
             }
         }
-        result.colors.y.push_back(color);
+        result.colors.push_back(color);
     }
     // As ParaView applies a preset: the points' own span becomes the transfer function's range.
     const double first = x.front();
     const double span = double(x.back()) - first;
     for (const float position : x) {
-        result.colors.x.push_back(span > 0.0 ? static_cast<float>((position - first) / span)
-                                             : 0.0f);
+        result.positions.push_back(span > 0.0 ? static_cast<float>((position - first) / span)
+                                              : 0.0f);
     }
     return result;
 }

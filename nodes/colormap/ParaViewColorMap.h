@@ -1,8 +1,9 @@
 #pragma once
 
-#include "nodes/detail/TransferTable.h"
+#include <glm/vec3.hpp>
 
 #include <string>
+#include <vector>
 
 namespace texsplat::colormap {
 
@@ -17,9 +18,10 @@ namespace texsplat::colormap {
 /// of three "Diverging" or "Lab" points differs a little between them. Opacity points
 /// (`Points`) and `NanColor` are not read: opacity is the transfer function's extinction.
 struct ParaViewColorMap {
-    std::string name;                                         ///< `Name`, may be empty
-    std::string colorSpace;                                   ///< `ColorSpace`, may be empty
-    nodes::detail::PiecewiseLinear<glm::vec3> colors; ///< RGBPoints over t in [0, 1]
+    std::string name;              ///< `Name`, may be empty
+    std::string colorSpace;        ///< `ColorSpace`, may be empty
+    std::vector<float> positions;  ///< the x of RGBPoints rescaled to t in [0, 1], not decreasing
+    std::vector<glm::vec3> colors; ///< the r, g, b of RGBPoints, one per position
 };
 
 /// @brief Reads the first colour map of a ParaView colour-map JSON file.

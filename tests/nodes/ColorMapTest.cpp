@@ -78,8 +78,9 @@ TEST(ColorMap, readsAParaViewColorMapFile) {
     EXPECT_EQ(map.name, "Cool to Warm");
     EXPECT_EQ(map.colorSpace, "Diverging");
     // The x of -0.15, 0, 0.15 rescaled to the transfer function's t.
-    EXPECT_EQ(map.colors.x, (std::vector<float>{0.0f, 0.5f, 1.0f}));
-    EXPECT_FLOAT_EQ(map.colors.y[1].g, 0.865f);
+    EXPECT_EQ(map.positions, (std::vector<float>{0.0f, 0.5f, 1.0f}));
+    ASSERT_EQ(map.colors.size(), 3U);
+    EXPECT_FLOAT_EQ(map.colors[1].g, 0.865f);
 }
 
 TEST(ColorMap, colorMapFileReplacesThePresetRelativeToTheSceneFile) {
