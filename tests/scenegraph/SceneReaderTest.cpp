@@ -364,6 +364,13 @@ TEST_F(SceneReaderTest, reportsEveryMalformedInputByLocationAndExpectation) {
          "scene.iv:2:12: unknown field 'sise' of TestCube (fields: size)"},
         {kHeader + "Group { size 2 }",
          "scene.iv:2:9: unknown field 'size' of Group (it has no fields)"},
+        // Names echo the file's bytes as every message does: escaped, cut after 40 bytes.
+        {kHeader + "Group { s\xc3\xafze 2 }",
+         "scene.iv:2:9: unknown field 's\\xc3\\xafze' of Group (it has no fields)"},
+        {kHeader + "USE cube\xff", "scene.iv:2:5: USE of undefined name 'cube\\xff'"},
+        {kHeader + "TestCube { " + std::string(50, 'x') + " 2 }",
+         "scene.iv:2:12: unknown field '" + std::string(40, 'x') +
+             "...' of TestCube (fields: size)"},
         {kHeader + "TestCube { size abc }",
          "scene.iv:2:17: expected a number for TestCube.size (SFFloat), got 'abc'"},
         {kHeader + "TestCube { size 1.5.2 }",

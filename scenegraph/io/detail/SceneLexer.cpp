@@ -32,8 +32,9 @@ bool isNameChar(char c) {
     return !isSpace(c) && !isControl(c) && std::string_view("\"'.\\{}[],").find(c) == std::string_view::npos;
 }
 
-// Printable excerpt for messages: bytes outside printable ASCII as \xNN, long text cut.
-std::string quote(std::string_view text) {
+} // namespace
+
+std::string SceneLexer::quote(std::string_view text) {
     std::string quoted;
     for (std::size_t i = 0; i < text.size() && i < kMaxQuoted; ++i) {
         const auto byte = static_cast<unsigned char>(text[i]);
@@ -50,8 +51,6 @@ std::string quote(std::string_view text) {
     }
     return "'" + quoted + "'";
 }
-
-} // namespace
 
 SceneLexer::SceneLexer(std::string_view text, std::string fileName)
     : mText(text), mFileName(std::move(fileName)) {}

@@ -66,6 +66,10 @@ public:
     /// @brief Formats `where` as `line:col`, for messages that point back (`opened at 3:1`).
     static std::string format(SourceLocation where);
 
+    /// @brief `text` as every message quotes what the file holds: in single quotes, bytes outside
+    /// printable ASCII as `\xNN`, cut after 40 bytes with `...`.
+    static std::string quote(std::string_view text);
+
 private:
     void skipSpace();
     void advance();

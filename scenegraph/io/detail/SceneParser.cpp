@@ -83,10 +83,10 @@ float SceneParser::readFloat() {
     case ParsedNumber::Valid:
         break;
     case ParsedNumber::Malformed:
-        failExpected("a number", "'" + word + "'");
+        failExpected("a number", SceneLexer::quote(word));
     case ParsedNumber::OutOfRange:
-        fail("number out of range" + fieldContext() + ": '" + word + "' (largest float is " +
-             formatFloat(std::numeric_limits<float>::max()) + ")");
+        fail("number out of range" + fieldContext() + ": " + SceneLexer::quote(word) +
+             " (largest float is " + formatFloat(std::numeric_limits<float>::max()) + ")");
     }
     return value;
 }
@@ -98,10 +98,10 @@ std::int32_t SceneParser::readInt32() {
     case ParsedNumber::Valid:
         break;
     case ParsedNumber::Malformed:
-        failExpected("an integer", "'" + word + "'");
+        failExpected("an integer", SceneLexer::quote(word));
     case ParsedNumber::OutOfRange:
-        fail("integer out of range" + fieldContext() + ": '" + word +
-             "' (expected -2147483648 to 2147483647)");
+        fail("integer out of range" + fieldContext() + ": " + SceneLexer::quote(word) +
+             " (expected -2147483648 to 2147483647)");
     }
     return value;
 }
@@ -162,7 +162,7 @@ std::shared_ptr<FieldContainer> SceneParser::readContainerAfter(const std::strin
         }
         const auto found = mDefinitions.find(name);
         if (found == mDefinitions.end()) {
-            mLexer.fail(nameAt, "USE of undefined name '" + name + "'");
+            mLexer.fail(nameAt, "USE of undefined name " + SceneLexer::quote(name));
         }
         return found->second;
     }
@@ -177,7 +177,7 @@ std::shared_ptr<FieldContainer> SceneParser::readContainerAfter(const std::strin
     }
     if (!isIdentifier(word)) {
         mLexer.fail(where, "expected a node type name, got " +
-                               (word.empty() ? mLexer.describeNext() : "'" + word + "'"));
+                               (word.empty() ? mLexer.describeNext() : SceneLexer::quote(word)));
     }
     return readInstance(word, where, "");
 }
@@ -230,7 +230,8 @@ std::shared_ptr<FieldContainer> SceneParser::createInstance(const std::string& t
     const std::optional<Description> outputs = readDescription("outputs");
     if (const NodeType* type = NodeRegistry::instance().find(typeName)) {
         if (type->isAbstract()) {
-            mLexer.fail(where, "node type '" + typeName + "' is abstract and cannot be read");
+            mLexer.fail(where, "node type " + SceneLexer::quote(typeName) +
+                                   " is abstract and cannot be read");
         }
         std::shared_ptr<FieldContainer> container = type->create();
         if (auto* files = dynamic_cast<RelativeFileNames*>(container.get())) {
@@ -247,22 +248,24 @@ std::shared_ptr<FieldContainer> SceneParser::createInstance(const std::string& t
         return container;
     }
     if (inputs || outputs) {
-        mLexer.fail(where, "unknown engine type '" + typeName +
-                               "' (engines must be registered to be read)");
+        mLexer.fail(where, "unknown engine type " + SceneLexer::quote(typeName) +
+                               " (engines must be registered to be read)");
     }
     if (!fields) {
-        mLexer.fail(where, "unknown node type '" + typeName +
-                               "' (not registered, and no 'fields [ ... ]' description follows)");
+        mLexer.fail(where, "unknown node type " + SceneLexer::quote(typeName) +
+                               " (not registered, and no 'fields [ ... ]' description follows)");
     }
     const UnknownNode::Ptr node = UnknownNode::create(typeName);
     for (const DescribedField& entry : *fields) {
         if (!UnknownNode::isDescribableFieldType(entry.type)) {
-            mLexer.fail(entry.where, "unknown field type '" + entry.type + "' for field '" +
-                                         entry.name + "' of " + typeName);
+            mLexer.fail(entry.where, "unknown field type " + SceneLexer::quote(entry.type) +
+                                         " for field " + SceneLexer::quote(entry.name) + " of " +
+                                         typeName);
         }
         if (node->findField(entry.name) != nullptr) {
             mLexer.fail(entry.where,
-                        "field '" + entry.name + "' of " + typeName + " is described twice");
+                        "field " + SceneLexer::quote(entry.name) + " of " + typeName +
+                            " is described twice");
         }
         node->addDescribedField(entry.type, entry.name);
     }
@@ -305,11 +308,13 @@ void SceneParser::checkDescription(const FieldContainer& container,
         }
         if (actualType.empty()) {
             mLexer.fail(entry.where, container.typeName() + " has no " +
-                                         (describesOutputs ? "output '" : "field '") +
-                                         entry.name + "' (described as " + entry.type + ")");
+                                         (describesOutputs ? "output " : "field ") +
+                                         SceneLexer::quote(entry.name) + " (described as " +
+                                         entry.type + ")");
         }
         if (actualType != entry.type) {
-            mLexer.fail(entry.where, "field '" + entry.name + "' of " + container.typeName() +
+            mLexer.fail(entry.where, "field " + SceneLexer::quote(entry.name) + " of " +
+                                         container.typeName() +
                                          " is " + std::string(actualType) +
                                          ", but the description says " + entry.type);
         }
@@ -341,15 +346,17 @@ void SceneParser::readBody(FieldContainer& container, SourceLocation opened) {
         }
         const bool isNode = word == "DEF" || word == "USE" || mLexer.peek() == '{';
         if (isNode && group == nullptr) {
-            mLexer.fail(where, container.typeName() + " cannot have children, got '" + word +
-                                   "' (only groups such as Separator can)");
+            mLexer.fail(where, container.typeName() + " cannot have children, got " +
+                                   SceneLexer::quote(word) +
+                                   " (only groups such as Separator can)");
         }
         if (!isNode) {
             std::string known;
             for (const Field* field : container.fields()) {
                 known += (known.empty() ? "" : ", ") + field->name();
             }
-            mLexer.fail(where, "unknown field '" + word + "' of " + container.typeName() +
+            mLexer.fail(where, "unknown field " + SceneLexer::quote(word) + " of " +
+                                   container.typeName() +
                                    (known.empty() ? " (it has no fields)"
                                                   : " (fields: " + known + ")"));
         }
@@ -417,7 +424,8 @@ void SceneParser::readConnection(Field& field) {
             mConnections.push_back(
                 {&field, field.container()->shared_from_this(), source, sourceAt});
         } else {
-            mLexer.fail(nameAt, source->describe() + " has no field or output '" + name + "'");
+            mLexer.fail(nameAt, source->describe() + " has no field or output " +
+                                    SceneLexer::quote(name));
         }
     } catch (const DataError& error) {
         mLexer.fail(nameAt, error.what());
@@ -457,7 +465,7 @@ std::string SceneParser::readIdentifier(const std::string& what) {
     const std::string name = mLexer.readName();
     if (!isIdentifier(name)) {
         mLexer.fail(where, "expected " + what + ", got " +
-                               (name.empty() ? mLexer.describeNext() : "'" + name + "'"));
+                               (name.empty() ? mLexer.describeNext() : SceneLexer::quote(name)));
     }
     return name;
 }
