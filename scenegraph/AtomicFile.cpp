@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
+#include <filesystem>
 #include <unistd.h>
 
 namespace texsplat {
@@ -53,10 +54,28 @@ bool syncToDisk(const std::string& file) {
     return synced;
 }
 
+/// The file a write to `path` means: `path` itself, or for a symbolic link the file it points
+/// to (through every link), which need not exist yet. Renaming over the link itself would
+/// replace it with a plain file.
+std::string throughLinks(const std::string& path) {
+    namespace fs = std::filesystem;
+    fs::path file = path;
+    std::error_code error;
+    // As many links as the system follows (a loop fails there, and so then in open()).
+    for (int hop = 0; hop < 40 && fs::is_symlink(file, error); ++hop) {
+        const fs::path target = fs::read_symlink(file, error);
+        if (error)
+            break;
+        file = target.is_absolute() ? target : file.parent_path() / target;
+    }
+    return file.string();
+}
+
 } // namespace
 
-void writeFileAtomically(const std::string& path,
+void writeFileAtomically(const std::string& givenPath,
                          const std::function<void(std::ofstream& stream)>& write) {
+    const std::string path = throughLinks(givenPath);
     const std::string temporary = createTemporarySibling(path);
     try {
         std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);

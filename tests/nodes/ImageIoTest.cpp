@@ -216,6 +216,21 @@ TEST_F(ImageIoTest, failedWriteKeepsTheOldFileAndRemovesTheTemporary) {
     EXPECT_EQ(readImage(target).width(), 3);
 }
 
+// The rename that makes a write atomic replaced a symbolic link with a plain file.
+TEST_F(ImageIoTest, writingThroughASymbolicLinkWritesItsTargetAndKeepsTheLink) {
+    const std::string target = path("target.png");
+    writeImage(Image(3, 3), target);
+    std::filesystem::create_symlink(target, path("link.png"));
+    writeImage(Image(2, 2), path("link.png"));
+    EXPECT_TRUE(std::filesystem::is_symlink(path("link.png")));
+    EXPECT_EQ(readImage(target).width(), 2);
+    // A link to a file that does not exist yet makes that file.
+    std::filesystem::create_symlink(path("later.png"), path("dangling.png"));
+    writeImage(Image(4, 4), path("dangling.png"));
+    EXPECT_TRUE(std::filesystem::is_symlink(path("dangling.png")));
+    EXPECT_EQ(readImage(path("later.png")).width(), 4);
+}
+
 TEST_F(ImageIoTest, unknownExtensionIsRefusedBeforeWriting) {
     const std::string target = path("out.jpg");
     EXPECT_EQ(ioErrorMessage([&] { writeImage(Image(1, 1), target); }),
