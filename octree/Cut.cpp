@@ -15,12 +15,20 @@ Cut::Cut(const Octree& octree)
     : mOctree(&octree), mSplit(octree.nodes().size(), false),
       mSplatCount(octree.isEmpty() ? 0 : 1) {}
 
-Cut Cut::byError(const Octree& octree, double threshold) {
+namespace {
+
+void checkThreshold(double threshold) {
     if (!std::isfinite(threshold) || threshold < 0.0) {
         std::ostringstream text;
         text << "Cut: error threshold must be finite and >= 0, got " << threshold;
         throw DataError(text.str());
     }
+}
+
+} // namespace
+
+Cut Cut::byError(const Octree& octree, double threshold) {
+    checkThreshold(threshold);
     Cut cut(octree);
     if (octree.isEmpty()) {
         return cut;
@@ -38,6 +46,11 @@ Cut Cut::byError(const Octree& octree, double threshold) {
         pending.insert(pending.end(), children.begin(), children.begin() + count);
     }
     return cut;
+}
+
+Cut Cut::byRelativeError(const Octree& octree, double fraction) {
+    checkThreshold(fraction);
+    return byError(octree, fraction * static_cast<double>(octree.valueScale()));
 }
 
 void Cut::split(const NodeRef& node) {

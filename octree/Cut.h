@@ -25,6 +25,13 @@ public:
     /// @throws DataError when @p threshold is negative or not finite.
     [[nodiscard]] static Cut byError(const Octree& octree, double threshold);
 
+    /// @brief The cut of byError() at @p fraction of the octree's `valueScale()`, the largest
+    /// colour or extinction of any voxel: at fraction f every voxel a splat stands for is within
+    /// f times the grid's largest value of what the splat carries, whatever the transfer
+    /// function's scale. 0 gives byError(octree, 0); 1 or more the root alone.
+    /// @throws DataError when @p fraction is negative or not finite.
+    [[nodiscard]] static Cut byRelativeError(const Octree& octree, double fraction);
+
     /// @brief The octree this cut goes through.
     [[nodiscard]] const Octree& octree() const { return *mOctree; }
 

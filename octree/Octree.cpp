@@ -79,6 +79,7 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
     TEXSPLAT_ASSERT(mRootLevel <= kMaxLevel, "Octree::Octree(): grid too large for 64 bits");
     const Statistics root = build(mRootLevel, glm::u64vec3(0));
     mIsEmpty = root.record.nonEmptyCount == 0;
+    mValueScale = std::max({root.maximum.r, root.maximum.g, root.maximum.b, root.maximum.a});
     if (mRootLevel > 0 && !mIsEmpty) {
         mNodes.push_back(root.record);
         if (mGrid->hasVectors()) {

@@ -42,6 +42,12 @@ public:
     /// @brief Level of the root: the smallest L with 2^L >= the largest dimension.
     [[nodiscard]] int rootLevel() const { return mRootLevel; }
 
+    /// @brief The largest value of any channel (R, G, B, tau) over the grid's voxels: the scale of
+    /// the error measure, since no node's error exceeds it (all values are >= 0). A relative error
+    /// threshold (Cut::byRelativeError()) is a fraction of it, so scaling the transfer function's
+    /// opacities (colour is premultiplied by them) leaves the cut of a relative threshold alone.
+    [[nodiscard]] float valueScale() const { return mValueScale; }
+
     /// @brief The records of the nodes of level >= 1, children before their parents.
     [[nodiscard]] const std::vector<OctreeNode>& nodes() const { return mNodes; }
 
@@ -113,6 +119,7 @@ private:
     std::vector<OctreeNode> mNodes;
     std::vector<glm::vec3> mMeanVectors; // parallel to mNodes, for grids with vectors only
     int mRootLevel = 0;
+    float mValueScale = 0.0f;
     bool mIsEmpty = true;
 };
 

@@ -128,3 +128,50 @@ TEST(Cut, isDeterministic) {
     EXPECT_TRUE(a != Cut::byError(first, 0.0));
     EXPECT_LT(a.splatCount(), Cut::byError(first, 0.0).splatCount());
 }
+
+namespace {
+
+// The same grid with every value scaled: what a transfer function's opacity scale does (its
+// colour is premultiplied by the opacity, so all four channels scale).
+std::shared_ptr<ClassifiedGrid> scaledGrid(const ClassifiedGrid& grid, float factor) {
+    auto scaled = std::make_shared<ClassifiedGrid>(grid.dims(), grid.spacing(), grid.origin());
+    const glm::u64vec3 dims = grid.dims();
+    for (std::uint64_t k = 0; k < dims.z; ++k) {
+        for (std::uint64_t j = 0; j < dims.y; ++j) {
+            for (std::uint64_t i = 0; i < dims.x; ++i) {
+                const glm::vec4 value = grid.voxel(grid.index({i, j, k})) * factor;
+                scaled->setVoxel({i, j, k}, glm::vec3(value), value.w);
+            }
+        }
+    }
+    return scaled;
+}
+
+} // namespace
+
+TEST(Cut, relativeThresholdGivesTheSameCutWhateverTheValuesScale) {
+    const auto grid = randomGrid(glm::u64vec3(16), 5);
+    const Octree octree(grid);
+    const Octree scaled(scaledGrid(*grid, 10.0f));
+    EXPECT_FLOAT_EQ(scaled.valueScale(), 10.0f * octree.valueScale());
+    for (const double fraction : {0.0, 0.1, 0.3, 0.6, 1.0}) {
+        const std::vector<NodeRef> expected = nodesOf(Cut::byRelativeError(octree, fraction));
+        const std::vector<NodeRef> actual = nodesOf(Cut::byRelativeError(scaled, fraction));
+        ASSERT_EQ(actual.size(), expected.size()) << fraction;
+        for (std::size_t i = 0; i < expected.size(); ++i) {
+            EXPECT_EQ(actual[i].level, expected[i].level) << fraction;
+            EXPECT_EQ(actual[i].coord, expected[i].coord) << fraction;
+        }
+    }
+    // The absolute threshold is what the scale changes: it refines the brighter grid further.
+    const double absolute = 0.6 * static_cast<double>(octree.valueScale());
+    EXPECT_LT(Cut::byError(octree, absolute).splatCount(),
+              Cut::byError(scaled, absolute).splatCount());
+}
+
+TEST(Cut, relativeThresholdRunsFromEveryVoxelToTheRoot) {
+    const Octree octree(randomGrid(glm::u64vec3(12), 9));
+    EXPECT_TRUE(Cut::byRelativeError(octree, 0.0) == Cut::byError(octree, 0.0));
+    EXPECT_EQ(Cut::byRelativeError(octree, 1.0).splatCount(), 1u);
+    EXPECT_THROW((void)Cut::byRelativeError(octree, -0.1), texsplat::DataError);
+}
