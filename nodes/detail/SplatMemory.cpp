@@ -32,10 +32,6 @@ std::string sizeText(std::uint64_t bytes) {
 
 } // namespace
 
-const char* const kSplatMemoryAdvice =
-    "use a volume of lower resolution, a splat budget (maxSplats, or --max-splats) to bound "
-    "the splats, or a larger --memory-limit";
-
 SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool withOctree,
                                 std::uint64_t maxSplats) {
     // The vector field when there is one: scalarGrid() of vector data would make a component.

@@ -42,6 +42,8 @@ void checkSplatMemory(const SplatMemory& memory);
 void checkClassificationMemory(const SplatMemory& memory);
 
 /// @brief What to do when a splat node's stages run out of memory.
-extern const char* const kSplatMemoryAdvice;
+inline constexpr const char* kSplatMemoryAdvice =
+    "use a volume of lower resolution, a splat budget (maxSplats, or --max-splats) to bound "
+    "the splats, or a larger --memory-limit";
 
 } // namespace texsplat::nodes::detail
