@@ -7,6 +7,7 @@
 #include "scenegraph/Error.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <map>
@@ -243,9 +244,11 @@ void readGeometry(const Fields& fields, const NrrdLineReader& reader, int firstS
         throw DataError(placeOf(fields.seen.count("space") ? "space" : "space dimension") +
                         "space dimension " + std::to_string(spaceDimension) +
                         " is not supported; expected 3");
+    const int spatialAxes = fields.dimension - firstSpatialAxis;
+    std::array<bool, kSpaceDimension> used{};
     for (int axis = 0; axis < fields.dimension; ++axis) {
         const bool spatial = axis >= firstSpatialAxis;
-        const int world = axis - firstSpatialAxis;
+        const int fileAxis = axis - firstSpatialAxis;
         if (fields.spacings) {
             const double spacing = (*fields.spacings)[static_cast<std::size_t>(axis)];
             if (!spatial)
@@ -254,7 +257,7 @@ void readGeometry(const Fields& fields, const NrrdLineReader& reader, int firstS
                 throw DataError(placeOf("spacings") + "the spacing of " + axisName(axis) +
                                 " must be a finite number above 0, found " +
                                 formatNumber(spacing));
-            header.layout.spacing[world] = spacing;
+            header.layout.spacing[fileAxis] = spacing;
         }
         if (hasDirections) {
             const auto& direction = fields.directions[static_cast<std::size_t>(axis)];
@@ -272,20 +275,35 @@ void readGeometry(const Fields& fields, const NrrdLineReader& reader, int firstS
                 throw ParseError(placeOf("space directions") + "the direction of " +
                                  axisName(axis) + " has " + std::to_string(direction->size()) +
                                  " components; the space has 3");
-            for (int component = 0; component < kSpaceDimension; ++component)
-                if ((component == world) != ((*direction)[std::size_t(component)] != 0.0))
-                    throw DataError(placeOf("space directions") + "the direction of " +
-                                    axisName(axis) + " is " + vectorText(*direction) +
-                                    ", not along world axis " + "xyz"[world] +
-                                    "; oblique, rotated or permuted grids are not supported "
-                                    "(resample the volume onto an axis-aligned grid)");
-            const double length = (*direction)[static_cast<std::size_t>(world)];
-            if (!(std::isfinite(length) && length > 0.0))
+            const auto along = std::count_if(direction->begin(), direction->end(),
+                                             [](double component) { return component != 0.0; });
+            const auto world = static_cast<int>(
+                std::find_if(direction->begin(), direction->end(),
+                             [](double component) { return component != 0.0; }) -
+                direction->begin());
+            if (along != 1 || !std::isfinite((*direction)[std::size_t(world)]))
                 throw DataError(placeOf("space directions") + "the direction of " +
                                 axisName(axis) + " is " + vectorText(*direction) +
-                                "; mirrored axes (negative directions) are not supported");
-            header.layout.spacing[world] = length;
+                                ", not along one world axis; oblique or rotated grids are not "
+                                "supported (resample the volume onto an axis-aligned grid)");
+            if (used[std::size_t(world)])
+                throw DataError(placeOf("space directions") + "two axes lie along world axis " +
+                                "xyz"[world] + " (the direction of " + axisName(axis) + " is " +
+                                vectorText(*direction) + ")");
+            used[std::size_t(world)] = true;
+            const double length = (*direction)[std::size_t(world)];
+            header.gridAxis[fileAxis] = world;
+            header.reversed[fileAxis] = length < 0.0;
+            header.layout.spacing[world] = std::abs(length);
         }
+    }
+    // The file's missing axes (of a 1-D or 2-D array) take the grid axes left, in order.
+    for (int fileAxis = spatialAxes, world = 0; hasDirections && fileAxis < kSpaceDimension;
+         ++fileAxis) {
+        while (used[std::size_t(world)])
+            ++world;
+        header.gridAxis[fileAxis] = world;
+        used[std::size_t(world)] = true;
     }
     if (fields.origin) {
         if (fields.origin->size() != kSpaceDimension)
@@ -295,6 +313,13 @@ void readGeometry(const Fields& fields, const NrrdLineReader& reader, int firstS
         for (int world = 0; world < kSpaceDimension; ++world)
             header.layout.origin[world] = (*fields.origin)[static_cast<std::size_t>(world)];
     }
+    // `space origin` is the file's first sample; a reversed axis starts the grid at its last.
+    for (int fileAxis = 0; fileAxis < spatialAxes; ++fileAxis)
+        if (header.reversed[fileAxis]) {
+            const int world = header.gridAxis[fileAxis];
+            const auto last = header.sizes[std::size_t(firstSpatialAxis + fileAxis)] - 1;
+            header.layout.origin[world] -= double(last) * header.layout.spacing[world];
+        }
 }
 
 // Checks the fields against each other and completes the layout.
@@ -311,9 +336,6 @@ void finish(const Fields& fields, const NrrdLineReader& reader, NrrdHeader& head
                         header.sizesText());
     const int firstSpatialAxis = vectors ? 1 : 0;
     header.layout.components = vectors ? 3 : 1;
-    glm::i64vec3 dims(1);
-    for (int axis = firstSpatialAxis; axis < fields.dimension; ++axis)
-        dims[axis - firstSpatialAxis] = header.sizes[static_cast<std::size_t>(axis)];
     if (!fields.hasEndian && header.layout.bytesPerValue() > 1)
         throw ParseError(reader.where(fields.seen.at("type")) + "type '" +
                          printable(header.typeName) +
@@ -322,6 +344,10 @@ void finish(const Fields& fields, const NrrdLineReader& reader, NrrdHeader& head
         throw DataError(reader.where(fields.seen.at("byte skip")) +
                         "'byte skip: -1' works with raw encoding only");
     readGeometry(fields, reader, firstSpatialAxis, header);
+    glm::i64vec3 dims(1);
+    for (int axis = firstSpatialAxis; axis < fields.dimension; ++axis)
+        dims[header.gridAxis[axis - firstSpatialAxis]] =
+            header.sizes[static_cast<std::size_t>(axis)];
     try {
         static_cast<void>(GridGeometry(dims, header.layout.origin, header.layout.spacing));
         header.layout.dims = dims;

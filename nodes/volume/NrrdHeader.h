@@ -29,16 +29,25 @@ enum class NrrdEncoding {
 ///
 /// Supported: 1-, 2- and 3-D scalars and 4-D arrays whose first (fastest) axis holds 3 values
 /// (vectors, interleaved per voxel); the types of RawValueType (int64, uint64 and `block` are
-/// not); encodings raw and gzip; axis-aligned space directions with positive lengths.
+/// not); encodings raw and gzip; axis-aligned space directions (each along one world axis, in
+/// any order and sign; oblique ones are refused).
 struct NrrdHeader {
-    /// @brief The grid the data holds: dims (x, y, z from `sizes`, fastest first), type,
-    /// components (3 for a 4-D array), byte order, spacing and origin (from `spacings` or from
-    /// `space directions` and `space origin`; 1 and 0 when the header has none).
+    /// @brief The grid the data holds: dims (x, y, z: `sizes` of the spatial axes, put where
+    /// gridAxis says), type, components (3 for a 4-D array), byte order, spacing and origin (the
+    /// center of grid voxel (0,0,0); from `spacings` or from `space directions` and
+    /// `space origin`; 1 and 0 when the header has none).
     RawHeader layout;
     /// @brief `type` as written ("unsigned short").
     std::string typeName;
     /// @brief `sizes`, fastest axis first, as written.
     std::vector<std::int64_t> sizes;
+    /// @brief For each spatial axis of the file (fastest first), the grid axis it lies along
+    /// (0 x, 1 y, 2 z): `space directions` may permute them; in order otherwise.
+    glm::ivec3 gridAxis{0, 1, 2};
+    /// @brief For each spatial axis of the file, whether its direction is negative: the grid
+    /// then counts it from the other end, keeping its spacing positive and every sample where
+    /// the header puts it.
+    glm::bvec3 reversed{false};
     /// @brief `encoding`.
     NrrdEncoding encoding = NrrdEncoding::Raw;
     /// @brief `data file` as written; empty when the data follows the header in the same file.
@@ -57,8 +66,8 @@ struct NrrdHeader {
     /// @throws ParseError "<source>:<line>:<column>: ..." (or "<source>: ..." for the magic line)
     /// when the text is not a NRRD header, never quoting binary bytes; DataError
     /// "<source>:<line>:<column>: ..." for a well-formed header of data this reader does not
-    /// read (another type, encoding or dimension, oblique or mirrored space directions, a
-    /// zero-size grid, several data files).
+    /// read (another type, encoding or dimension, oblique space directions, a zero-size grid,
+    /// several data files).
     static NrrdHeader parse(std::istream& in, const std::string& source);
 
     /// @brief "raw" or "gzip".

@@ -22,6 +22,10 @@ std::string dataFilePath(const std::string& headerPath, const std::string& dataF
     return (std::filesystem::path(headerPath).parent_path() / name).lexically_normal().string();
 }
 
+detail::FileAxes fileAxes(const NrrdHeader& header) {
+    return {header.gridAxis, header.reversed};
+}
+
 // Skips `count` lines of `in`; answers the bytes skipped.
 std::int64_t skipLines(std::istream& in, const std::string& path, std::int64_t count) {
     std::int64_t bytes = 0;
@@ -59,7 +63,8 @@ AnyGrid readRaw(std::istream& in, const std::string& path, const NrrdHeader& hea
                         std::to_string(available) + " bytes follow " + after +
                         " (for data at the end of a longer file, say 'byte skip: -1')");
     in.seekg(static_cast<std::streamoff>(position + skip));
-    return detail::readRawData(in, path, header.layout, detail::RawOrder::XFastest, progress);
+    return detail::readRawData(in, path, header.layout, detail::RawOrder::XFastest, progress,
+                               fileAxes(header));
 }
 
 AnyGrid readGzip(std::istream& in, const std::string& path, const NrrdHeader& header,
@@ -81,7 +86,7 @@ AnyGrid readGzip(std::istream& in, const std::string& path, const NrrdHeader& he
     AnyGrid grid;
     try {
         grid = detail::readRawData(data, path, header.layout, detail::RawOrder::XFastest,
-                                   progress);
+                                   progress, fileAxes(header));
     } catch (const IoError&) {
         throw ended(); // the only reads are from the gzip stream
     }

@@ -10,8 +10,10 @@ namespace texsplat::volume {
 /// @brief Reads a NRRD volume (NrrdHeader, docs/data.md): a `.nrrd` file with its data attached,
 /// or a detached `.nhdr` header and the `data file` it names (relative to the header's folder).
 /// A 1- to 3-D array gives a ScalarGrid, a 4-D array of sizes 3 X Y Z a VectorGrid; the first
-/// axis of `sizes` is the fastest, our x. Spacing and origin come from `spacings` or from
-/// `space directions` and `space origin` (the center of the first sample), else 1 and 0.
+/// spatial axis of `sizes` is the fastest, our x, unless `space directions` put the axes in
+/// another order or sign: then each sample goes where the header puts it (NrrdHeader::gridAxis,
+/// NrrdHeader::reversed). Spacing and origin come from `spacings` or from `space directions`
+/// and `space origin`, else 1 and 0.
 /// `line skip` lines, then `byte skip` bytes (counted after decompression for gzip) are
 /// skipped before the data. Values decode as readRawVolume()'s; NaN or infinite ones become
 /// empty voxels.

@@ -4,6 +4,7 @@
 #include "nodes/volume/RawHeader.h"
 #include "nodes/volume/detail/RawData.h"
 #include "nodes/volume/detail/SourceSupport.h"
+#include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 
 #include <algorithm>
@@ -186,7 +187,9 @@ AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout
 namespace detail {
 
 AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& layout,
-                    RawOrder order, const ProgressCallback& progress) {
+                    RawOrder order, const ProgressCallback& progress, const FileAxes& axes) {
+    TEXSPLAT_ASSERT(order == RawOrder::XFastest || axes.isIdentity(),
+                    "readRawData(): file axes are for x-fastest files");
     const GridGeometry geometry(layout.dims, layout.origin, layout.spacing);
     const glm::i64vec3 dims = layout.dims;
     const std::int64_t voxels = geometry.voxelCount();
@@ -202,14 +205,32 @@ AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& 
         const std::int64_t x = rest / (dims.z * dims.y);
         voxel = x + dims.x * (y + dims.y * z);
     };
+    // Our index of voxel number `n` of an XFastest file whose axes lie as `axes` says.
+    const glm::i64vec3 fileDims(dims[axes.gridAxis[0]], dims[axes.gridAxis[1]],
+                                dims[axes.gridAxis[2]]);
+    const auto fromFileAxes = [&](std::int64_t n) {
+        const glm::i64vec3 file(n % fileDims.x, (n / fileDims.x) % fileDims.y,
+                                n / (fileDims.x * fileDims.y));
+        glm::i64vec3 index;
+        for (int axis = 0; axis < 3; ++axis)
+            index[axes.gridAxis[axis]] =
+                axes.reversed[axis] ? fileDims[axis] - 1 - file[axis] : file[axis];
+        return index.x + dims.x * (index.y + dims.y * index.z);
+    };
+    const bool inGridOrder = order == RawOrder::XFastest && axes.isIdentity();
     AnyGrid result;
     if (layout.components == 1) {
         auto grid = std::make_shared<DenseScalarGrid>(geometry);
         float* target = grid->values().data();
         readValues(in, path, layout, progress,
                    [&](std::int64_t first, const float* values, std::int64_t count) {
-                       if (order == RawOrder::XFastest) {
+                       if (inGridOrder) {
                            std::copy(values, values + count, target + first);
+                           return;
+                       }
+                       if (order == RawOrder::XFastest) {
+                           for (std::int64_t i = 0; i < count; ++i)
+                               target[fromFileAxes(first + i)] = values[i];
                            return;
                        }
                        std::int64_t voxel = 0;
@@ -227,9 +248,11 @@ AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& 
         readValues(in, path, layout, progress,
                    [&](std::int64_t first, const float* values, std::int64_t count) {
                        if (order == RawOrder::XFastest) {
-                           for (std::int64_t i = 0; i < count; i += 3)
-                               target[(first + i) / 3] =
+                           for (std::int64_t i = 0; i < count; i += 3) {
+                               const std::int64_t voxel = (first + i) / 3;
+                               target[inGridOrder ? voxel : fromFileAxes(voxel)] =
                                    glm::vec3(values[i], values[i + 1], values[i + 2]);
+                           }
                            return;
                        }
                        std::int64_t voxel = 0;

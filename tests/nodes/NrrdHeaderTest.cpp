@@ -54,6 +54,23 @@ TEST(NrrdHeader, readsSpaceDirectionsOriginAndADataFile) {
     EXPECT_EQ(parsed.dataFile, "vectors.raw");
 }
 
+// Axis-aligned directions in any order and sign: each file axis lands on its world axis, the
+// grid keeps positive spacings, and its voxel (0,0,0) is the sample nearest the low corner.
+TEST(NrrdHeader, readsPermutedAndNegativeDirections) {
+    const NrrdHeader parsed = parse(
+        header("space directions: (0,-2,0) (0.5,0,0) (0,0,-1)\nspace origin: (1,2,3)\n"));
+    EXPECT_EQ(parsed.gridAxis, glm::ivec3(1, 0, 2));
+    EXPECT_EQ(parsed.reversed, glm::bvec3(true, false, true));
+    EXPECT_EQ(parsed.layout.dims, glm::i64vec3(3, 4, 2));
+    EXPECT_EQ(parsed.layout.spacing, glm::dvec3(0.5, 2.0, 1.0));
+    EXPECT_EQ(parsed.layout.origin, glm::dvec3(1.0, 2.0 - 3 * 2.0, 3.0 - 1.0));
+    // A 2-D image in the y-z plane: its missing third axis becomes x.
+    const NrrdHeader plane = parse("NRRD0004\ntype: uchar\ndimension: 2\nsizes: 5 7\n"
+                                   "encoding: raw\nspace directions: (0,1,0) (0,0,1)\n\n");
+    EXPECT_EQ(plane.gridAxis, glm::ivec3(1, 2, 0));
+    EXPECT_EQ(plane.layout.dims, glm::i64vec3(1, 5, 7));
+}
+
 TEST(NrrdHeader, namesWhatIsWrongAndWhere) {
     const auto errorOfHeader = [](const std::string& text) {
         try {
@@ -86,13 +103,13 @@ TEST(NrrdHeader, namesWhatIsWrongAndWhere) {
     EXPECT_EQ(errorOfHeader(header().replace(header().find("gzip"), 4, "bzip2")),
               "h.nrrd:7:11: encoding 'bzip2' is not supported; texsplat reads raw and gzip "
               "(convert with: unu save -f nrrd -e gzip -i IN -o OUT.nrrd)");
-    EXPECT_EQ(errorOfHeader(header("space directions: (1,0,0) (0,-1,0) (0,0,1)\n")),
-              "h.nrrd:8:1: the direction of axis 1 is (0,-1,0); mirrored axes (negative "
-              "directions) are not supported");
-    EXPECT_EQ(errorOfHeader(header("space directions: (1,0,0) (0,0,1) (0,1,0)\n")),
-              "h.nrrd:8:1: the direction of axis 1 is (0,0,1), not along world axis y; oblique, "
-              "rotated or permuted grids are not supported (resample the volume onto an "
+    EXPECT_EQ(errorOfHeader(header("space directions: (1,0,0) (0,0.6,0.8) (0,0,1)\n")),
+              "h.nrrd:8:1: the direction of axis 1 is (0,0.6,0.8), not along one world axis; "
+              "oblique or rotated grids are not supported (resample the volume onto an "
               "axis-aligned grid)");
+    EXPECT_EQ(errorOfHeader(header("space directions: (1,0,0) (0,0,1) (0,0,-2)\n")),
+              "h.nrrd:8:1: two axes lie along world axis z (the direction of axis 2 is "
+              "(0,0,-2))");
     EXPECT_EQ(errorOfHeader(header("spacings: 1 1 1\nspace directions: (1,0,0) (0,1,0) "
                                    "(0,0,1)\n")),
               "h.nrrd:8:1: a header gives either 'spacings' or 'space directions', not both");
