@@ -15,6 +15,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <cstdint>
+#include <iomanip>
 #include <limits>
 #include <mutex>
 #include <sstream>
@@ -237,8 +238,56 @@ glm::vec4 RayCastAction::tracePixel(int x, int y, Scratch& scratch) const {
                                 1.0f));
 }
 
+double RayCastAction::estimatedSamples(float stepVoxels) const {
+    if (!mHasCamera || mMedia.empty()) {
+        return 0.0;
+    }
+    const int columns = std::min(mWidth, 32);
+    const int rows = std::min(mHeight, 32);
+    std::vector<RayCastMedium::Interval> intervals;
+    double samples = 0.0;
+    for (int row = 0; row < rows; ++row) {
+        for (int column = 0; column < columns; ++column) {
+            float tMin = 0.0f;
+            float tMax = 0.0f;
+            const RayCastRay ray = pixelRay(column * mWidth / columns, row * mHeight / rows,
+                                            tMin, tMax);
+            if (!(tMax > tMin)) {
+                continue;
+            }
+            intervals.clear();
+            for (const auto& medium : mMedia) {
+                medium->intervals(ray, tMin, tMax, stepVoxels, intervals);
+            }
+            // As tracePixel() counts a piece's steps, at most one per float spacing of t.
+            for (const RayCastMedium::Interval& interval : intervals) {
+                const double a = std::max(interval.t0, tMin);
+                const double b = std::min(interval.t1, tMax);
+                if (!(b > a) || !(interval.step > 0.0f)) {
+                    continue;
+                }
+                const double finest =
+                    std::max(std::abs(a), std::abs(b)) * std::numeric_limits<float>::epsilon();
+                samples += std::min(std::max(1.0, std::floor((b - a) / finest)),
+                                    std::max(1.0, std::ceil((b - a) / interval.step)));
+            }
+        }
+    }
+    return samples / (static_cast<double>(columns) * rows) * mWidth * mHeight;
+}
+
 void RayCastAction::render(Node& root) {
     apply(root);
+    const double samples = estimatedSamples(mStepSize);
+    if (samples > kSamplesToWarn) {
+        std::ostringstream message;
+        message << "RayCastAction: about " << std::setprecision(2) << samples
+                << " samples to integrate (" << mWidth << " x " << mHeight
+                << " pixels at a step of " << mStepSize << " voxels; the default step of "
+                << kDefaultStepSize << " takes about " << estimatedSamples(kDefaultStepSize)
+                << "): this may take hours";
+        log(LogLevel::Warning, message.str());
+    }
     std::fill(mColor.begin(), mColor.end(), 0.0f);
     if (!mHasCamera) {
         for (std::size_t i = 0; i < mColor.size(); i += 4) {

@@ -130,6 +130,16 @@ public:
     /// throw while traversing (e.g. DataError for a missing camera).
     void render(Node& root);
 
+    /// @brief About how many samples integrating the work queued by the last traversal
+    /// (apply()) takes at a step of `stepVoxels`: the mean over the rays of at most 32 x 32
+    /// pixels spread over the image, times the pixel count. Surfaces and overlaps are not
+    /// subtracted, so it errs high. render() logs a warning with it above kSamplesToWarn.
+    double estimatedSamples(float stepVoxels) const;
+
+    /// @brief Samples above which render() warns before it integrates (about a minute's work
+    /// and more: the default step on a 128³ volume at 512² takes about 10⁸).
+    static constexpr double kSamplesToWarn = 1e10;
+
     /// @brief Premultiplied float RGBA of the last render, width*height*4, top row first.
     std::vector<float> readColor() const;
 

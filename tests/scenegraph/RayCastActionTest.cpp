@@ -299,6 +299,23 @@ TEST(RayCastAction, lengthensStepsBelowTheFloatResolutionWithOneWarningPerRender
     EXPECT_NEAR(pixel.a, 1.0 - std::exp(-1.0), 1e-6);
 }
 
+// `--raycast-step 1e-7` on a 16^3 volume ran for hours without a word; render() now warns with
+// this estimate above RayCastAction::kSamplesToWarn before integrating.
+TEST(RayCastAction, estimatesTheSamplesOfARenderBeforeIntegrating) {
+    WorkNode::Ptr node = WorkNode::create();
+    node->media.push_back(constantSlab(1.0, glm::vec3(1.0f), 1.0f));
+    RayCastAction action(64, 48);
+    EXPECT_EQ(action.estimatedSamples(0.25f), 0.0); // nothing queued yet
+    action.apply(*node);
+    // Every ray crosses the unit slab: 4 steps of 0.25 (5 when rounding of t lengthens it).
+    EXPECT_GE(action.estimatedSamples(0.25f), 64.0 * 48 * 4);
+    EXPECT_LE(action.estimatedSamples(0.25f), 64.0 * 48 * 5);
+    // Below the float resolution of t a step counts as the float spacing, as when integrating:
+    // 8.8e5 a ray at t = 9.5.
+    EXPECT_GT(action.estimatedSamples(1e-9f), 64.0 * 48 * 800000);
+    EXPECT_LT(action.estimatedSamples(1e-9f), 64.0 * 48 * 900000);
+}
+
 TEST(RayCastAction, imagesDoNotDependOnTheThreadCount) {
     auto slab = std::make_shared<SlabMedium>();
     slab->medium = [](double s) {
