@@ -1,7 +1,6 @@
 #include "nodes/volume/NetCdfVolume.h"
 
 #include "nodes/volume/DenseGrid.h"
-#include "nodes/volume/detail/Format.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"

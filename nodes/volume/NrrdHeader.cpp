@@ -215,6 +215,8 @@ void readField(const std::string& field, NrrdValueScanner& value, const NrrdLine
         const std::string name = value.words();
         if (name.empty())
             value.fail(at, "'data file' names no file");
+        if (!detail::isText(name)) // it is printed in messages and by `texsplat info`
+            value.fail(at, "'data file' is not printable text: '" + printable(name) + "'");
         if (name.rfind("LIST", 0) == 0 ||
             (name.find('%') != std::string::npos && name.find(' ') != std::string::npos))
             throw DataError(reader.where(at) + "several data files are not supported; join "

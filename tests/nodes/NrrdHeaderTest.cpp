@@ -123,6 +123,8 @@ TEST(NrrdHeader, namesWhatIsWrongAndWhere) {
                             "endian: little\nencoding: raw\n"),
               "h.nrrd:7:1: the header ends without the blank line before its data and names no "
               "'data file'");
+    EXPECT_EQ(errorOfHeader(header("data file: \x1b[2Jdata.raw\n")),
+              "h.nrrd:8:12: 'data file' is not printable text: '\\x1b[2Jdata.raw'");
     EXPECT_EQ(errorOfHeader(header("data file: LIST\n")),
               "h.nrrd:8:12: several data files are not supported; join them into one (unu join)");
     EXPECT_EQ(errorOfHeader(header("byte skip: -1\n")),
