@@ -583,8 +583,9 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "none) without editing the scene")
         ->type_name("N");
     command->add_option("--error-threshold", arguments->budget.errorThreshold,
-                        "Set every splat node's errorThreshold (the octree cut's error; 0: full "
-                        "resolution) without editing the scene")
+                        "Set every splat node's errorThreshold without editing the scene: the "
+                        "largest deviation a splat may carry, as a fraction of the largest "
+                        "classified colour or extinction (0: full resolution; 1: one splat)")
         ->type_name("E");
     command->add_option("--background", arguments->background,
                         "black|white|transparent|r,g,b: what the scene is composited over, the "

@@ -13,6 +13,7 @@
 #include "nodes/render/SplatView.h"
 #include "nodes/render/detail/ClassificationCache.h"
 #include "octree/Cut.h"
+#include "octree/DepthSort.h"
 #include "octree/Refiner.h"
 #include "octree/Splat.h"
 #include "octree/SplatEmission.h"
@@ -150,7 +151,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
             return;
         }
         octree::Cut cut = errorThreshold.value() > 0.0f
-                              ? octree::Cut::byError(mCache->octree(), errorThreshold.value())
+                              ? octree::Cut::byRelativeError(mCache->octree(),
+                                                             errorThreshold.value())
                               : octree::Cut(mCache->octree());
         if (maxSplats.value() > 0) {
             octree::Refiner refiner(std::move(cut), order);
@@ -160,6 +162,10 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
             cut = refiner.cut();
         }
         octree::emitSplats(cut, order, *splats, emission);
+        // The traversal keeps subtrees contiguous: where the eye lies on a split plane the two
+        // sides' splats overlap on screen at every depth, and drawing one side wholly before the
+        // other leaves a bright seam down the plane. Centre depth interleaves them.
+        octree::sortByDepth(*splats, order);
     };
     timed(statistics, sg::RenderPhase::Order, [&] {
         detail::withNodeContext(*this, [&] {

@@ -51,12 +51,20 @@ namespace texsplat::nodes {
 ///   front per voxel cell, no sort), culled behind the eye for a perspective camera.
 /// - `maxSplats` > 0: the octree cut the Laur–Hanrahan refiner reaches within that many splats,
 ///   starting from the `errorThreshold` cut (the root when 0); `errorThreshold` > 0 alone: the
-///   threshold cut. Cuts are drawn in the octree's back-to-front traversal order.
+///   threshold cut. Cuts are drawn in centre-depth order (octree::sortByDepth(), Westover's
+///   order that Crawfis & Max used): the traversal's subtree order would draw the two sides of a
+///   split plane that the eye lies on one after the other, and their overlapping kernels would
+///   leave a seam down the plane.
+/// - `errorThreshold` is relative: a fraction of the largest colour or extinction of any
+///   classified voxel (octree::Octree::valueScale()). A node is splatted when no voxel it stands
+///   for deviates from its mean by more than that fraction, in any channel; so the same
+///   threshold gives the same cut whatever the transfer function's opacity scale. 0: full
+///   resolution; 1 or more: one splat.
 ///
 /// File format (fields common to the splat nodes):
 /// @code
 /// size            1.6   # the splat's extent: its quad reaches this many voxels from the centre
-/// errorThreshold  0     # octree cut by error (0: full resolution)
+/// errorThreshold  0     # octree cut by error relative to the largest value (0: full resolution)
 /// maxSplats       0     # octree cut by splat budget (0: no budget)
 /// @endcode
 class ScalarSplat : public sg::Declare<ScalarSplat, sg::Node> {
@@ -65,7 +73,8 @@ public:
     static constexpr const char* kTypeName = "ScalarSplat";
 
     sg::SFFloat size;           ///< extent of the splat in voxels (paper: 1.6), > 0
-    sg::SFFloat errorThreshold; ///< octree cut: largest error a splat may carry, >= 0
+    sg::SFFloat errorThreshold; ///< octree cut: largest error a splat may carry, as a fraction
+                                ///< of the largest classified value, >= 0
     sg::SFInt32 maxSplats;      ///< octree cut: splat budget, >= 0 (0: none)
 
     ~ScalarSplat() override;
