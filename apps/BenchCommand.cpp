@@ -17,8 +17,10 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <sstream>
 #include <string>
@@ -42,6 +44,12 @@ struct BenchArguments {
     std::string csv;
     std::string plot;
     std::string memoryLimit;
+    std::string scene; // "" for the built-in datasets
+    bool datasetGiven = false;
+    bool methodGiven = false;
+    bool backendGiven = false;
+    std::string budgets = "1,0.5,0.2,0.1,0.05,0.02";
+    Framing framing;
 };
 
 std::vector<glm::ivec2> parseSizes(const std::string& text) {
@@ -93,6 +101,26 @@ std::vector<std::string> splitList(const std::string& text) {
     return items;
 }
 
+std::vector<double> parseBudgets(const std::string& text) {
+    const std::string message =
+        "--budgets: expected fractions in (0, 1], e.g. 1,0.1,0.01, got '" + text + "'";
+    std::vector<double> budgets;
+    for (const std::string& item : splitList(text)) {
+        double value = 0.0;
+        const char* end = item.data() + item.size();
+        const auto [parsed, error] = std::from_chars(item.data(), end, value);
+        if (item.empty() || error != std::errc() || parsed != end || !(value > 0.0) ||
+            value > 1.0) {
+            throw DataError(message);
+        }
+        budgets.push_back(value);
+    }
+    if (budgets.empty()) {
+        throw DataError(message);
+    }
+    return budgets;
+}
+
 // The devices of the run, for the header line and the plot: the GL context, the CPU backend.
 std::string deviceSummary(const bench::BenchOptions& options,
                           [[maybe_unused]] const gl::EglContext* context) {
@@ -110,14 +138,34 @@ std::string deviceSummary(const bench::BenchOptions& options,
     return text;
 }
 
+// The user's scene with its own camera, or one framing it as `render` does (for the first size).
+sg::Node::Ptr sceneToMeasure(const BenchArguments& arguments) {
+    const glm::ivec2 size = parseSizes(arguments.sizes).front();
+    Framing framing = arguments.framing;
+    framing.sceneName = arguments.scene;
+    return withCamera(loadScene(arguments.scene), framing,
+                      static_cast<float>(size.x) / static_cast<float>(size.y));
+}
+
 void runBench(const BenchArguments& arguments) {
     applyMemoryLimit(arguments.memoryLimit);
+    const bool isScene = !arguments.scene.empty();
     bench::BenchOptions options;
-    options.datasets =
-        withOption("--dataset", [&] { return bench::BenchDataset::parseList(arguments.datasets); });
+    std::vector<double> budgets;
+    if (isScene) {
+        if (arguments.datasetGiven || arguments.methodGiven) {
+            throw DataError("--dataset/--method: a SCENE is measured with its own volumes and "
+                            "splat nodes, at --budgets");
+        }
+        budgets = parseBudgets(arguments.budgets);
+        checkSceneOptions(arguments.framing, BudgetOverride{});
+    } else {
+        options.datasets = withOption(
+            "--dataset", [&] { return bench::BenchDataset::parseList(arguments.datasets); });
+        options.methods =
+            withOption("--method", [&] { return bench::BenchMethod::parseList(arguments.methods); });
+    }
     options.sizes = parseSizes(arguments.sizes);
-    options.methods =
-        withOption("--method", [&] { return bench::BenchMethod::parseList(arguments.methods); });
     for (const bench::BenchMethod& method : options.methods) {
         for (const bench::BenchDataset& dataset : options.datasets) {
             if (method.needsVectors() && dataset.source() != bench::BenchDataset::Source::Tornado) {
@@ -137,7 +185,9 @@ void runBench(const BenchArguments& arguments) {
     // Each backend asked for once, in the order given; auto resolves as `render` does.
     std::shared_ptr<gl::EglContext> context;
     options.backends.clear();
-    for (const std::string& name : splitList(arguments.backends)) {
+    // A scene is measured on the CPU: unless asked otherwise, not on the GL device auto finds.
+    const std::string backends = isScene && !arguments.backendGiven ? "cpu" : arguments.backends;
+    for (const std::string& name : splitList(backends)) {
         render::BackendChoice choice =
             render::BackendChoice::resolve(render::parseBackendRequest(name));
         if (std::find(options.backends.begin(), options.backends.end(), choice.backend) !=
@@ -159,7 +209,11 @@ void runBench(const BenchArguments& arguments) {
     runner.setProgress([progress](const std::string& stage, double fraction) {
         (*progress)(stage, fraction);
     });
-    const std::vector<bench::BenchResult> results = runner.run();
+    const std::vector<bench::BenchResult> results =
+        isScene ? runner.runScene(*sceneToMeasure(arguments),
+                                  std::filesystem::path(arguments.scene).filename().string(),
+                                  budgets)
+                : runner.run();
 
     const unsigned cores = std::thread::hardware_concurrency();
     std::printf("texsplat bench: %s, %u CPU threads; median of %d frames after %d warm-up\n",
@@ -187,7 +241,8 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     auto arguments = std::make_shared<BenchArguments>();
     CLI::App* command = app.add_subcommand(
         "bench", "Time texture splats, textured and polygonal Gaussians against the GL device's "
-                 "fill-rate ceiling and their error against the ray-cast reference");
+                 "fill-rate ceiling and their error against the ray-cast reference; or a "
+                 "SCENE's own splat nodes at a range of octree budgets");
     command
         ->add_option("--dataset", arguments->datasets,
                      "Comma-separated datasets: ml<N>, tornado<N>, blob<N> (N samples per axis), "
@@ -221,7 +276,21 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
     command->add_option("--plot", arguments->plot,
                         "Also write a plot of error against frame time (SVG) to this file");
     addMemoryLimitOption(*command, arguments->memoryLimit);
-    command->callback([arguments, &exitCode] {
+    command->add_option("scene", arguments->scene,
+                        "A scene file (.iv) to measure instead of the datasets: its splat nodes "
+                        "at each of --budgets, error against its full-resolution image and the "
+                        "ray-cast reference (its camera, or one framing it as render does)")
+        ->type_name("SCENE");
+    command
+        ->add_option("--budgets", arguments->budgets,
+                     "With a SCENE: comma-separated fractions in (0, 1] of each splat node's "
+                     "full-resolution splats, set as its maxSplats (1: full resolution)")
+        ->capture_default_str();
+    addViewOptions(*command, arguments->framing);
+    command->callback([arguments, command, &exitCode] {
+        arguments->datasetGiven = command->count("--dataset") > 0;
+        arguments->methodGiven = command->count("--method") > 0;
+        arguments->backendGiven = command->count("--backend") > 0;
         runBench(*arguments);
         exitCode = kExitOk;
     });

@@ -8,18 +8,22 @@
 #include "nodes/VolumeData.h"
 #include "nodes/image/Image.h"
 #include "nodes/image/ImageComparison.h"
+#include "nodes/render/Frame.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/SplatView.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/Cut.h"
+#include "octree/DepthSort.h"
 #include "octree/Octree.h"
 #include "octree/Refiner.h"
 #include "octree/Splat.h"
 #include "octree/SplatEmission.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "scenegraph/actions/Path.h"
 #include "scenegraph/actions/RayCastAction.h"
+#include "scenegraph/actions/SearchAction.h"
 
 #ifdef TEXSPLAT_WITH_GL
 #include "nodes/bench/FillRateCeiling.h"
@@ -31,6 +35,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <climits>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <optional>
@@ -94,13 +101,83 @@ void emitFor(SplatSource& source, std::size_t maxSplats, octree::SplatList& spla
     budget.maxSplats = maxSplats;
     refiner.refine(budget);
     octree::emitSplats(refiner.cut(), order, splats);
+    octree::sortByDepth(splats, order); // as ScalarSplat draws a cut
 }
+
+std::string budgetText(double budget) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", budget);
+    return text;
+}
+
+// The splat nodes of a user's scene and what each traversal of them draws at full resolution,
+// so that a budget can be set as a fraction of it.
+class SceneSplatNodes {
+public:
+    SceneSplatNodes(sg::Node& root, const std::string& name) : mRoot(root) {
+        sg::SearchAction search;
+        search.setType(nodes::ScalarSplat::classType());
+        search.setInterest(sg::SearchAction::Interest::All);
+        search.apply(root);
+        for (const sg::Path& path : search.paths()) {
+            mNodes.push_back(&static_cast<nodes::ScalarSplat&>(*path.tail()));
+        }
+        if (mNodes.empty()) {
+            throw DataError("bench: " + name + " has no splat node (TextureSplat, GaussianSplat, "
+                            "VectorSplat, CombinedSplat) to measure");
+        }
+    }
+
+    // One frame at full resolution: the splats of each traversal of a splat node.
+    void countFullResolution(const glm::ivec2& size) {
+        setBudget(1.0);
+        render::FrameAction action(size.x, size.y);
+        const render::Frame& frame = action.collect(mRoot);
+        mFullSplats.clear();
+        for (const render::FrameSplats& splats : frame.splats) {
+            mFullSplats.push_back(splats.splats->size());
+        }
+    }
+
+    // Every node's maxSplats at `fraction` of what it draws at full resolution (1: no budget).
+    // The frame lists the traversals in the order the search found them; where they differ (a
+    // node under a Switch that is off) each node gets the fraction of the frame's mean.
+    void setBudget(double fraction) {
+        std::size_t total = 0;
+        for (const std::size_t splats : mFullSplats) {
+            total += splats;
+        }
+        const bool matched = mFullSplats.size() == mNodes.size();
+        for (nodes::ScalarSplat* node : mNodes) {
+            node->errorThreshold.setValue(0.0f);
+            node->maxSplats.setValue(0);
+        }
+        if (fraction >= 1.0) {
+            return;
+        }
+        for (std::size_t i = 0; i < mNodes.size(); ++i) {
+            const double full = matched ? static_cast<double>(mFullSplats[i])
+                                        : static_cast<double>(total) /
+                                              static_cast<double>(std::max<std::size_t>(
+                                                  mFullSplats.size(), 1));
+            const int budget = static_cast<int>(
+                std::clamp(std::round(fraction * full), 1.0, static_cast<double>(INT_MAX)));
+            // A node used twice (DEF/USE) keeps the larger of its traversals' budgets.
+            mNodes[i]->maxSplats.setValue(std::max(mNodes[i]->maxSplats.value(), budget));
+        }
+    }
+
+private:
+    sg::Node& mRoot;
+    std::vector<nodes::ScalarSplat*> mNodes; // per traversal, in traversal order
+    std::vector<std::size_t> mFullSplats;    // per traversal, at full resolution
+};
 
 } // namespace
 
 BenchRunner::BenchRunner(BenchOptions options) : mOptions(std::move(options)) {
-    if (mOptions.datasets.empty() || mOptions.sizes.empty() || mOptions.methods.empty()) {
-        throw DataError("bench: needs at least one dataset, size and method");
+    if (mOptions.sizes.empty()) {
+        throw DataError("bench: needs at least one image size");
     }
     if (mOptions.warmup < 1 || mOptions.repeat < 1) {
         throw DataError("bench: warm-up and repeat must be at least 1, got " +
@@ -116,6 +193,9 @@ void BenchRunner::report(const std::string& stage, double fractionDone) const {
 }
 
 std::vector<BenchResult> BenchRunner::run() {
+    if (mOptions.datasets.empty() || mOptions.methods.empty()) {
+        throw DataError("bench: needs at least one dataset, size and method");
+    }
     const bool withGl = std::find(mOptions.backends.begin(), mOptions.backends.end(),
                                   render::Backend::Gl) != mOptions.backends.end();
 #ifdef TEXSPLAT_WITH_GL
@@ -157,18 +237,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
     emitFor(source, 0, fullList);
     report(where + ": load and classify", 1.0);
 
-    std::optional<image::Image> reference;
-    if (mOptions.reference) {
-        const std::string stage = where + ": reference (RayCastAction)";
-        sg::RayCastAction rayCast(size.x, size.y);
-        rayCast.setThreadCount(mOptions.threads);
-        rayCast.setProgress([&](double fraction) {
-            report(stage, fraction);
-            return true;
-        });
-        rayCast.render(*root);
-        reference = imageFromRgba(rayCast.readColor(), size);
-    }
+    const std::optional<image::Image> reference = referenceImage(*root, size, where);
 
 #ifdef TEXSPLAT_WITH_GL
     const bool withGl = std::find(mOptions.backends.begin(), mOptions.backends.end(),
@@ -224,6 +293,67 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
         }
     }
     compareWithinRun(images, results, first);
+}
+
+std::optional<image::Image> BenchRunner::referenceImage(sg::Node& root, const glm::ivec2& size,
+                                                        const std::string& where) const {
+    if (!mOptions.reference) {
+        return std::nullopt;
+    }
+    const std::string stage = where + ": reference (RayCastAction)";
+    sg::RayCastAction rayCast(size.x, size.y);
+    rayCast.setThreadCount(mOptions.threads);
+    rayCast.setProgress([&](double fraction) {
+        report(stage, fraction);
+        return true;
+    });
+    rayCast.render(root);
+    return imageFromRgba(rayCast.readColor(), size);
+}
+
+std::vector<BenchResult> BenchRunner::runScene(sg::Node& root, const std::string& name,
+                                               const std::vector<double>& budgets) {
+    if (std::find(mOptions.backends.begin(), mOptions.backends.end(), render::Backend::Gl) !=
+        mOptions.backends.end()) {
+        throw Error("bench: a scene is measured on the CPU backend only (--backend cpu)");
+    }
+    for (const double budget : budgets) {
+        if (!(budget > 0.0 && budget <= 1.0)) {
+            throw DataError("bench: a budget is a fraction of the full-resolution splats in "
+                            "(0, 1], got " + budgetText(budget));
+        }
+    }
+    nodes::registerNodeTypes();
+    SceneSplatNodes nodes(root, name);
+    std::vector<BenchResult> results;
+    for (const glm::ivec2& size : mOptions.sizes) {
+        const std::string where = name + " " + sizeText(size);
+        report(where + ": load and classify", 0.0);
+        nodes.countFullResolution(size);
+        report(where + ": load and classify", 1.0);
+        const std::optional<image::Image> reference = referenceImage(root, size, where);
+        std::vector<image::Image> images;
+        const std::size_t first = results.size();
+        for (const double budget : budgets) {
+            nodes.setBudget(budget);
+            BenchResult result;
+            result.dataset = name;
+            result.width = size.x;
+            result.height = size.y;
+            result.method = budget < 1.0 ? "scene@" + budgetText(budget) : "scene";
+            result.backend = backendName(render::Backend::Cpu);
+            result.isFullQuality = budget >= 1.0;
+            const std::string stage = where + ": " + result.method;
+            images.push_back(measureCpu(root, size, stage, result));
+            report(stage, 1.0);
+            if (reference) {
+                compare(*reference, images.back(), result.referenceRmse, result.referencePsnr);
+            }
+            results.push_back(std::move(result));
+        }
+        compareWithinRun(images, results, first);
+    }
+    return results;
 }
 
 #ifdef TEXSPLAT_WITH_GL

@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,18 @@ public:
     /// @brief Sets the progress callback.
     void setProgress(Progress progress) { mProgress = std::move(progress); }
 
+    /// @brief Measures a user's scene (`texsplat bench SCENE.iv`) instead of the datasets and
+    /// methods: for every image size, the ray-cast reference once (when `reference`), then the
+    /// scene at each of @p budgets, on the CPU backend. A budget is a fraction in (0, 1] of the
+    /// splats each splat node draws at full resolution, set as its `maxSplats` (1: full
+    /// resolution, the full-quality row every other is compared with); the nodes' error
+    /// thresholds are set to 0, so the budget alone chooses the cut. Results are named
+    /// `scene` and `scene@FRACTION`, in the order size, budget; the dataset is @p name.
+    /// @throws DataError for a budget outside (0, 1] or a scene without splat nodes; Error when
+    /// the backends include GL (not measured for scenes yet).
+    std::vector<BenchResult> runScene(sg::Node& root, const std::string& name,
+                                      const std::vector<double>& budgets);
+
     /// @brief Measures everything; results are in the order dataset, size, method.
     /// @throws GlError when no context is current or GL fails; what loading or rendering
     /// throws (DataError, sg::RenderCancelled never: the progress callback cannot cancel).
@@ -65,6 +78,8 @@ private:
     void runOne(const BenchDataset& dataset, const glm::ivec2& size,
                 std::vector<BenchResult>& results);
     void report(const std::string& stage, double fractionDone) const;
+    std::optional<image::Image> referenceImage(sg::Node& root, const glm::ivec2& size,
+                                               const std::string& where) const;
 #ifdef TEXSPLAT_WITH_GL
     image::Image measureGl(sg::Node& root, const glm::ivec2& size, FillRateCeiling& ceiling,
                            const render::SplatView& view, float extent,

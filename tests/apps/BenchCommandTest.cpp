@@ -195,4 +195,59 @@ TEST_F(BenchCommandTest, plotMustBeSvgAndIsCheckedBeforeTheRun) {
     EXPECT_FALSE(fs::exists(path("bench.png")));
 }
 
+// A user's scene: a small tornado without a camera, so bench frames it as render does.
+std::string writeSmallScene(const std::string& file) {
+    std::ofstream(file) << "#Inventor V2.1 ascii\n"
+                           "Separator {\n"
+                           "    TransferFunction { preset BROWNS range 0 0.32 opacityValues [ 0, "
+                           "0.35, 1 ] opacities [ 0, 0, 20 ] }\n"
+                           "    VolumeData { source TORNADO resolution 16 16 16 }\n"
+                           "    TextureSplat { }\n"
+                           "}\n";
+    return file;
+}
+
+TEST_F(BenchCommandTest, measuresAScenesOwnSplatNodesAtEachBudget) {
+    const std::string scene = writeSmallScene(path("small.iv"));
+    const auto output = runTexsplat("bench " + scene + " --size 32x32 --repeat 1 --budgets "
+                                    "1,0.5,0.1 --csv " + path("bench.csv"));
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find("texsplat bench: CPU ("), std::string::npos)
+        << output.standardOutput;
+    const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
+    ASSERT_EQ(lines.size(), 4u) << read(path("bench.csv"));
+    std::vector<std::vector<std::string>> rows;
+    for (std::size_t row = 1; row < lines.size(); ++row) {
+        rows.push_back(split(lines[row], ','));
+        ASSERT_EQ(rows.back().size(), 25u) << lines[row];
+        EXPECT_EQ(rows.back()[0], "small.iv");
+        EXPECT_EQ(rows.back()[23], "cpu") << "a scene is measured on the CPU backend";
+        EXPECT_GT(std::stod(rows.back()[19]), 0.0) << "error against the ray-cast reference";
+    }
+    EXPECT_EQ(rows[0][3], "scene");
+    EXPECT_EQ(rows[1][3], "scene@0.5");
+    EXPECT_EQ(rows[2][3], "scene@0.1");
+    EXPECT_EQ(rows[0][4], "1") << "full resolution is the full-quality image";
+    EXPECT_EQ(rows[0][21], "inf");
+    const std::size_t full = std::stoul(rows[0][5]);
+    EXPECT_LE(std::stoul(rows[1][5]), (full + 1) / 2);
+    EXPECT_GT(std::stoul(rows[1][5]), std::stoul(rows[2][5]));
+    EXPECT_LE(std::stoul(rows[2][5]), full / 10 + 1);
+    // Fewer splats, more error against the full-resolution image.
+    EXPECT_GT(std::stod(rows[2][20]), std::stod(rows[1][20])) << lines[2] << "\n" << lines[3];
+    EXPECT_GT(std::stod(rows[1][20]), 0.0);
+}
+
+TEST_F(BenchCommandTest, reportsBadSceneOptionsByTheirExactMessage) {
+    const std::string scene = writeSmallScene(path("small.iv"));
+    auto output = runTexsplat("bench " + scene + " --budgets 1,0");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError, "texsplat: error: --budgets: expected fractions in (0, 1], "
+                                    "e.g. 1,0.1,0.01, got '1,0'\n");
+    output = runTexsplat("bench " + scene + " --dataset ml8");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError, "texsplat: error: --dataset/--method: a SCENE is measured "
+                                    "with its own volumes and splat nodes, at --budgets\n");
+}
+
 } // namespace
