@@ -82,7 +82,8 @@ std::shared_ptr<const detail::TransferTable> TransferFunction::buildTable() cons
     table->rangeMax = bounds.y;
     RangeMode mode = rangeMode.as<RangeMode>();
     if (mode == RangeMode::Auto) {
-        mode = range.isDefault() ? RangeMode::Data : RangeMode::Fixed;
+        // A connected range is given too, though its value leaves the default flag alone.
+        mode = range.isDefault() && !range.isConnected() ? RangeMode::Data : RangeMode::Fixed;
     }
     table->rangeMode = static_cast<int>(mode);
     const glm::vec2 percent = percentiles.value();

@@ -85,8 +85,8 @@ struct Classification {
 /// fully transparent (no emission, no extinction). The range comes from `rangeMode`: FIXED uses
 /// `range`; DATA the smallest and largest finite value of the data the splat node draws (for
 /// vectors: of their magnitudes); PERCENTILE the `percentiles` (in percent) of those values;
-/// AUTO, the default, is FIXED when `range` has been written and DATA when it has not, so scenes
-/// that give a range keep it and new ones fit their data. Data of one value v gets
+/// AUTO, the default, is FIXED when `range` has been written (or connected) and DATA when it has
+/// not, so scenes that give a range keep it and new ones fit their data. Data of one value v gets
 /// [v - 0.5, v + 0.5]. Then
 /// - the colour S(t) interpolates `colors` at the positions `colorValues` (in t), piecewise
 ///   linearly, constant beyond the first and last point; when both fields are empty the colour

@@ -55,6 +55,15 @@ TEST(TransferFunctionRange, aWrittenRangeIsKept) {
     EXPECT_EQ(transparentVoxels(*tf, *distance), 51);
 }
 
+TEST(TransferFunctionRange, aConnectedRangeIsKept) {
+    const auto distance = ramp(101, -0.15f, 0.15f);
+    const auto source = TransferFunction::create();
+    source->range = glm::vec2(-1.0f, 1.0f);
+    const auto tf = TransferFunction::create();
+    tf->range.connectFrom(source->range);
+    EXPECT_EQ(tf->dataScale(*distance).range, glm::vec2(-1.0f, 1.0f));
+}
+
 TEST(TransferFunctionRange, modesOverrideWhetherRangeWasWritten) {
     const auto grid = ramp(11, 2.0f, 4.0f);
     const auto tf = TransferFunction::create();
