@@ -48,6 +48,7 @@ struct BenchArguments {
     bool datasetGiven = false;
     bool methodGiven = false;
     bool backendGiven = false;
+    bool budgetsGiven = false;
     std::string budgets = "1,0.5,0.2,0.1,0.05,0.02";
     Framing framing;
 };
@@ -160,6 +161,12 @@ void runBench(const BenchArguments& arguments) {
         budgets = parseBudgets(arguments.budgets);
         checkSceneOptions(arguments.framing, BudgetOverride{});
     } else {
+        const Framing& framing = arguments.framing;
+        if (arguments.budgetsGiven || !framing.direction.empty() || !framing.azimuth.empty() ||
+            !framing.elevation.empty() || !framing.zoom.empty()) {
+            throw DataError("--budgets/--direction/--azimuth/--elevation/--zoom: only with a "
+                            "SCENE (the datasets have their own views; --method sets budgets)");
+        }
         options.datasets = withOption(
             "--dataset", [&] { return bench::BenchDataset::parseList(arguments.datasets); });
         options.methods =
@@ -291,6 +298,7 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
         arguments->datasetGiven = command->count("--dataset") > 0;
         arguments->methodGiven = command->count("--method") > 0;
         arguments->backendGiven = command->count("--backend") > 0;
+        arguments->budgetsGiven = command->count("--budgets") > 0;
         runBench(*arguments);
         exitCode = kExitOk;
     });

@@ -248,6 +248,11 @@ TEST_F(BenchCommandTest, reportsBadSceneOptionsByTheirExactMessage) {
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError, "texsplat: error: --dataset/--method: a SCENE is measured "
                                     "with its own volumes and splat nodes, at --budgets\n");
+    output = runTexsplat("bench --dataset ml8 --budgets 0.5");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError,
+              "texsplat: error: --budgets/--direction/--azimuth/--elevation/--zoom: only with a "
+              "SCENE (the datasets have their own views; --method sets budgets)\n");
 }
 
 } // namespace
