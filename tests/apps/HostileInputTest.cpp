@@ -46,6 +46,12 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
                         "splats 21 MiB; use a volume of lower resolution, a splat budget "
                         "(maxSplats, or --max-splats) to bound the splats, or a larger "
                         "--memory-limit");
+    // The volume readers ask the same limit before they allocate the grid.
+    expectError(scene + " --memory-limit 512K",
+                scene + ":4:1: VolumeData: " + path("zero.raw") + ": a grid of 64 x 64 x 64 "
+                        "voxels x 1 float would need 1048576 bytes (1 MiB), more than the memory "
+                        "limit of 524288 bytes (512 KiB); use a volume of lower resolution, or a "
+                        "larger --memory-limit");
     // The ray-cast reference classifies too, but makes no splats.
     expectError(scene + " --raycast --memory-limit 2M",
                 scene + ":5:1: TextureSplat: classifying 64x64x64 voxels for the ray-cast "

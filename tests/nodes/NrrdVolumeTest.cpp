@@ -9,6 +9,7 @@
 #include "nodes/volume/VolumeFileInfo.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestFifo.h"
 
@@ -268,11 +269,12 @@ TEST(NrrdVolume, refusesAGzipBombBeforeAllocatingForIt) {
                                        "sizes: 100000 100000 100000\nendian: little\n"
                                        "encoding: gzip\n\n");
     const std::uint64_t bytes = std::uint64_t{100000} * 100000 * 100000 * sizeof(float);
-    ASSERT_GT(bytes, detail::physicalMemoryBytes()) << "this machine could hold the grid";
-    EXPECT_EQ(errorOf<DataError>([&] { readNrrdVolume(path); }),
+    ASSERT_GT(bytes, memoryLimit()) << "this machine could hold the grid";
+    EXPECT_EQ(errorOf<ResourceError>([&] { readNrrdVolume(path); }),
               path + ": a grid of 100000 x 100000 x 100000 voxels x 1 float would need " +
-                  detail::bytesText(bytes) + ", more than this machine's memory (" +
-                  detail::bytesText(detail::physicalMemoryBytes()) + ")");
+                  bytesText(bytes) + ", more than the memory limit of " +
+                  bytesText(memoryLimit()) +
+                  "; use a volume of lower resolution, or a larger --memory-limit");
 }
 
 TEST(NrrdVolume, aFileThatIsNotNrrdGetsTheFormatNamed) {

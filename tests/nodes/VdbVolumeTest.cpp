@@ -3,6 +3,7 @@
 #include "nodes/volume/SparseGrid.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "scenegraph/MemoryLimit.h"
 #include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
@@ -231,11 +232,12 @@ TEST(VdbVolume, refusesATileTooLargeForMemoryBeforeCopyingIt) {
     ASSERT_LT(std::filesystem::file_size(path), 1000u);
     const std::uint64_t voxels = std::uint64_t{1} << 36;
     const std::uint64_t bytes = SparseGrid<float>::memoryBytesForBlocks(voxels / 512);
-    ASSERT_GT(bytes, detail::physicalMemoryBytes()) << "this machine could copy the tile";
-    EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "density"); }),
+    ASSERT_GT(bytes, memoryLimit()) << "this machine could copy the tile";
+    EXPECT_EQ(errorOf<ResourceError>([&] { readVdbGrid(path, "density"); }),
               path + ": grid 'density': copying its 68719476736 active voxels (tiles included) "
-                     "would need " + detail::bytesText(bytes) + ", more than this machine's "
-                     "memory (" + detail::bytesText(detail::physicalMemoryBytes()) + ")");
+                     "would need " + bytesText(bytes) + ", more than the memory limit of " +
+                  bytesText(memoryLimit()) +
+                  "; use a volume of lower resolution, or a larger --memory-limit");
 }
 
 TEST(VdbVolume, wrapsWhatOpenVdbThrowsForATruncatedFileWithTheFileName) {

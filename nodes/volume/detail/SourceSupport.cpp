@@ -3,11 +3,9 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/InputFile.h"
 #include "scenegraph/Log.h"
-
-#include <unistd.h>
+#include "scenegraph/MemoryLimit.h"
 
 #include <cerrno>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -36,23 +34,8 @@ std::int64_t fileSize(const std::string& path) {
     return static_cast<std::int64_t>(bytes);
 }
 
-std::uint64_t physicalMemoryBytes() {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long pageBytes = sysconf(_SC_PAGE_SIZE);
-    return pages > 0 && pageBytes > 0 ? std::uint64_t(pages) * std::uint64_t(pageBytes) : 0;
-}
-
-std::string bytesText(std::uint64_t bytes) {
-    char gibibytes[32];
-    std::snprintf(gibibytes, sizeof gibibytes, "%.3g GiB", double(bytes) / double(1ull << 30));
-    return std::to_string(bytes) + " bytes (" + gibibytes + ")";
-}
-
 void checkFitsInMemory(const std::string& what, std::uint64_t bytes) {
-    const std::uint64_t memory = physicalMemoryBytes();
-    if (memory != 0 && bytes > memory)
-        throw DataError(what + " would need " + bytesText(bytes) +
-                        ", more than this machine's memory (" + bytesText(memory) + ")");
+    checkMemory(what, bytes, "use a volume of lower resolution, or a larger --memory-limit");
 }
 
 void checkGridFitsInMemory(const std::string& source, const GridGeometry& geometry,

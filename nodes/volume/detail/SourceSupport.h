@@ -19,16 +19,11 @@ std::ifstream openForReading(const std::string& path);
 /// @throws IoError "path: cannot read file size (reason)".
 std::int64_t fileSize(const std::string& path);
 
-/// @brief This machine's physical memory in bytes (0 when the system does not say).
-std::uint64_t physicalMemoryBytes();
-
-/// @brief "12884901888 bytes (12 GiB)": a byte count as people read it.
-std::string bytesText(std::uint64_t bytes);
-
-/// @brief Checks a loader's estimate before it allocates: throws DataError "<what> would need
-/// <bytes text>, more than this machine's memory (<bytes text>)" when `bytes` exceeds the
-/// physical memory, so a small file that declares a huge grid fails at once, saying what it
-/// would cost, instead of swapping or dying of std::bad_alloc.
+/// @brief Checks a loader's estimate before it allocates: throws ResourceError "<what> would need
+/// <bytes text>, more than the memory limit of <bytes text>; use …" when `bytes` exceeds
+/// texsplat::memoryLimit() (`--memory-limit`; the physical memory unless set), so a small file
+/// that declares a huge grid fails at once, saying what it would cost, instead of swapping or
+/// dying of std::bad_alloc.
 void checkFitsInMemory(const std::string& what, std::uint64_t bytes);
 
 /// @brief checkFitsInMemory() for the dense grid of `geometry` with `components` floats a voxel,
