@@ -7,10 +7,9 @@
 #include "nodes/PerspectiveCamera.h"
 #include "nodes/ScalarSplat.h"
 #include "nodes/render/CameraView.h"
+#include "nodes/render/SceneFraming.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/NodeRegistry.h"
-#include "scenegraph/Separator.h"
-#include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/engines/EngineTypes.h"
 #include "scenegraph/io/SceneReader.h"
@@ -32,16 +31,6 @@ namespace {
 
 // The default scene is seen from the side, its funnel (the tornado's z axis) upright.
 const glm::vec3 kDefaultSceneDirection(0.0f, 1.0f, -0.25f);
-
-nodes::Camera* findCamera(sg::Node& scene) {
-    sg::SearchAction search;
-    search.setType(nodes::Camera::classType());
-    search.setInterest(sg::SearchAction::Interest::First);
-    search.apply(scene);
-    return search.paths().empty()
-               ? nullptr
-               : static_cast<nodes::Camera*>(search.paths().front().tail().get());
-}
 
 // "a,b,c": three finite numbers separated by commas and nothing else, or nothing.
 std::optional<glm::vec3> parseThreeNumbers(const std::string& text) {
@@ -254,7 +243,7 @@ void addViewOptions(CLI::App& command, Framing& framing) {
 }
 
 sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect) {
-    if (nodes::Camera* camera = findCamera(*scene)) {
+    if (nodes::Camera* camera = render::findCamera(*scene)) {
         if (!framing.camera.empty()) {
             throw DataError("--camera: the scene has its own camera (" + camera->describe() +
                             "); --camera chooses the one that frames a scene without one");
@@ -262,31 +251,21 @@ sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, flo
         adjustCamera(*camera, framing, !framing.direction.empty());
         return scene;
     }
-    nodes::Camera::Ptr camera;
+    render::Framing frame;
     if (framing.camera.empty() || framing.camera == "perspective") {
-        camera = nodes::PerspectiveCamera::create();
+        frame.camera = render::FramingCamera::Perspective;
     } else if (framing.camera == "orthographic") {
-        camera = nodes::OrthographicCamera::create();
+        frame.camera = render::FramingCamera::Orthographic;
     } else {
         throw DataError("--camera: expected 'perspective' or 'orthographic', got '" +
                         framing.camera + "'");
     }
-    const glm::vec3 direction = !framing.direction.empty() ? parseDirection(framing.direction)
-                                : framing.sceneName.empty() ? kDefaultSceneDirection
-                                                            : glm::vec3(0.0f, 0.0f, -1.0f);
-    camera->orientation.setValue(render::rotationLookingAlong(direction));
-    sg::BoundingBoxAction box;
-    box.apply(*scene);
-    if (box.boundingBox().isEmpty()) {
-        throw DataError((framing.sceneName.empty() ? std::string("default scene")
-                                                   : framing.sceneName) +
-                        ": nothing to frame (the scene has no geometry and no camera)");
-    }
-    camera->viewAll(box.boundingBox(), aspect);
-    adjustCamera(*camera, framing, false);
-    sg::Separator::Ptr root = sg::Separator::create();
-    root->addChild(camera);
-    root->addChild(scene);
+    frame.direction = !framing.direction.empty() ? parseDirection(framing.direction)
+                      : framing.sceneName.empty() ? kDefaultSceneDirection
+                                                  : glm::vec3(0.0f, 0.0f, -1.0f);
+    frame.name = framing.sceneName.empty() ? "default scene" : framing.sceneName;
+    sg::Node::Ptr root = render::framedScene(scene, aspect, frame);
+    adjustCamera(*render::findCamera(*root), framing, false);
     return root;
 }
 

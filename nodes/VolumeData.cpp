@@ -20,6 +20,8 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <utility>
+#include <variant>
 
 namespace texsplat::nodes {
 namespace {
@@ -188,6 +190,16 @@ std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
         result->fibers = std::move(field.fibers);
         break;
     }
+    case VolumeSource::Memory: {
+        const bool hasGrid =
+            std::visit([](const auto& grid) { return grid != nullptr; }, mMemoryGrid);
+        if (!hasGrid) {
+            throw DataError("source MEMORY has no grid: a program gives it one with "
+                            "VolumeData::setGrid(); a scene file cannot hold one");
+        }
+        result->grid = mMemoryGrid;
+        break;
+    }
     }
     return result;
 }
@@ -252,6 +264,18 @@ sg::Box3 VolumeData::bounds() const {
         std::visit([](const auto& grid) -> const volume::GridGeometry& { return grid->geometry(); },
                    data->grid);
     return sg::Box3(glm::vec3(geometry.boundsMin()), glm::vec3(geometry.boundsMax()));
+}
+
+void VolumeData::setGrid(volume::AnyGrid grid) {
+    {
+        const std::lock_guard<std::mutex> lock(mMutex);
+        mMemoryGrid = std::move(grid);
+    }
+    if (source.as<VolumeSource>() == VolumeSource::Memory) {
+        touch();
+    } else {
+        source.setValue(VolumeSource::Memory);
+    }
 }
 
 bool VolumeData::isLoaded() const {

@@ -31,6 +31,7 @@ enum class VolumeSource {
     Blob,          ///< a sum of seeded Gaussians (scalar; `resolution`)
     JetStream,     ///< synthetic climate data: wind vectors, scalar "cloudiness" (`time` in days)
     Aerogel,       ///< flow through random fibers (vectors; fibers())
+    Memory,        ///< a grid a program made in memory and gave with setGrid() (no file)
 };
 
 /// @brief Scene-file names of VolumeSource.
@@ -45,7 +46,8 @@ inline const sg::EnumNames kVolumeSourceNames{{"FILE_RAW", VolumeSource::FileRaw
                                               {"MARSCHNER_LOBB", VolumeSource::MarschnerLobb},
                                               {"BLOB", VolumeSource::Blob},
                                               {"JET_STREAM", VolumeSource::JetStream},
-                                              {"AEROGEL", VolumeSource::Aerogel}};
+                                              {"AEROGEL", VolumeSource::Aerogel},
+                                              {"MEMORY", VolumeSource::Memory}};
 
 /// @brief Scene-file names of the value types of FILE_RAW_HEADERLESS (`dataType`).
 inline const sg::EnumNames kVolumeDataTypeNames{{"UINT8", volume::RawValueType::UInt8},
@@ -109,7 +111,8 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 /// @code
 /// VolumeData {
 ///     source      BLOB   # FILE_RAW, FILE_VDB, FILE_RAW_HEADERLESS, FILE_NPY, FILE_NRRD,
-///                        # FILE_NETCDF, TORNADO, MARSCHNER_LOBB, BLOB, JET_STREAM, AEROGEL
+///                        # FILE_NETCDF, TORNADO, MARSCHNER_LOBB, BLOB, JET_STREAM, AEROGEL,
+///                        # MEMORY (setGrid() in C++)
 ///     fileName    ""
 ///     gridName    ""
 ///     resolution  64 64 64
@@ -160,6 +163,14 @@ public:
     /// @throws as scalarGrid().
     sg::Box3 bounds() const;
 
+    /// @brief Draws `grid`, which the program made in memory: a volume::ExternalGrid over its
+    /// own array (no copy), volume::gridFromVdb() of an OpenVDB grid, or any volume::Grid. Sets
+    /// `source` to MEMORY and notifies, so the next render draws it. The node holds the grid
+    /// until the next setGrid() or its own end (volume::ExternalGrid says how long the array
+    /// must live). A scene file cannot hold such a grid: written out, the node says `source
+    /// MEMORY`, and reading it back gives a node whose use throws DataError.
+    void setGrid(volume::AnyGrid grid);
+
     /// @brief Whether the source is loaded now (the cache holds it).
     bool isLoaded() const;
 
@@ -186,6 +197,7 @@ private:
     mutable std::mutex mMutex;
     mutable std::shared_ptr<const Loaded> mLoaded;
     mutable volume::ScalarGridPtr mScalar;
+    volume::AnyGrid mMemoryGrid; // source MEMORY: setGrid()'s grid (guarded by mMutex)
 };
 
 } // namespace texsplat::nodes

@@ -13,8 +13,9 @@ packages=(
     clang libclang-rt-14-dev xvfb xauth locales
     python3-numpy
     libnetcdf-dev zlib1g-dev
-    # ncgen and unu write the NetCDF and NRRD files of the readers' tests.
-    netcdf-bin teem-apps
+    # ncgen and unu write the NetCDF and NRRD files of the readers' tests; pyopenvdb the .vdb of
+    # docs/getting-started.md, whose commands a test runs.
+    netcdf-bin teem-apps python3-openvdb
 )
 apt-get update
 apt-get install -y --no-install-recommends "${packages[@]}"

@@ -1,6 +1,5 @@
 #include "nodes/volume/DenseGrid.h"
 
-#include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 
 #include <limits>
@@ -33,26 +32,17 @@ DenseGrid<T>::DenseGrid(const GridGeometry& geometry, const T& fill)
 
 template <typename T>
 T DenseGrid<T>::value(const glm::i64vec3& index) const {
-    TEXSPLAT_ASSERT(this->geometry().contains(index), "DenseGrid::value(): index outside grid");
-    const T& stored = mValues[static_cast<std::size_t>(this->geometry().linearIndex(index))];
-    return isFiniteValue(stored) ? stored : this->background();
+    return voxels().value(index, this->background());
 }
 
 template <typename T>
 bool DenseGrid<T>::isActive(const glm::i64vec3& index) const {
-    TEXSPLAT_ASSERT(this->geometry().contains(index), "DenseGrid::isActive(): index outside grid");
-    return isFiniteValue(mValues[static_cast<std::size_t>(this->geometry().linearIndex(index))]);
+    return voxels().isActive(index);
 }
 
 template <typename T>
 void DenseGrid<T>::forEachStored(const typename Grid<T>::VoxelVisitor& visit) const {
-    const glm::i64vec3& dims = this->geometry().dims();
-    std::size_t linear = 0;
-    glm::i64vec3 index;
-    for (index.z = 0; index.z < dims.z; ++index.z)
-        for (index.y = 0; index.y < dims.y; ++index.y)
-            for (index.x = 0; index.x < dims.x; ++index.x)
-                visit(index, mValues[linear++]);
+    voxels().forEachStored(visit);
 }
 
 template class DenseGrid<float>;

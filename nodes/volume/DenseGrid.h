@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/detail/ContiguousVoxels.h"
 #include "scenegraph/Assert.h"
 
 #include <vector>
@@ -38,6 +39,8 @@ public:
     std::size_t memoryBytes() const override { return mValues.capacity() * sizeof(T); }
 
 private:
+    detail::ContiguousVoxels<T> voxels() const { return {this->geometry(), mValues.data()}; }
+
     std::vector<T> mValues;
 };
 

@@ -4,6 +4,7 @@
 
 #ifdef TEXSPLAT_WITH_OPENVDB
 #include "nodes/volume/SparseGrid.h"
+#include "nodes/volume/VdbGrid.h"
 #include "nodes/volume/detail/Printable.h"
 #include "nodes/volume/detail/SourceSupport.h"
 
@@ -147,6 +148,17 @@ bool isOpenVdbAvailable() { return true; }
 std::vector<VdbGridInfo> listVdbGrids(const std::string& path) {
     auto file = openVdb(path);
     return gridInfos(*file, path);
+}
+
+// An application's grid has no file: messages name it so.
+constexpr const char* kInMemory = "in-memory OpenVDB grid";
+
+ScalarGridPtr gridFromVdb(const openvdb::FloatGrid& grid) {
+    return convert(grid, kInMemory, grid.getName(), {});
+}
+
+VectorGridPtr gridFromVdb(const openvdb::Vec3SGrid& grid) {
+    return convert(grid, kInMemory, grid.getName(), {});
 }
 
 AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,

@@ -1,0 +1,50 @@
+#include "nodes/render/SceneFraming.h"
+
+#include "nodes/OrthographicCamera.h"
+#include "nodes/PerspectiveCamera.h"
+#include "nodes/render/CameraView.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/Separator.h"
+#include "scenegraph/actions/BoundingBoxAction.h"
+#include "scenegraph/actions/SearchAction.h"
+
+namespace texsplat::render {
+
+nodes::Camera* findCamera(sg::Node& scene) {
+    sg::SearchAction search;
+    search.setType(nodes::Camera::classType());
+    search.setInterest(sg::SearchAction::Interest::First);
+    search.apply(scene);
+    return search.paths().empty()
+               ? nullptr
+               : static_cast<nodes::Camera*>(search.paths().front().tail().get());
+}
+
+sg::Node::Ptr framedScene(const sg::Node::Ptr& scene, float aspect, const Framing& framing) {
+    if (findCamera(*scene) != nullptr) {
+        return scene;
+    }
+    if (framing.direction == glm::vec3(0.0f)) {
+        throw DataError(framing.name + ": cannot frame it looking along a zero direction");
+    }
+    nodes::Camera::Ptr camera;
+    if (framing.camera == FramingCamera::Perspective) {
+        camera = nodes::PerspectiveCamera::create();
+    } else {
+        camera = nodes::OrthographicCamera::create();
+    }
+    camera->orientation.setValue(rotationLookingAlong(framing.direction));
+    sg::BoundingBoxAction box;
+    box.apply(*scene);
+    if (box.boundingBox().isEmpty()) {
+        throw DataError(framing.name +
+                        ": nothing to frame (the scene has no geometry and no camera)");
+    }
+    camera->viewAll(box.boundingBox(), aspect);
+    sg::Separator::Ptr root = sg::Separator::create();
+    root->addChild(camera);
+    root->addChild(scene);
+    return root;
+}
+
+} // namespace texsplat::render
