@@ -19,7 +19,7 @@ namespace texsplat::octree {
 /// Voxel (i, j, k) is a sample at `origin + spacing * (i, j, k)`; its cell, the box a splat of
 /// it stands for, is that point +- spacing / 2. Dimensions and indices are 64-bit; the linear
 /// index is `i + nx * (j + ny * k)`. A voxel whose colour and extinction are all zero is empty
-/// and produces no splat (DESIGN.md: "no splats for transparent voxels").
+/// and produces no splat (docs/design.md: "no splats for transparent voxels").
 class ClassifiedGrid {
 public:
     /// @brief A grid of @p dims voxels, all empty.

@@ -10,7 +10,7 @@ class EglContext;
 
 namespace texsplat::render {
 
-/// @brief What draws a frame (DESIGN.md, "Backends: one frame, several ways to draw it").
+/// @brief What draws a frame (docs/design.md, "Backends: one frame, several ways to draw it").
 enum class Backend {
     Cpu, ///< render::cpu::CpuRenderer: no GL
     Gl,  ///< sg::RenderAction: instanced quads through OpenGL

@@ -40,8 +40,8 @@ struct FrameSplats {
     std::vector<float> cameraDepths() const;
 };
 
-/// @brief A frame as every backend draws it (DESIGN.md, "Data flow of one frame"): the size and
-/// background, the opaque meshes, and the splat batches of the splat nodes in traversal order.
+/// @brief A frame as every backend draws it (docs/design.md, "Data flow of one frame"): the size
+/// and background, the opaque meshes, and the splat batches of the splat nodes in traversal order.
 /// Splats are depth-tested against the meshes without writing depth and composited with
 /// premultiplied "over", batches of several nodes merged into one depth order.
 struct Frame {

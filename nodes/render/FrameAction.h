@@ -6,8 +6,8 @@
 
 namespace texsplat::render {
 
-/// @brief Traverses a scene and collects its backend-neutral Frame (DESIGN.md, "Data flow of one
-/// frame"): meshes with their lighting, and per splat node its classified, ordered and emitted
+/// @brief Traverses a scene and collects its backend-neutral Frame (docs/design.md, "Data flow of
+/// one frame"): meshes with their lighting, and per splat node its classified, ordered and emitted
 /// splats with their footprint. No GL: the CPU backend (cpu::CpuRenderer) draws what it
 /// collects. Classification, the octree, ordering and emission are the same code as for the GL
 /// RenderAction (ScalarSplat::frameSplats()).

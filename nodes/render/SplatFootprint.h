@@ -27,7 +27,7 @@ enum class SplatShape {
 };
 
 /// @brief What one splat looks like, for any backend: the shape and the tabulated kernel data a
-/// splat node describes (DESIGN.md, "Data flow of one frame": "the tabulated kernel footprint,
+/// splat node describes (docs/design.md, "Data flow of one frame": "the tabulated kernel footprint,
 /// and for vector splats the mark table"). Immutable once made; nodes share one per field state.
 struct SplatFootprint {
     /// @brief What each splat is drawn as.

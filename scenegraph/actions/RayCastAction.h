@@ -69,7 +69,7 @@ public:
     virtual Sample sample(const RayCastRay& ray, float t) const = 0;
 };
 
-/// @brief The CPU reference renderer (DESIGN.md, "The model"): for every pixel, integrates
+/// @brief The CPU reference renderer (docs/design.md, "The model"): for every pixel, integrates
 /// emission–absorption exactly through the reconstructed fields of the volumes the splat nodes
 /// draw, up to the first opaque surface.
 ///

@@ -12,8 +12,8 @@
 
 namespace texsplat::sg {
 
-/// @brief Draws a scene with OpenGL into an off-screen float framebuffer (DESIGN.md, "Data flow
-/// of one frame").
+/// @brief Draws a scene with OpenGL into an off-screen float framebuffer (docs/design.md, "Data
+/// flow of one frame").
 ///
 /// The traversal only *collects* work: node methods registered in `methods()` (by the nodes
 /// library) read the traversal state (camera, transform, transfer function, volume) and hand

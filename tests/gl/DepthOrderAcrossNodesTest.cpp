@@ -1,4 +1,4 @@
-// Splat batches of different nodes composite in one depth order (DESIGN.md: figure 8 puts a
+// Splat batches of different nodes composite in one depth order (docs/design.md: figure 8 puts a
 // cloudiness volume and wind vectors in the same space), whatever their order in the graph.
 #include "SplatTestSupport.h"
 #include "nodes/OrthographicCamera.h"

@@ -1,9 +1,9 @@
-// Stiff and extreme inputs through the GL splat renderers (DESIGN.md, "Numerics": no NaN pixel,
-// ever): opacities per unit length from 1e-8 to 1e8, data values of ±1e30, 1e-30 and near the
-// float limit, NaN and infinite voxels. Each scene goes through the nodes (raw file, VolumeData,
-// TransferFunction, splat node) and is drawn by the paper's texture splat, the texture splat
-// with the Gaussian kernel and the polygonal Gaussian splat. Where the result is predictable it
-// is checked: an optically thick slab is opaque and shows the medium's colour, a nearly
+// Stiff and extreme inputs through the GL splat renderers (docs/design.md, "Numerics": no NaN
+// pixel, ever): opacities per unit length from 1e-8 to 1e8, data values of ±1e30, 1e-30 and near
+// the float limit, NaN and infinite voxels. Each scene goes through the nodes (raw file,
+// VolumeData, TransferFunction, splat node) and is drawn by the paper's texture splat, the texture
+// splat with the Gaussian kernel and the polygonal Gaussian splat. Where the result is predictable
+// it is checked: an optically thick slab is opaque and shows the medium's colour, a nearly
 // transparent one adds up its emission, values beyond the range classify like the range's ends.
 
 #include "SplatTestSupport.h"

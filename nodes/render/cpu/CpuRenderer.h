@@ -12,7 +12,7 @@ namespace detail {
 class SamplerCache;
 } // namespace detail
 
-/// @brief The CPU backend (DESIGN.md, "Backends"): draws a Frame without GL, as the GL backend
+/// @brief The CPU backend (docs/design.md, "Backends"): draws a Frame without GL, as the GL backend
 /// does — opaque meshes with a depth buffer, then every splat depth-tested against them,
 /// composited back to front with premultiplied "over" — into a float image.
 ///
