@@ -497,6 +497,9 @@ void runRender(const RenderArguments& arguments) {
     const std::string stage = "rendering a " + arguments.size + " image";
     const std::uint64_t imageBytes = std::uint64_t(size.x) * std::uint64_t(size.y) *
                                      sizeof(glm::vec4);
+    // Asked before the first frame, as every stage asks for its largest allocation: the image
+    // (the CPU's colour planes and GL's framebuffer are as large).
+    checkMemory(stage, imageBytes, kRenderAdvice);
     if (backend.backend == render::Backend::Cpu) {
         cpu.emplace(arguments.threads);
         render::FrameAction action(size.x, size.y, background);

@@ -72,6 +72,8 @@ VectorSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*s
         const int axis = static_cast<int>(positionAxis.as<Axis>());
         const glm::vec2 coordinates = positionRange.value();
         const DataScale scale = transfer.dataScale(*vectors);
+        // colorMode SCALAR colours the other grid's values over that grid's own range.
+        const DataScale colorScale = colors ? transfer.dataScale(*colors) : scale;
         const glm::vec2 values = scale.range;
         vectors->forEachActive([&](const glm::i64vec3& index, const glm::vec3& vector) {
             // In double: a huge vector's squared length overflows float.
@@ -92,7 +94,7 @@ VectorSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*s
                 polygon = transfer.color(static_cast<float>(magnitude), scale);
                 break;
             case VectorColorMode::Scalar:
-                polygon = colors->isActive(index) ? transfer.color(colors->value(index), scale)
+                polygon = colors->isActive(index) ? transfer.color(colors->value(index), colorScale)
                                                   : glm::vec3(0.0f);
                 break;
             case VectorColorMode::Position: {

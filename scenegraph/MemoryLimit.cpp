@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 
 namespace texsplat {
@@ -75,21 +76,30 @@ std::uint64_t parseByteCount(std::string_view text) {
     std::string suffix(text.substr(end));
     for (char& c : suffix)
         c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-    if (suffix.size() > 1 && (suffix.substr(1) == "B" || suffix.substr(1) == "IB"))
-        suffix.resize(1);
-    static constexpr std::string_view kSuffixes = "KMGT";
-    double scale = 1.0;
-    if (suffix == "B" || suffix.empty()) {
-        scale = 1.0;
-    } else if (suffix.size() == 1 && kSuffixes.find(suffix[0]) != std::string_view::npos) {
-        scale = std::ldexp(1.0, 10 * (1 + int(kSuffixes.find(suffix[0]))));
-    } else {
+    // "", "B", or a unit K, M, G, T alone or with "B" or "iB"; a fraction only with a unit.
+    static constexpr std::string_view kUnits = "KMGT";
+    const std::size_t unit = suffix.empty() ? std::string_view::npos : kUnits.find(suffix[0]);
+    const std::string rest = unit == std::string_view::npos ? suffix : suffix.substr(1);
+    const bool isUnitSuffix = rest.empty() || rest == "B" || (unit != std::string_view::npos &&
+                                                               rest == "IB");
+    if (!isUnitSuffix || (unit == std::string_view::npos && number.find('.') != std::string::npos))
         return fail();
-    }
+    const double scale =
+        unit == std::string_view::npos ? 1.0 : std::ldexp(1.0, 10 * (1 + int(unit)));
     const double bytes = std::floor(std::stod(number) * scale);
     if (!(bytes >= 1.0) || bytes >= std::ldexp(1.0, 64))
         return fail();
     return static_cast<std::uint64_t>(bytes);
+}
+
+std::uint64_t byteProduct(std::uint64_t count, std::uint64_t each) {
+    constexpr std::uint64_t kLargest = std::numeric_limits<std::uint64_t>::max();
+    return each != 0 && count > kLargest / each ? kLargest : count * each;
+}
+
+std::uint64_t byteSum(std::uint64_t a, std::uint64_t b) {
+    constexpr std::uint64_t kLargest = std::numeric_limits<std::uint64_t>::max();
+    return a > kLargest - b ? kLargest : a + b;
 }
 
 void checkMemory(std::string_view what, std::uint64_t bytes, std::string_view advice) {

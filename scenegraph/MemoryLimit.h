@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <new>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -40,13 +41,22 @@ std::uint64_t parseByteCount(std::string_view text);
 /// than the memory limit of <limit>; <advice>" when `bytes` exceeds memoryLimit().
 void checkMemory(std::string_view what, std::uint64_t bytes, std::string_view advice);
 
+/// @brief `count` × `each` bytes, saturating at the largest std::uint64_t instead of wrapping
+/// (a grid of 2^60 voxels must not wrap to a few bytes and pass the check; any limit refuses the
+/// saturated value).
+std::uint64_t byteProduct(std::uint64_t count, std::uint64_t each);
+
+/// @brief `a` + `b` bytes, saturating like byteProduct().
+std::uint64_t byteSum(std::uint64_t a, std::uint64_t b);
+
 /// @brief The message of a std::bad_alloc caught in `stage`: "<stage>: out of memory (...)",
 /// with the stage's estimate when known (`estimate` > 0), the limit and `advice`.
 std::string outOfMemoryText(std::string_view stage, std::uint64_t estimate,
                             std::string_view advice);
 
 /// @brief Runs `step`, one stage of large work ("classifying 64x64x64 voxels"); a std::bad_alloc
-/// it throws becomes a ResourceError saying which stage ran out, its estimate (`estimate` bytes,
+/// it throws (or std::length_error: a container asked for more than it can address) becomes a
+/// ResourceError saying which stage ran out, its estimate (`estimate` bytes,
 /// 0 when unknown) and `advice` (what to do), so that running out of memory is reported like
 /// any other expected failure. Only the first (innermost) stage names itself: a ResourceError
 /// passes through enclosing stages unchanged.
@@ -56,6 +66,8 @@ auto withMemoryStage(std::string_view stage, std::uint64_t estimate, std::string
     try {
         return step();
     } catch (const std::bad_alloc&) {
+        throw ResourceError(outOfMemoryText(stage, estimate, advice));
+    } catch (const std::length_error&) {
         throw ResourceError(outOfMemoryText(stage, estimate, advice));
     }
 }

@@ -38,17 +38,22 @@ SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool
     const volume::VectorGridPtr vectors = volume.vectorGrid();
     SplatMemory memory;
     memory.dims = vectors ? vectors->geometry().dims() : volume.scalarGrid()->geometry().dims();
-    const auto voxels = static_cast<std::uint64_t>(memory.dims.x) *
-                        static_cast<std::uint64_t>(memory.dims.y) *
-                        static_cast<std::uint64_t>(memory.dims.z);
-    memory.classified = voxels * (sizeof(glm::vec4) + (withVectors ? sizeof(glm::vec3) : 0));
+    // Saturating: a sparse grid's box may hold 2^60 voxels, whose bytes would wrap.
+    const std::uint64_t voxels =
+        byteProduct(byteProduct(static_cast<std::uint64_t>(memory.dims.x),
+                                static_cast<std::uint64_t>(memory.dims.y)),
+                    static_cast<std::uint64_t>(memory.dims.z));
+    memory.classified =
+        byteProduct(voxels, sizeof(glm::vec4) + (withVectors ? sizeof(glm::vec3) : 0));
     // Records exist for non-empty nodes of level >= 1: at most one per 7 voxels (1/8 + 1/64 +
     // ...), with a mean vector each for vector grids.
-    memory.octree = withOctree ? (voxels / 7 + 1) * (sizeof(octree::OctreeNode) +
+    memory.octree =
+        withOctree ? byteProduct(voxels / 7 + 1, sizeof(octree::OctreeNode) +
                                                      (withVectors ? sizeof(glm::vec3) : 0))
-                               : 0;
+                   : 0;
     const std::uint64_t splats = maxSplats > 0 ? std::min(voxels, maxSplats) : voxels;
-    memory.splats = splats * (kBytesPerSplat + (withVectors ? kBytesPerVectorSplat : 0));
+    memory.splats =
+        byteProduct(splats, kBytesPerSplat + (withVectors ? kBytesPerVectorSplat : 0));
     return memory;
 }
 

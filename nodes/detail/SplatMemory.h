@@ -1,5 +1,7 @@
 #pragma once
 
+#include "scenegraph/MemoryLimit.h"
+
 #include <glm/ext/vector_int3_sized.hpp>
 
 #include <cstdint>
@@ -20,7 +22,9 @@ struct SplatMemory {
     std::uint64_t splats = 0;     ///< the splat list and its depth ordering
 
     /// @brief Everything together.
-    [[nodiscard]] std::uint64_t total() const { return classified + octree + splats; }
+    [[nodiscard]] std::uint64_t total() const {
+        return byteSum(byteSum(classified, octree), splats);
+    }
 };
 
 /// @brief The estimate for `volume`'s grid (loaded; its vector field for vector splats).

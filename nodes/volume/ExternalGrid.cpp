@@ -12,9 +12,6 @@ template <typename T>
 ExternalGrid<T>::ExternalGrid(const GridGeometry& geometry, const T* values, std::size_t count,
                               std::shared_ptr<const void> owner)
     : Grid<T>(geometry, T(0.0f)), mValues(values), mOwner(std::move(owner)) {
-    if (values == nullptr) {
-        throw DataError("ExternalGrid: the values are a null pointer");
-    }
     const auto expected = static_cast<std::uint64_t>(geometry.voxelCount());
     if (static_cast<std::uint64_t>(count) != expected) {
         throw DataError("ExternalGrid: " + std::to_string(count) + " values for a grid of " +
@@ -22,6 +19,9 @@ ExternalGrid<T>::ExternalGrid(const GridGeometry& geometry, const T* values, std
                         std::to_string(geometry.dims().y) + " x " +
                         std::to_string(geometry.dims().z) + " = " + std::to_string(expected) +
                         " voxels");
+    }
+    if (values == nullptr) {
+        throw DataError("ExternalGrid: the values are a null pointer");
     }
 }
 

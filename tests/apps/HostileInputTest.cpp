@@ -65,6 +65,15 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
     EXPECT_TRUE(fs::exists(path("out.png")));
 }
 
+TEST_F(HostileInputTest, anImageAboveTheMemoryLimitIsRefusedBeforeRendering) {
+    // 16384² RGBA floats are 4 GiB: asked before the first frame, not found by the OOM killer.
+    const std::string scene = writeZeroVolumeScene();
+    expectError(scene + " --size 16384x16384 --memory-limit 256M --backend cpu",
+                "rendering a 16384x16384 image would need 4294967296 bytes (4 GiB), more than "
+                "the memory limit of 268435456 bytes (256 MiB); use a smaller --size, a splat "
+                "budget (--max-splats), or --backend cpu");
+}
+
 TEST_F(HostileInputTest, runningOutOfMemoryNamesTheStageNotAnInternalError) {
 #if defined(__SANITIZE_ADDRESS__)
     GTEST_SKIP() << "AddressSanitizer reserves more address space than the ulimit below allows";

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+#include <limits>
 #include <new>
 #include <string>
 #include <vector>
@@ -39,10 +41,25 @@ TEST(MemoryLimit, byteCountsAreReadAsPeopleWriteThem) {
     EXPECT_EQ(parseByteCount("1.5GiB"), 3ull << 29);
     EXPECT_EQ(parseByteCount("64KB"), 64ull << 10);
     EXPECT_EQ(parseByteCount("2T"), 2ull << 40);
-    for (const char* bad : {"", "lots", "0", "-1M", "1..5G", "12Q", "1e9", "16777216T"}) {
+    EXPECT_EQ(parseByteCount("4096B"), 4096u);
+    for (const char* bad : {"", "lots", "0", "-1M", "1..5G", "12Q", "1e9", "16777216T", "1BB",
+                            "1BiB", "1.5", "1.5B", "1MM", "1iB"}) {
         EXPECT_EQ(errorOf(bad),
                   "expected a byte count such as 512M or 8G, got '" + std::string(bad) + "'");
     }
+}
+
+TEST(MemoryLimit, byteArithmeticSaturatesInsteadOfWrapping) {
+    constexpr std::uint64_t kLargest = std::numeric_limits<std::uint64_t>::max();
+    EXPECT_EQ(byteProduct(1000, 16), 16000u);
+    EXPECT_EQ(byteProduct(0, 16), 0u);
+    // A sparse grid's box of 6649655 x 442511 x 250759 voxels at 100 bytes each wraps to 3036
+    // bytes in plain uint64 arithmetic, and passed every limit.
+    const std::uint64_t voxels = byteProduct(byteProduct(6649655, 442511), 250759);
+    EXPECT_EQ(voxels, 737869762948382095u);
+    EXPECT_EQ(byteProduct(voxels, 100), kLargest);
+    EXPECT_EQ(byteSum(kLargest - 1, 5), kLargest);
+    EXPECT_EQ(byteSum(2, 3), 5u);
 }
 
 TEST(MemoryLimit, bytesTextGivesTheExactCountAndARoundedSize) {

@@ -44,8 +44,8 @@ void checkGridFitsInMemory(const std::string& source, const GridGeometry& geomet
     checkFitsInMemory(source + ": a grid of " + std::to_string(dims.x) + " x " +
                           std::to_string(dims.y) + " x " + std::to_string(dims.z) + " voxels x " +
                           std::to_string(components) + (components == 1 ? " float" : " floats"),
-                      static_cast<std::uint64_t>(geometry.voxelCount()) *
-                          static_cast<std::uint64_t>(components) * sizeof(float));
+                      byteProduct(static_cast<std::uint64_t>(geometry.voxelCount()),
+                                  static_cast<std::uint64_t>(components) * sizeof(float)));
 }
 
 void checkFiniteVoxels(const std::string& source, const GridStatistics& statistics) {
