@@ -171,18 +171,18 @@ DataScale fixedScale(const detail::TransferTable& table) {
             table.unitDistance > 0.0f ? table.unitDistance : 1.0f};
 }
 
-} // namespace
-
-template <class T> DataScale TransferFunction::scaleOf(const volume::Grid<T>& grid) const {
-    const std::shared_ptr<const detail::TransferTable> checked = table();
-    DataScale scale = fixedScale(*checked);
-    switch (static_cast<RangeMode>(checked->rangeMode)) {
+// The scale `checked` gives `grid`'s values: one table throughout, so a change of the node
+// between two lookups cannot mix two tables.
+template <class T>
+DataScale scaleOf(const detail::TransferTable& checked, const volume::Grid<T>& grid) {
+    DataScale scale = fixedScale(checked);
+    switch (static_cast<RangeMode>(checked.rangeMode)) {
     case RangeMode::Data:
         scale.range = glm::vec2(detail::valueRange(grid));
         break;
     case RangeMode::Percentile:
         scale.range = glm::vec2(
-            detail::percentileRange(grid, checked->percentiles.x, checked->percentiles.y));
+            detail::percentileRange(grid, checked.percentiles.x, checked.percentiles.y));
         break;
     case RangeMode::Auto:
     case RangeMode::Fixed:
@@ -192,19 +192,21 @@ template <class T> DataScale TransferFunction::scaleOf(const volume::Grid<T>& gr
         // Values so close together (or so large) that float cannot tell the ends apart.
         scale.range.y = std::nextafter(scale.range.x, std::numeric_limits<float>::infinity());
     }
-    if (checked->unitDistance == 0.0f) {
+    if (checked.unitDistance == 0.0f) {
         const glm::dvec3 spacing = grid.geometry().spacing();
         scale.unitDistance = static_cast<float>(std::cbrt(spacing.x * spacing.y * spacing.z));
     }
     return scale;
 }
 
+} // namespace
+
 DataScale TransferFunction::dataScale(const volume::ScalarGrid& grid) const {
-    return scaleOf(grid);
+    return scaleOf(*table(), grid);
 }
 
 DataScale TransferFunction::dataScale(const volume::VectorGrid& grid) const {
-    return scaleOf(grid);
+    return scaleOf(*table(), grid);
 }
 
 Classification TransferFunction::classify(float value) const {
@@ -235,7 +237,7 @@ glm::vec3 TransferFunction::colorAt(float t) const {
 std::shared_ptr<octree::ClassifiedGrid>
 TransferFunction::classify(const volume::ScalarGrid& grid) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
-    const DataScale scale = dataScale(grid);
+    const DataScale scale = scaleOf(*checked, grid);
     const volume::GridGeometry& geometry = grid.geometry();
     auto classified = std::make_shared<octree::ClassifiedGrid>(
         glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());

@@ -192,7 +192,6 @@ protected:
 private:
     std::shared_ptr<const detail::TransferTable> table() const;
     std::shared_ptr<const detail::TransferTable> buildTable() const;
-    template <class T> DataScale scaleOf(const volume::Grid<T>& grid) const;
 
     mutable std::mutex mTableMutex;
     mutable std::shared_ptr<const detail::TransferTable> mTable;
