@@ -41,7 +41,7 @@ public:
     sg::SFFloat radius;
 
 protected:
-    Pulse() { addField(radius, "radius", 1.0f); }
+    Pulse() { addField(radius, "radius", 1.0f, "Radius of the pulse, world units"); }
 };
 
 /// Separator { DEF pulse Pulse { radius = ElapsedTime { speed 2 } . timeOut } }

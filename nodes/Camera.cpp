@@ -18,13 +18,22 @@ namespace texsplat::nodes {
 
 Camera::Camera() {
     addField(viewportMapping, "viewportMapping", ViewportMapping::AdjustCamera,
-             kViewportMappingNames);
-    addField(position, "position", glm::vec3(0.0f, 0.0f, 1.0f));
-    addField(orientation, "orientation", sg::Rotation());
-    addField(nearDistance, "nearDistance", 1.0f);
-    addField(farDistance, "farDistance", 10.0f);
-    addField(aspectRatio, "aspectRatio", 1.0f);
-    addField(focalDistance, "focalDistance", 5.0f);
+             kViewportMappingNames,
+             "Inventor's fit of the view volume to the viewport; read and written back, not "
+             "used (texsplat keeps the vertical opening and fits the width)");
+    addField(position, "position", glm::vec3(0.0f, 0.0f, 1.0f),
+             "Viewpoint, in the camera's local space");
+    addField(orientation, "orientation", sg::Rotation(),
+             "Rotation of the default view along -z with +y up (axis x y z, angle in radians)");
+    addField(nearDistance, "nearDistance", 1.0f,
+             "Distance from the viewpoint to the near clipping plane, world units");
+    addField(farDistance, "farDistance", 10.0f,
+             "Distance from the viewpoint to the far clipping plane, world units, > nearDistance");
+    addField(aspectRatio, "aspectRatio", 1.0f,
+             "Width over height the camera was set up for; read and written back, not used (the "
+             "image's aspect is)");
+    addField(focalDistance, "focalDistance", 5.0f,
+             "Distance from the viewpoint to the point of interest, which the viewer orbits");
 }
 
 glm::mat4 Camera::viewMatrix() const {

@@ -13,9 +13,13 @@
 namespace texsplat::nodes {
 
 CombinedSplat::CombinedSplat() {
-    addField(kernel, "kernel", SplatKernel::Paper, kSplatKernelNames);
-    addField(textureResolution, "textureResolution", 64);
-    addField(markContrast, "markContrast", 1.0f);
+    addField(kernel, "kernel", SplatKernel::Paper, kSplatKernelNames,
+             "Kernel of the scalar footprint under the marks: PAPER or GAUSSIAN, as in "
+             "TextureSplat");
+    addField(textureResolution, "textureResolution", 64,
+             "Texels per side of the scalar footprint texture, 2 to 8192");
+    addField(markContrast, "markContrast", 1.0f,
+             "How much the marks change the scalar splat's colour, 0 (not at all) to 1");
     // Figure 7: vectors in a constant colour over the volume rendering.
     textureOperator.setValue(render::MarkOperator::Blend);
     textureOperator.setDefault(true);

@@ -14,7 +14,10 @@ namespace {
 constexpr int kDefaultSegments = 12;
 }
 
-Fibers::Fibers() { addField(segments, "segments", kDefaultSegments); }
+Fibers::Fibers() {
+    addField(segments, "segments", kDefaultSegments,
+             "Sides of the polygon cylinder drawn around each aerogel fiber, >= 3");
+}
 
 TriangleMesh Fibers::triangleMesh(sg::State& state) const {
     const VolumeData* volume = state.get<VolumeElement>().volume;

@@ -11,8 +11,10 @@
 namespace texsplat::nodes {
 
 GaussianSplat::GaussianSplat() {
-    addField(radialSamples, "radialSamples", 3);
-    addField(azimuthSamples, "azimuthSamples", 7);
+    addField(radialSamples, "radialSamples", 3,
+             "Vertices along a radius of the polygonal Gaussian, the centre included, 2 to 64");
+    addField(azimuthSamples, "azimuthSamples", 7,
+             "Vertices around each ring of the polygonal Gaussian, 3 to 256");
 }
 
 namespace {

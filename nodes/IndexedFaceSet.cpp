@@ -13,10 +13,14 @@
 namespace texsplat::nodes {
 
 IndexedFaceSet::IndexedFaceSet() {
-    addField(coordIndex, "coordIndex", std::vector<std::int32_t>{});
-    addField(materialIndex, "materialIndex", std::vector<std::int32_t>{-1});
-    addField(normalIndex, "normalIndex", std::vector<std::int32_t>{-1});
-    addField(textureCoordIndex, "textureCoordIndex", std::vector<std::int32_t>{-1});
+    addField(coordIndex, "coordIndex", std::vector<std::int32_t>{},
+             "Polygons as indices into the current Coordinate3 points, each ended by -1");
+    addField(materialIndex, "materialIndex", std::vector<std::int32_t>{-1},
+             "Inventor's material indices; read and written back, not used");
+    addField(normalIndex, "normalIndex", std::vector<std::int32_t>{-1},
+             "Inventor's normal indices; read and written back, not used");
+    addField(textureCoordIndex, "textureCoordIndex", std::vector<std::int32_t>{-1},
+             "Inventor's texture coordinate indices; read and written back, not used");
 }
 
 namespace {

@@ -15,12 +15,18 @@ namespace texsplat::nodes {
 Material::Material() {
     const MaterialElement defaults;
     // Inventor's defaults; the ones texsplat uses come from MaterialElement.
-    addField(ambientColor, "ambientColor", std::vector<glm::vec3>{glm::vec3(0.2f)});
-    addField(diffuseColor, "diffuseColor", std::vector<glm::vec3>{defaults.diffuseColor});
-    addField(specularColor, "specularColor", std::vector<glm::vec3>{glm::vec3(0.0f)});
-    addField(emissiveColor, "emissiveColor", std::vector<glm::vec3>{defaults.emissiveColor});
-    addField(shininess, "shininess", std::vector<float>{0.2f});
-    addField(transparency, "transparency", std::vector<float>{defaults.transparency});
+    addField(ambientColor, "ambientColor", std::vector<glm::vec3>{glm::vec3(0.2f)},
+             "Reflected ambient light; read and written back, not used");
+    addField(diffuseColor, "diffuseColor", std::vector<glm::vec3>{defaults.diffuseColor},
+             "Colour of the meshes under light (the first value is used); not of splats");
+    addField(specularColor, "specularColor", std::vector<glm::vec3>{glm::vec3(0.0f)},
+             "Highlight colour; read and written back, not used");
+    addField(emissiveColor, "emissiveColor", std::vector<glm::vec3>{defaults.emissiveColor},
+             "Colour the meshes emit without light (the first value is used)");
+    addField(shininess, "shininess", std::vector<float>{0.2f},
+             "Sharpness of highlights, 0 to 1; read and written back, not used");
+    addField(transparency, "transparency", std::vector<float>{defaults.transparency},
+             "0 opaque to 1 invisible, of the meshes (the first value is used)");
 }
 
 void Material::doAction(sg::Action& action) {

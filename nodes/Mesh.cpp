@@ -9,7 +9,10 @@
 
 namespace texsplat::nodes {
 
-Mesh::Mesh() { addField(fileName, "fileName", std::string()); }
+Mesh::Mesh() {
+    addField(fileName, "fileName", std::string(),
+             "The glTF file (.gltf or .glb) to draw, relative to the scene file's folder");
+}
 
 std::shared_ptr<const TriangleMesh> Mesh::triangleMesh() const {
     const std::lock_guard<std::mutex> lock(mMutex);

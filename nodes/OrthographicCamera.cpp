@@ -11,7 +11,9 @@
 
 namespace texsplat::nodes {
 
-OrthographicCamera::OrthographicCamera() { addField(height, "height", 2.0f); }
+OrthographicCamera::OrthographicCamera() {
+    addField(height, "height", 2.0f, "Height of the view volume in world units, > 0");
+}
 
 glm::mat4 OrthographicCamera::projection(float aspect, const DepthRange& range) const {
     const float h = height.value();

@@ -18,7 +18,8 @@ constexpr float kDepthRatio = 1000.0f;
 
 PerspectiveCamera::PerspectiveCamera() {
     // Inventor's default: 45 degrees.
-    addField(heightAngle, "heightAngle", glm::quarter_pi<float>());
+    addField(heightAngle, "heightAngle", glm::quarter_pi<float>(),
+             "Full vertical opening angle in radians, between 0 and pi");
 }
 
 void PerspectiveCamera::checkHeightAngle() const {

@@ -59,9 +59,15 @@ auto timed(sg::RenderStatistics& statistics, sg::RenderPhase phase, Step&& step)
 } // namespace
 
 ScalarSplat::ScalarSplat() : mCache(std::make_unique<render::detail::ClassificationCache>()) {
-    addField(size, "size", 1.6f);
-    addField(errorThreshold, "errorThreshold", 0.0f);
-    addField(maxSplats, "maxSplats", 0);
+    addField(size, "size", 1.6f,
+             "Extent of each splat: its square reaches this many voxels from the centre (paper: "
+             "1.6), > 0");
+    addField(errorThreshold, "errorThreshold", 0.0f,
+             "Octree cut: largest deviation a splat may stand for, as a fraction of the largest "
+             "classified value (0: full resolution, 1: one splat)");
+    addField(maxSplats, "maxSplats", 0,
+             "Octree cut: at most this many splats, refined where the error is largest (0: no "
+             "budget)");
 }
 
 ScalarSplat::~ScalarSplat() = default;

@@ -8,8 +8,11 @@
 namespace texsplat::nodes {
 
 TextureSplat::TextureSplat() {
-    addField(kernel, "kernel", SplatKernel::Paper, kSplatKernelNames);
-    addField(textureResolution, "textureResolution", 64);
+    addField(kernel, "kernel", SplatKernel::Paper, kSplatKernelNames,
+             "Kernel whose footprint the texture holds: PAPER's cubic, or the GAUSSIAN fitted to "
+             "its support");
+    addField(textureResolution, "textureResolution", 64,
+             "Texels per side of the footprint texture, 2 to 8192");
 }
 
 std::shared_ptr<const texsplat::kernel::RadialKernel>

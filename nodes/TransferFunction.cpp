@@ -19,17 +19,31 @@
 namespace texsplat::nodes {
 
 TransferFunction::TransferFunction() {
-    addField(preset, "preset", ColorPreset::Gray, kColorPresetNames);
-    addField(colorMapFile, "colorMapFile", std::string());
-    addField(colorValues, "colorValues", std::vector<float>{});
-    addField(colors, "colors", std::vector<glm::vec3>{});
-    addField(opacityValues, "opacityValues", std::vector<float>{0.0f, 1.0f});
-    addField(opacities, "opacities", std::vector<float>{0.0f, 1.0f});
-    addField(range, "range", glm::vec2(0.0f, 1.0f));
-    addField(rangeMode, "rangeMode", RangeMode::Auto, kRangeModeNames);
-    addField(percentiles, "percentiles", glm::vec2(1.0f, 99.0f));
-    addField(unitDistance, "unitDistance", 1.0f);
-    addField(emission, "emission", 0.0f);
+    addField(preset, "preset", ColorPreset::Gray, kColorPresetNames,
+             "Named colour map, used when colors and colorMapFile are empty");
+    addField(colorMapFile, "colorMapFile", std::string(),
+             "A ParaView colour-map JSON file (relative to the scene file's folder); replaces "
+             "preset");
+    addField(colorValues, "colorValues", std::vector<float>{},
+             "Positions of colors in the range normalized to 0..1, non-decreasing");
+    addField(colors, "colors", std::vector<glm::vec3>{},
+             "Colour control points, linear RGB, one per colorValues; replace the colour map");
+    addField(opacityValues, "opacityValues", std::vector<float>{0.0f, 1.0f},
+             "Positions of opacities in the range normalized to 0..1, non-decreasing");
+    addField(opacities, "opacities", std::vector<float>{0.0f, 1.0f},
+             "Extinction control points: opacity per unitDistance of world length, >= 0");
+    addField(range, "range", glm::vec2(0.0f, 1.0f),
+             "Data values mapped to 0 and 1 with rangeMode FIXED (or AUTO once written)");
+    addField(rangeMode, "rangeMode", RangeMode::Auto, kRangeModeNames,
+             "Where the range comes from: FIXED range, DATA min/max, PERCENTILE, or AUTO (FIXED "
+             "when range is written, else DATA)");
+    addField(percentiles, "percentiles", glm::vec2(1.0f, 99.0f),
+             "Lower and upper percentile of the data (0..100) that rangeMode PERCENTILE maps to "
+             "0 and 1");
+    addField(unitDistance, "unitDistance", 1.0f,
+             "World length over which opacities and emission apply; 0: one voxel of the data");
+    addField(emission, "emission", 0.0f,
+             "Glow that does not absorb: emission is colour times (opacity + emission), >= 0");
 }
 
 namespace {

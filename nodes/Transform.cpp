@@ -9,11 +9,16 @@
 namespace texsplat::nodes {
 
 Transform::Transform() {
-    addField(translation, "translation", glm::vec3(0.0f));
-    addField(rotation, "rotation", sg::Rotation());
-    addField(scaleFactor, "scaleFactor", glm::vec3(1.0f));
-    addField(scaleOrientation, "scaleOrientation", sg::Rotation());
-    addField(center, "center", glm::vec3(0.0f));
+    addField(translation, "translation", glm::vec3(0.0f),
+             "Offset of the children's space, applied after scale and rotation");
+    addField(rotation, "rotation", sg::Rotation(),
+             "Rotation about center (axis x y z, angle in radians)");
+    addField(scaleFactor, "scaleFactor", glm::vec3(1.0f),
+             "Scale along the axes of scaleOrientation, about center");
+    addField(scaleOrientation, "scaleOrientation", sg::Rotation(),
+             "Rotation of the axes that scaleFactor scales along");
+    addField(center, "center", glm::vec3(0.0f),
+             "Fixed point of rotation and scale, in the children's space");
 }
 
 glm::mat4 Transform::matrix() const {

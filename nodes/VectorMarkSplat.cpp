@@ -23,17 +23,30 @@ std::string dimsText(const glm::i64vec3& dims) {
 
 VectorMarkSplat::VectorMarkSplat() {
     const kernel::VectorTableParameters table;
-    addField(textureOperator, "operator", render::MarkOperator::Modulate, kMarkOperatorNames);
-    addField(blendColor, "blendColor", glm::vec3(1.0f));
-    addField(phase, "phase", 0.0f);
-    addField(tableRows, "tableRows", table.rows);
-    addField(tableColumns, "tableColumns", table.columns);
-    addField(markType, "markType", table.markType, kMarkTypeNames);
-    addField(markDensity, "markDensity", table.markDensity);
-    addField(windowScale, "windowScale", table.windowScale);
-    addField(seed, "seed", static_cast<std::int32_t>(table.seed));
-    addField(maskData, "maskData", std::shared_ptr<sg::Node>());
-    addField(maskRange, "maskRange", glm::vec2(0.0f, 1.0f));
+    addField(textureOperator, "operator", render::MarkOperator::Modulate, kMarkOperatorNames,
+             "The paper's texture operator: MODULATE scales the colour by the marks, BLEND mixes "
+             "in blendColor");
+    addField(blendColor, "blendColor", glm::vec3(1.0f),
+             "Colour of the marks with operator BLEND (the paper's C_const), linear RGB");
+    addField(phase, "phase", 0.0f,
+             "Animation phase in cycles of the table's rows; connect it to an ElapsedTime");
+    addField(tableRows, "tableRows", table.rows,
+             "Animation phases of the vector splat table, 1 to 256");
+    addField(tableColumns, "tableColumns", table.columns,
+             "Foreshortening levels of the vector splat table, 1 to 64");
+    addField(markType, "markType", table.markType, kMarkTypeNames,
+             "Shape of the marks: PARTICLES (dots) or SCRATCHES (streaks along the vector)");
+    addField(markDensity, "markDensity", table.markDensity,
+             "Marks per square voxel in the table's textures, above 0 up to 64");
+    addField(windowScale, "windowScale", table.windowScale,
+             "Width of the marks' window relative to the scalar splat, 1 to 4");
+    addField(seed, "seed", static_cast<std::int32_t>(table.seed),
+             "Seed of the random marks and rows: the same seed draws the same image");
+    addField(maskData, "maskData", std::shared_ptr<sg::Node>(),
+             "A scalar VolumeData of the same dimensions whose values choose where marks draw; "
+             "NULL: everywhere");
+    addField(maskRange, "maskRange", glm::vec2(0.0f, 1.0f),
+             "Mask values that draw marks, inclusive (with maskData)");
 }
 
 VectorMarkSplat::~VectorMarkSplat() = default;

@@ -13,12 +13,18 @@
 namespace texsplat::nodes {
 
 VectorSplat::VectorSplat() {
-    addField(colorMode, "colorMode", VectorColorMode::Magnitude, kVectorColorModeNames);
-    addField(colorData, "colorData", std::shared_ptr<sg::Node>());
-    addField(positionAxis, "positionAxis", Axis::Z, kAxisNames);
-    addField(positionRange, "positionRange", glm::vec2(0.0f, 1.0f));
-    addField(color, "color", glm::vec3(1.0f));
-    addField(stretch, "stretch", 1.0f);
+    addField(colorMode, "colorMode", VectorColorMode::Magnitude, kVectorColorModeNames,
+             "Colour of the marks through the colour map: MAGNITUDE |v|, SCALAR colorData, "
+             "POSITION a coordinate; CONSTANT: color");
+    addField(colorData, "colorData", std::shared_ptr<sg::Node>(),
+             "The scalar VolumeData (same dimensions) that colorMode SCALAR colours by");
+    addField(positionAxis, "positionAxis", Axis::Z, kAxisNames,
+             "World axis whose coordinate colorMode POSITION colours by (e.g. Z for altitude)");
+    addField(positionRange, "positionRange", glm::vec2(0.0f, 1.0f),
+             "World coordinates mapped onto the TransferFunction's range by colorMode POSITION");
+    addField(color, "color", glm::vec3(1.0f), "Colour of colorMode CONSTANT, linear RGB");
+    addField(stretch, "stretch", 1.0f,
+             "Elongation of each square along its projected vector, >= 1 (figure 6's wisps)");
 }
 
 void VectorSplat::checkFields() const {

@@ -47,18 +47,35 @@ struct VolumeData::Loaded {
 };
 
 VolumeData::VolumeData() {
-    addField(source, "source", VolumeSource::Blob, kVolumeSourceNames);
-    addField(fileName, "fileName", std::string());
-    addField(gridName, "gridName", std::string());
-    addField(resolution, "resolution", glm::vec3(64.0f));
-    addField(time, "time", 0.0f);
-    addField(timeStep, "timeStep", 0);
-    addField(component, "component", VolumeComponent::Magnitude, kVolumeComponentNames);
-    addField(dimensions, "dimensions", glm::vec3(0.0f));
-    addField(dataType, "dataType", volume::RawValueType::Float32, kVolumeDataTypeNames);
-    addField(byteOrder, "byteOrder", volume::RawEndian::Little, kVolumeByteOrderNames);
-    addField(headerBytes, "headerBytes", 0);
-    addField(components, "components", 1);
+    addField(source, "source", VolumeSource::Blob, kVolumeSourceNames,
+             "Where the grid comes from: a file format (FILE_…), a built-in generator, or MEMORY "
+             "(a grid given in C++)");
+    addField(fileName, "fileName", std::string(),
+             "The file of the FILE_ sources, relative to the scene file's folder");
+    addField(gridName, "gridName", std::string(),
+             "FILE_VDB: the grid, FILE_NETCDF: the variable (either may stay empty when the "
+             "file has one); with component SCALAR the generator's scalar grid");
+    addField(resolution, "resolution", glm::vec3(64.0f),
+             "Generators: samples along x, y, z (whole numbers >= 1); files bring their own");
+    addField(time, "time", 0.0f,
+             "Animation time of the generators TORNADO (frames) and JET_STREAM (days)");
+    addField(timeStep, "timeStep", 0,
+             "FILE_NETCDF: step of a 4-D variable's first (time) dimension, from 0");
+    addField(component, "component", VolumeComponent::Magnitude, kVolumeComponentNames,
+             "The scalar that scalar splats classify, from vector data: MAGNITUDE |v|, or "
+             "SCALAR the grid named by gridName");
+    addField(dimensions, "dimensions", glm::vec3(0.0f),
+             "FILE_RAW_HEADERLESS: voxels along x, y, z (whole numbers >= 1, x fastest in the "
+             "file)");
+    addField(dataType, "dataType", volume::RawValueType::Float32, kVolumeDataTypeNames,
+             "FILE_RAW_HEADERLESS: the type of each value in the file");
+    addField(byteOrder, "byteOrder", volume::RawEndian::Little, kVolumeByteOrderNames,
+             "FILE_RAW_HEADERLESS: the byte order of multi-byte values");
+    addField(headerBytes, "headerBytes", 0,
+             "FILE_RAW_HEADERLESS: bytes to skip before the values, >= 0");
+    addField(components, "components", 1,
+             "FILE_RAW_HEADERLESS: values per voxel, 1 (scalars) or 3 (vectors, x y z "
+             "interleaved)");
 }
 
 namespace {

@@ -15,7 +15,7 @@ namespace texsplat::sg {
 ///     static constexpr const char* kTypeName = "Cube";
 ///     sg::SFFloat size;
 /// protected:
-///     Cube() { addField(size, "size", 2.0f); }
+///     Cube() { addField(size, "size", 2.0f, "Length of each edge, in model units"); }
 /// };
 /// @endcode
 /// Keep the constructor protected (or public) and non-final: `create()` is the only way to make

@@ -2,6 +2,7 @@
 
 #include "scenegraph/Assert.h"
 #include "scenegraph/EngineOutputBase.h"
+#include "scenegraph/detail/FieldDescriptions.h"
 
 namespace texsplat::sg {
 
@@ -44,9 +45,10 @@ void Engine::notify(const Field* source) {
     }
 }
 
-void Engine::addOutput(EngineOutputBase& output, std::string name) {
+void Engine::addOutput(EngineOutputBase& output, std::string name, const char* description) {
     TEXSPLAT_ASSERT(output.mEngine == nullptr, "Engine::addOutput(): output added twice");
     TEXSPLAT_ASSERT(this->findOutput(name) == nullptr, "Engine::addOutput(): duplicate name");
+    detail::recordFieldDescription(*this, name, description);
     output.mEngine = this;
     output.mName = std::move(name);
     mOutputs.push_back(&output);

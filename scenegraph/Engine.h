@@ -42,8 +42,9 @@ public:
 protected:
     Engine() = default;
 
-    /// @brief Registers `output` under `name`; call once per output in the constructor.
-    void addOutput(EngineOutputBase& output, std::string name);
+    /// @brief Registers `output` under `name` with its one-line meaning (as addField());
+    /// call once per output in the constructor.
+    void addOutput(EngineOutputBase& output, std::string name, const char* description);
 
     /// @brief Computes and sets every output from the inputs.
     virtual void evaluate() = 0;

@@ -2,6 +2,7 @@
 
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/detail/FieldDescriptions.h"
 #include "scenegraph/fields/Field.h"
 
 #include <cctype>
@@ -66,9 +67,10 @@ std::string FieldContainer::describe() const {
 
 void FieldContainer::notify(const Field* source) { notifyObservers(source); }
 
-void FieldContainer::attachField(Field& field, std::string name) {
+void FieldContainer::attachField(Field& field, std::string name, const char* description) {
     TEXSPLAT_ASSERT(field.mContainer == nullptr, "FieldContainer::addField(): field added twice");
     TEXSPLAT_ASSERT(this->findField(name) == nullptr, "FieldContainer::addField(): duplicate name");
+    detail::recordFieldDescription(*this, name, description);
     field.mContainer = this;
     field.mName = std::move(name);
     field.mIsDefault = true;

@@ -14,7 +14,7 @@ namespace texsplat::sg {
 /// @brief Common base of Node and Engine: something that owns named, typed fields.
 ///
 /// Fields are public members of the derived class, registered once in its constructor with
-/// `addField(member, "name", default)`. That one registration is what the reader, the writer
+/// `addField(member, "name", default, "meaning")`. That one registration is what the reader, the writer
 /// and the registry use: `fields()` lists them in declaration order, `findField(name)` finds one.
 /// Containers are always owned by `std::shared_ptr` (created by `T::create()`).
 class FieldContainer : public Notifier, public std::enable_shared_from_this<FieldContainer> {
@@ -60,23 +60,27 @@ public:
 protected:
     FieldContainer() = default;
 
-    /// @brief Registers `field` under `name` and gives it its default value (it then reports
-    /// `isDefault()`). Call once per field, in the constructor. The value type is whatever the
-    /// field's `setValue()` accepts.
-    template <class F, class V> void addField(F& field, std::string name, V&& defaultValue) {
+    /// @brief Registers `field` under `name`, gives it its default value (it then reports
+    /// `isDefault()`) and declares its one-line meaning (NodeType::fieldDescription(); say what
+    /// it does, its unit and its range, not its type or default, which the reference shows).
+    /// Call once per field, in the constructor. The value type is whatever the field's
+    /// `setValue()` accepts.
+    template <class F, class V>
+    void addField(F& field, std::string name, V&& defaultValue, const char* description) {
         field.setValue(std::forward<V>(defaultValue));
-        attachField(field, std::move(name));
+        attachField(field, std::move(name), description);
     }
 
-    /// @brief Registers an enumerated field: its value names and default, declared once.
+    /// @brief Registers an enumerated field: its value names, default and meaning, declared once.
     template <class F, class E>
-    void addField(F& field, std::string name, E defaultValue, const EnumNames& names) {
+    void addField(F& field, std::string name, E defaultValue, const EnumNames& names,
+                  const char* description) {
         field.setEnumNames(names);
-        addField(field, std::move(name), defaultValue);
+        addField(field, std::move(name), defaultValue, description);
     }
 
 private:
-    void attachField(Field& field, std::string name);
+    void attachField(Field& field, std::string name, const char* description);
 
     std::vector<Field*> mFields;
     std::string mName;

@@ -1,6 +1,7 @@
 #include "scenegraph/NodeType.h"
 
 #include "scenegraph/Error.h"
+#include "scenegraph/detail/FieldDescriptions.h"
 
 namespace texsplat::sg {
 
@@ -21,6 +22,14 @@ std::shared_ptr<FieldContainer> NodeType::create() const {
         throw DataError("cannot create a " + mName + ": it is an abstract type");
     }
     return mFactory();
+}
+
+const std::string& NodeType::fieldDescription(std::string_view fieldName) const {
+    std::call_once(mDescriptionsOnce,
+                   [this] { mDescriptions = detail::collectFieldDescriptions(*this); });
+    static const std::string kNone;
+    const auto found = mDescriptions.find(fieldName);
+    return found == mDescriptions.end() ? kNone : found->second;
 }
 
 } // namespace texsplat::sg

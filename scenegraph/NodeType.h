@@ -2,7 +2,10 @@
 
 #include "scenegraph/Fwd.h"
 
+#include <functional>
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 
@@ -42,10 +45,21 @@ public:
     /// @brief A new default instance. Throws DataError for abstract types.
     std::shared_ptr<FieldContainer> create() const;
 
+    /// @brief The one-line meaning of the field, engine input or engine output named
+    /// `fieldName`, as its class declared it (`addField(size, "size", 1.6f, "meaning")`);
+    /// empty for a name the type does not have and for abstract types.
+    ///
+    /// Kept here, once per type, not in the fields: the first call makes one instance and keeps
+    /// what its constructors declared (thread-safe). The reference, `texsplat info --reference`
+    /// and tools show it.
+    const std::string& fieldDescription(std::string_view fieldName) const;
+
 private:
     std::string mName;
     const NodeType* mParent;
     Factory mFactory;
+    mutable std::once_flag mDescriptionsOnce;
+    mutable std::map<std::string, std::string, std::less<>> mDescriptions;
 };
 
 } // namespace texsplat::sg

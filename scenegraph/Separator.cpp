@@ -5,10 +5,14 @@
 namespace texsplat::sg {
 
 Separator::Separator() {
-    addField(renderCaching, "renderCaching", CacheEnabled::Auto, kCacheEnabledNames);
-    addField(boundingBoxCaching, "boundingBoxCaching", CacheEnabled::Auto, kCacheEnabledNames);
-    addField(renderCulling, "renderCulling", CacheEnabled::Auto, kCacheEnabledNames);
-    addField(pickCulling, "pickCulling", CacheEnabled::Auto, kCacheEnabledNames);
+    addField(renderCaching, "renderCaching", CacheEnabled::Auto, kCacheEnabledNames,
+             "Inventor's render-cache hint; read and written back, not used by texsplat");
+    addField(boundingBoxCaching, "boundingBoxCaching", CacheEnabled::Auto, kCacheEnabledNames,
+             "Inventor's bounding-box-cache hint; read and written back, not used by texsplat");
+    addField(renderCulling, "renderCulling", CacheEnabled::Auto, kCacheEnabledNames,
+             "Inventor's view-frustum culling hint; read and written back, not used by texsplat");
+    addField(pickCulling, "pickCulling", CacheEnabled::Auto, kCacheEnabledNames,
+             "Inventor's pick-culling hint; read and written back, not used by texsplat");
 }
 
 void Separator::doAction(Action& action) {

@@ -4,7 +4,10 @@
 
 namespace texsplat::sg {
 
-Switch::Switch() { addField(whichChild, "whichChild", kNone); }
+Switch::Switch() {
+    addField(whichChild, "whichChild", kNone,
+             "Index of the one child to traverse (from 0); -1 traverses none, -3 all");
+}
 
 void Switch::doAction(Action& action) {
     const std::int32_t which = whichChild.value();

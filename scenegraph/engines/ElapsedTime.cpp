@@ -3,12 +3,20 @@
 namespace texsplat::sg {
 
 ElapsedTime::ElapsedTime() {
-    addField(timeIn, "timeIn", 0.0f);
-    addField(speed, "speed", 1.0f);
-    addField(on, "on", true);
-    addField(pause, "pause", false);
-    addField(reset, "reset", SFTrigger::Value{});
-    addOutput(timeOut, "timeOut");
+    addField(timeIn, "timeIn", 0.0f,
+             "Input clock in seconds (texsplat render and view connect it to their clock); the "
+             "count starts at its first value");
+    addField(speed, "speed", 1.0f,
+             "Rate of the elapsed time per second of timeIn, from the moment it changes; "
+             "negative runs backwards");
+    addField(on, "on", true,
+             "FALSE stops the clock; TRUE restarts it where it stopped (the time while off is "
+             "lost)");
+    addField(pause, "pause", false,
+             "TRUE freezes the output while the time keeps counting; FALSE jumps to the count");
+    addField(reset, "reset", SFTrigger::Value{},
+             "Trigger (no value): firing it restarts the count at 0");
+    addOutput(timeOut, "timeOut", "Elapsed time in seconds: the count scaled by speed");
 }
 
 void ElapsedTime::notify(const Field* source) {

@@ -16,17 +16,19 @@ namespace texsplat::sg {
 
 namespace {
 
-// A value as a table cell: code, with '|' escaped; a field without a value (SFTrigger) says so,
-// since an empty code span shows as two backticks.
-std::string cell(const std::string& text) {
-    if (text.empty()) {
-        return "(no value)";
-    }
+// `text` with '|' escaped, so that it stays in its table cell.
+std::string escapeCell(const std::string& text) {
     std::string escaped;
     for (char c : text) {
         escaped += c == '|' ? std::string("\\|") : std::string(1, c);
     }
-    return "`" + escaped + "`";
+    return escaped;
+}
+
+// A value as a table cell: code; a field without a value (SFTrigger) says so, since an empty
+// code span shows as two backticks.
+std::string valueCell(const std::string& text) {
+    return text.empty() ? "(no value)" : "`" + escapeCell(text) + "`";
 }
 
 void writeType(std::ostringstream& out, const NodeType& type) {
@@ -48,8 +50,8 @@ void writeType(std::ostringstream& out, const NodeType& type) {
     if (instance->fields().empty()) {
         out << "No fields.\n\n";
     } else {
-        out << "| " << (engine != nullptr ? "input" : "field") << " | type | default |\n"
-            << "|---|---|---|\n";
+        out << "| " << (engine != nullptr ? "input" : "field") << " | type | default | meaning |\n"
+            << "|---|---|---|---|\n";
         for (const Field* field : instance->fields()) {
             std::string typeText(field->typeName());
             if (const auto* enumField = dynamic_cast<const SFEnum*>(field);
@@ -57,14 +59,16 @@ void writeType(std::ostringstream& out, const NodeType& type) {
                 typeText += " (" + enumField->enumNames()->list() + ")";
             }
             out << "| " << field->name() << " | " << typeText << " | "
-                << cell(field->valueText()) << " |\n";
+                << valueCell(field->valueText()) << " | "
+                << escapeCell(type.fieldDescription(field->name())) << " |\n";
         }
         out << "\n";
     }
     if (engine != nullptr && !engine->outputs().empty()) {
-        out << "| output | type |\n|---|---|\n";
+        out << "| output | type | meaning |\n|---|---|---|\n";
         for (const EngineOutputBase* output : engine->outputs()) {
-            out << "| " << output->name() << " | " << output->typeName() << " |\n";
+            out << "| " << output->name() << " | " << output->typeName() << " | "
+                << escapeCell(type.fieldDescription(output->name())) << " |\n";
         }
         out << "\n";
     }

@@ -6,7 +6,8 @@ namespace texsplat::sg {
 
 /// @brief The scene-file reference of every type in the NodeRegistry, as Markdown: for each
 /// node and engine type (sorted by name) its kind, parent, whether it takes children, and a
-/// table of its fields with types and defaults (engines: inputs and outputs).
+/// table of its fields with types, defaults and meanings (NodeType::fieldDescription(); engines:
+/// inputs and outputs).
 ///
 /// Generated from the types' own field declarations, so it cannot drift from the code;
 /// `texsplat info --reference --update docs/scene-files.md` puts it into the documentation.

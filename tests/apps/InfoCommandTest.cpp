@@ -171,16 +171,16 @@ TEST_F(InfoCommandTest, aBrokenDataFileGetsTheReadersMessage) {
                                         "reads versions 1, 2 and 3\n");
 }
 
-TEST_F(InfoCommandTest, referenceListsTypesWithFieldsAndDefaults) {
+TEST_F(InfoCommandTest, referenceListsTypesWithFieldsDefaultsAndMeanings) {
     const auto output = runTexsplat("info --reference");
     EXPECT_EQ(output.exitCode, 0) << output.standardError;
     EXPECT_NE(output.standardOutput.find(R"(### Switch
 
 Node, derived from Group. Takes child nodes. Standard Inventor type.
 
-| field | type | default |
-|---|---|---|
-| whichChild | SFInt32 | `-1` |
+| field | type | default | meaning |
+|---|---|---|---|
+| whichChild | SFInt32 | `-1` | Index of the one child to traverse (from 0); -1 traverses none, -3 all |
 )"),
               std::string::npos)
         << output.standardOutput;

@@ -4,6 +4,8 @@
 #include "nodes/PerspectiveCamera.h"
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
+#include "scenegraph/Engine.h"
+#include "scenegraph/EngineOutputBase.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FieldContainer.h"
 #include "scenegraph/Group.h"
@@ -18,6 +20,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 namespace texsplat::nodes {
 namespace {
@@ -118,6 +121,38 @@ TEST(NodeTypes, everyTypeRoundTripsWithEveryFieldSet) {
           "TextureSplat", "GaussianSplat", "Separator", "Switch", "ElapsedTime"}) {
         EXPECT_EQ(covered.count(name), 1u) << name;
     }
+}
+
+// The reference, `texsplat info --reference` and tools show each field's meaning: every field and
+// engine output of every registered type (the library's and the engines') declares one line.
+TEST(NodeTypes, everyFieldOfEveryTypeHasAOneLineDescription) {
+    registerNodeTypes();
+    sg::registerEngineTypes(sg::NodeRegistry::instance());
+    std::size_t described = 0;
+    for (const sg::NodeType* type : sg::NodeRegistry::instance().types()) {
+        if (type->isAbstract()) {
+            continue;
+        }
+        const std::shared_ptr<sg::FieldContainer> instance = type->create();
+        std::vector<std::string> names;
+        for (const sg::Field* field : instance->fields()) {
+            names.push_back(field->name());
+        }
+        if (const auto* engine = dynamic_cast<const sg::Engine*>(instance.get())) {
+            for (const sg::EngineOutputBase* output : engine->outputs()) {
+                names.push_back(output->name());
+            }
+        }
+        for (const std::string& name : names) {
+            const std::string& description = type->fieldDescription(name);
+            EXPECT_GE(description.size(), 10u) << type->name() << "." << name << ": '"
+                                               << description << "'";
+            EXPECT_EQ(description.find('\n'), std::string::npos) << type->name() << "." << name;
+            ++described;
+        }
+    }
+    // Over a hundred fields: the loop did see the types.
+    EXPECT_GT(described, 100u);
 }
 
 } // namespace

@@ -16,7 +16,7 @@ public:
     MFNode layers;
 
 protected:
-    Layers() { addField(layers, "layers", std::vector<Node::Ptr>{}); }
+    Layers() { addField(layers, "layers", std::vector<Node::Ptr>{}, "Nodes drawn in order"); }
 };
 
 TEST(MFNode, holdsNodesAndKeepsParentsInStep) {

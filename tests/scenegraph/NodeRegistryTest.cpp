@@ -21,8 +21,8 @@ public:
 
 protected:
     Wobble() {
-        addField(amplitude, "amplitude", 0.25f);
-        addField(points, "points", std::vector<glm::vec3>{});
+        addField(amplitude, "amplitude", 0.25f, "Height of the wave");
+        addField(points, "points", std::vector<glm::vec3>{}, "Sample positions");
     }
 };
 

@@ -18,7 +18,9 @@ public:
     SFEnum textureOperator;
 
 protected:
-    Splat() { addField(textureOperator, "operator", Operator::Blend, kOperatorNames); }
+    Splat() {
+        addField(textureOperator, "operator", Operator::Blend, kOperatorNames, "Texture operator");
+    }
 };
 
 TEST(SFEnum, defaultNamesAndTypedAccess) {

@@ -16,7 +16,7 @@ public:
     SFNode target;
 
 protected:
-    Holder() { addField(target, "target", nullptr); }
+    Holder() { addField(target, "target", nullptr, "The node held"); }
 };
 
 TEST(SFNode, holdsASharedNodeAndBecomesItsParent) {

@@ -48,23 +48,23 @@ public:
 
 protected:
     AllFields() {
-        addField(flag, "flag", true);
-        addField(count, "count", 3);
-        addField(size, "size", 1.6f);
-        addField(label, "label", std::string("splat"));
-        addField(offset, "offset", glm::vec2(0.0f));
-        addField(position, "position", glm::vec3(0.0f));
-        addField(color, "color", glm::vec3(1.0f));
-        addField(orientation, "orientation", Rotation());
-        addField(matrix, "matrix", glm::mat4(1.0f));
-        addField(quality, "quality", Quality::Draft, kQualityNames);
-        addField(node, "node", std::shared_ptr<Node>());
-        addField(indices, "indices", std::vector<std::int32_t>{});
-        addField(weights, "weights", std::vector<float>{0.5f});
-        addField(points, "points", std::vector<glm::vec3>{});
-        addField(colors, "colors", std::vector<glm::vec3>{});
-        addField(names, "names", std::vector<std::string>{});
-        addField(nodes, "nodes", std::vector<std::shared_ptr<Node>>{});
+        addField(flag, "flag", true, "The flag of the test");
+        addField(count, "count", 3, "The count of the test");
+        addField(size, "size", 1.6f, "The size of the test");
+        addField(label, "label", std::string("splat"), "The label of the test");
+        addField(offset, "offset", glm::vec2(0.0f), "The offset of the test");
+        addField(position, "position", glm::vec3(0.0f), "The position of the test");
+        addField(color, "color", glm::vec3(1.0f), "The color of the test");
+        addField(orientation, "orientation", Rotation(), "The orientation of the test");
+        addField(matrix, "matrix", glm::mat4(1.0f), "The matrix of the test");
+        addField(quality, "quality", Quality::Draft, kQualityNames, "The quality of the test");
+        addField(node, "node", std::shared_ptr<Node>(), "The node of the test");
+        addField(indices, "indices", std::vector<std::int32_t>{}, "The indices of the test");
+        addField(weights, "weights", std::vector<float>{0.5f}, "The weights of the test");
+        addField(points, "points", std::vector<glm::vec3>{}, "The points of the test");
+        addField(colors, "colors", std::vector<glm::vec3>{}, "The colors of the test");
+        addField(names, "names", std::vector<std::string>{}, "The names of the test");
+        addField(nodes, "nodes", std::vector<std::shared_ptr<Node>>{}, "The nodes of the test");
     }
 };
 

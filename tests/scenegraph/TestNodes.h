@@ -32,7 +32,7 @@ public:
     }
 
 protected:
-    TestCube() { addField(size, "size", 2.0f); }
+    TestCube() { addField(size, "size", 2.0f, "Edge length"); }
 };
 
 /// A Transform-like node: translates what follows it.
@@ -47,7 +47,9 @@ public:
     }
 
 protected:
-    TestTranslation() { addField(translation, "translation", glm::vec3(0.0f)); }
+    TestTranslation() {
+        addField(translation, "translation", glm::vec3(0.0f), "Offset of what follows");
+    }
 };
 
 /// An engine: output = 2 * input; counts its evaluations.
@@ -60,8 +62,8 @@ public:
 
 protected:
     TestDoubler() {
-        addField(input, "input", 1.0f);
-        addOutput(output, "output");
+        addField(input, "input", 1.0f, "The number to double");
+        addOutput(output, "output", "Twice input");
     }
     void evaluate() override {
         ++evaluations;
