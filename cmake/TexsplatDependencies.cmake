@@ -37,6 +37,15 @@ if(TEXSPLAT_BUILD_APPS)
     find_package(CLI11 REQUIRED)
     pkg_check_modules(stb REQUIRED IMPORTED_TARGET GLOBAL stb)
 endif()
+# The font of labels drawn into images, such as the colour legend's (Debian: fonts-dejavu-core).
+# Without it labels use the built-in bitmap font, with a warning at run time.
+find_file(TEXSPLAT_LABEL_FONT_FILE DejaVuSans.ttf
+    PATHS /usr/share/fonts/truetype/dejavu /usr/share/fonts/TTF /usr/share/fonts/dejavu
+    DOC "TrueType font of the labels drawn into images")
+if(NOT TEXSPLAT_LABEL_FONT_FILE)
+    message(STATUS "DejaVuSans.ttf not found (Debian: fonts-dejavu-core): image labels will use "
+                   "the built-in bitmap font")
+endif()
 if(TEXSPLAT_WITH_VIEWER AND TEXSPLAT_BUILD_APPS)
     find_package(glfw3 REQUIRED)
     pkg_check_modules(imgui REQUIRED IMPORTED_TARGET GLOBAL imgui)

@@ -7,7 +7,7 @@ packages=(
     cmake ninja-build g++ pkg-config
     libglm-dev libhwy-dev libtbb-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0
     libopenvdb-dev libboost-iostreams-dev libtinygltf-dev nlohmann-json3-dev libopenexr-dev
-    libstb-dev
+    libstb-dev fonts-dejavu-core
     libcli11-dev libglfw3-dev libimgui-dev
     libgtest-dev libbenchmark-dev libcoin-dev
     clang libclang-rt-14-dev xvfb xauth locales

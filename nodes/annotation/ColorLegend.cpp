@@ -2,7 +2,7 @@
 
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
-#include "nodes/annotation/NumberFont.h"
+#include "nodes/annotation/LabelFont.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/SearchAction.h"
 
@@ -14,7 +14,6 @@ namespace texsplat::annotation {
 namespace {
 
 struct Layout {
-    int scale = 1;     // font scale
     int margin = 0;    // from the image edge
     int gap = 0;       // between bar and labels
     int thickness = 0; // of the bar
@@ -22,10 +21,10 @@ struct Layout {
 
 Layout layoutFor(int width, int height) {
     const int side = std::min(width, height);
+    const int step = 1 + side / 256; // one more every 256 pixels
     Layout layout;
-    layout.scale = 1 + side / 256;
-    layout.margin = 4 * layout.scale + side / 32;
-    layout.gap = 3 * layout.scale;
+    layout.margin = 4 * step + side / 32;
+    layout.gap = 3 * step;
     layout.thickness = std::max(6, side / 24);
     return layout;
 }
@@ -79,11 +78,11 @@ ColorLegend ColorLegend::ofScene(sg::Node& root, LegendPosition position) {
 
 image::ImageRegion ColorLegend::barRegion(int width, int height) const {
     const Layout layout = layoutFor(width, height);
-    const int labelWidth = NumberFont::textWidth(
-        std::max({label(mRange.x), label(mRange.y), label(0.5 * (double(mRange.x) + mRange.y))},
-                 [](const std::string& a, const std::string& b) { return a.size() < b.size(); }),
-        layout.scale);
-    const int labelHeight = NumberFont::kGlyphHeight * layout.scale;
+    const LabelFont font = LabelFont::forImage(width, height);
+    const int labelWidth = std::max({font.textWidth(label(mRange.x)),
+                                     font.textWidth(label(mRange.y)),
+                                     font.textWidth(label(0.5 * (double(mRange.x) + mRange.y)))});
+    const int labelHeight = font.height();
     image::ImageRegion bar;
     if (isVertical(mPosition)) {
         bar.width = layout.thickness;
@@ -120,10 +119,11 @@ void ColorLegend::draw(image::Image& image) const {
             }
         }
     }
-    const int labelHeight = NumberFont::kGlyphHeight * layout.scale;
+    const LabelFont font = LabelFont::forImage(image.width(), image.height());
+    const int labelHeight = font.height();
     for (const float t : {0.0f, 0.5f, 1.0f}) {
         const std::string text = label(double(mRange.x) + t * (double(mRange.y) - mRange.x));
-        const int textWidth = NumberFont::textWidth(text, layout.scale);
+        const int textWidth = font.textWidth(text);
         glm::ivec2 topLeft;
         if (vertical) {
             topLeft.x = bar.x + bar.width + layout.gap;
@@ -134,9 +134,9 @@ void ColorLegend::draw(image::Image& image) const {
             topLeft.x = keepInside(centre - textWidth / 2, textWidth, image.width());
             topLeft.y = bar.y + bar.height + layout.gap;
         }
-        NumberFont::draw(image, topLeft + glm::ivec2(layout.scale), text, layout.scale,
-                         glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-        NumberFont::draw(image, topLeft, text, layout.scale, glm::vec4(1.0f));
+        font.draw(image, topLeft + glm::ivec2(font.shadowOffset()), text,
+                  glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+        font.draw(image, topLeft, text, glm::vec4(1.0f));
     }
 }
 

@@ -26,9 +26,10 @@ LegendPosition parseLegendPosition(const std::string& name);
 ///
 /// The bar is opaque (alpha 1, colour S(t) as the image stores colour: linear, so a PNG encodes
 /// the bar like an opaque medium of that colour); lower values are at the bottom (vertical) or
-/// left (horizontal). Labels are white with a black shadow, `%.3g` of the value, in the built-in
-/// NumberFont, on the right of a vertical bar and below a horizontal one. Sizes follow the
-/// image: the font scale is 1 up to 255 pixels (the smaller side) and grows by one every 256.
+/// left (horizontal). Labels are white with a black shadow, `%.3g` of the value, in the
+/// LabelFont (DejaVu Sans, anti-aliased; the built-in NumberFont when the font file is missing),
+/// on the right of a vertical bar and below a horizontal one. Sizes follow the image
+/// (LabelFont::forImage(); margins grow by a step every 256 pixels of the smaller side).
 class ColorLegend {
 public:
     /// @brief The colour map S(t), t in [0, 1].
