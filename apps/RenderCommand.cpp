@@ -1,8 +1,8 @@
 #include "apps/Commands.h"
+#include "apps/ImageAnnotations.h"
 #include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
 
-#include "nodes/annotation/ColorLegend.h"
 #include "nodes/image/ImageIo.h"
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/FrameAction.h"
@@ -68,8 +68,7 @@ struct RenderArguments {
     std::string backend = "auto";
     int threads = 0;
     std::string background = "black";
-    bool colorbar = false;
-    std::string colorbarPosition = "right";
+    AnnotationOptions annotations;
     std::string memoryLimit;
     BudgetOverride budget;
 };
@@ -374,23 +373,11 @@ private:
     int mLastPercent = -1;
 };
 
-// Writes `image`, with the legend drawn into a copy when there is one.
-void writeWithLegend(const image::Image& image, const std::string& path,
-                     const std::optional<annotation::ColorLegend>& legend) {
-    if (!legend) {
-        image::writeImage(image, path);
-        return;
-    }
-    image::Image annotated = image;
-    legend->draw(annotated);
-    image::writeImage(annotated, path);
-}
-
 // The reference images of --raycast: no GL context; the same camera, size and background as
 // the GL render, so the two images compare pixel by pixel.
 void runRayCast(const RenderArguments& arguments, const Animation& animation, sg::Node& root,
                 glm::ivec2 size, const glm::vec4& background, const SetupTimes& setup,
-                const std::optional<annotation::ColorLegend>& legend) {
+                const ImageAnnotations& annotations) {
     sg::RayCastAction action(size.x, size.y);
     action.setBackground(background);
     action.setStepSize(arguments.rayCastStep);
@@ -405,7 +392,7 @@ void runRayCast(const RenderArguments& arguments, const Animation& animation, sg
         integrate += secondsSince(start);
         const image::Image image = render::rayCastImage(action);
         start = Clock::now();
-        writeWithLegend(image, animation.output.name(frame), legend);
+        annotations.write(image, animation.output.name(frame));
         write += secondsSince(start);
         clock.reportWritten(frame);
     }
@@ -418,21 +405,6 @@ void runRayCast(const RenderArguments& arguments, const Animation& animation, sg
         printFrameTime("ray cast", integrate, animation.frames, note);
         printFrameTime("write", write, animation.frames, "encode and rename");
     }
-}
-
-// The legend of --colorbar, from the scene as it will be drawn.
-std::optional<annotation::ColorLegend> legendOf(const RenderArguments& arguments,
-                                                sg::Node& root) {
-    if (!arguments.colorbar) {
-        return std::nullopt;
-    }
-    annotation::LegendPosition position = annotation::LegendPosition::Right;
-    try {
-        position = annotation::parseLegendPosition(arguments.colorbarPosition);
-    } catch (const DataError& error) {
-        throw DataError(std::string("--colorbar-position: ") + error.what());
-    }
-    return annotation::ColorLegend::ofScene(root, position);
 }
 
 Framing framingOf(const RenderArguments& arguments) {
@@ -477,9 +449,9 @@ void runRender(const RenderArguments& arguments) {
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 
-    const std::optional<annotation::ColorLegend> legend = legendOf(arguments, *root);
+    const ImageAnnotations annotations(arguments.annotations, *root);
     if (arguments.rayCast) {
-        runRayCast(arguments, animation, *root, size, background, setup, legend);
+        runRayCast(arguments, animation, *root, size, background, setup, annotations);
         return;
     }
     render::BackendChoice backend = render::BackendChoice::resolve(request);
@@ -489,7 +461,7 @@ void runRender(const RenderArguments& arguments) {
     double write = 0.0;
     const auto writeFrame = [&](const image::Image& image, int frame) {
         const Clock::time_point writeStart = Clock::now();
-        writeWithLegend(image, animation.output.name(frame), legend);
+        annotations.write(image, animation.output.name(frame));
         write += secondsSince(writeStart);
         clock.reportWritten(frame);
     };
@@ -595,12 +567,7 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "same for PNG and EXR (transparent: the premultiplied layer alone, for "
                         "compositing; EXR keeps it exactly)")
         ->capture_default_str();
-    command->add_flag("--colorbar", arguments->colorbar,
-                      "Draw a legend of the first TransferFunction's colours with the values of "
-                      "its range into the image");
-    command->add_option("--colorbar-position", arguments->colorbarPosition,
-                        "Where --colorbar draws the legend: right, left, top or bottom")
-        ->capture_default_str();
+    addAnnotationOptions(*command, arguments->annotations);
     command->add_flag("--raycast", arguments->rayCast,
                       "Render the reference with the CPU ray caster (exact emission-absorption of "
                       "the same reconstructed field, no GL context; progress on stderr)");

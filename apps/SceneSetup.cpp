@@ -143,24 +143,41 @@ glm::vec3 parseDirection(const std::string& text) {
     return *direction;
 }
 
-glm::vec4 parseBackground(const std::string& text) {
+namespace {
+
+// "black", "white" or "r,g,b" (linear, 0 to 1) as an opaque colour; nothing for other text.
+std::optional<glm::vec4> opaqueColorNamed(const std::string& text) {
     if (text == "black") {
         return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
     }
     if (text == "white") {
         return glm::vec4(1.0f);
     }
-    if (text == "transparent") {
-        return glm::vec4(0.0f);
-    }
     const glm::vec3 color = parseThreeNumbers(text).value_or(glm::vec3(-1.0f));
     const bool inRange = color.r >= 0.0f && color.r <= 1.0f && color.g >= 0.0f &&
                          color.g <= 1.0f && color.b >= 0.0f && color.b <= 1.0f;
-    if (!inRange) {
-        throw DataError("--background: expected black, white, transparent or r,g,b (linear, 0 to "
-                        "1), got '" + text + "'");
+    return inRange ? std::optional<glm::vec4>(glm::vec4(color, 1.0f)) : std::nullopt;
+}
+
+} // namespace
+
+glm::vec4 parseBackground(const std::string& text) {
+    if (text == "transparent") {
+        return glm::vec4(0.0f);
     }
-    return glm::vec4(color, 1.0f);
+    if (const std::optional<glm::vec4> color = opaqueColorNamed(text)) {
+        return *color;
+    }
+    throw DataError("--background: expected black, white, transparent or r,g,b (linear, 0 to 1), "
+                    "got '" + text + "'");
+}
+
+glm::vec4 parseOpaqueColor(const std::string& text, const std::string& option) {
+    if (const std::optional<glm::vec4> color = opaqueColorNamed(text)) {
+        return *color;
+    }
+    throw DataError(option + ": expected black, white or r,g,b (linear, 0 to 1), got '" + text +
+                    "'");
 }
 
 namespace {

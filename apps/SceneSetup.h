@@ -26,6 +26,10 @@ glm::vec3 parseDirection(const std::string& text);
 /// Throws DataError naming --background otherwise.
 glm::vec4 parseBackground(const std::string& text);
 
+/// @brief The opaque colour an option such as `--outline-color` names: "black", "white" or
+/// "r,g,b" (linear, 0 to 1). Throws DataError naming `option` otherwise.
+glm::vec4 parseOpaqueColor(const std::string& text, const std::string& option);
+
 /// @brief What --max-splats and --error-threshold ask of every splat node of a scene.
 struct BudgetOverride {
     std::string maxSplats;      ///< "" (the scene's own) or a whole number >= 0 (0: none)

@@ -1,0 +1,63 @@
+#include "apps/ImageAnnotations.h"
+
+#include "apps/SceneSetup.h"
+#include "nodes/annotation/VolumeOutline.h"
+#include "nodes/image/ImageIo.h"
+#include "scenegraph/Error.h"
+
+#include <CLI/CLI.hpp>
+
+namespace texsplat::apps {
+
+void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {
+    command.add_flag("--colorbar", options.colorbar,
+                     "Draw a legend of the first TransferFunction's colours with the values of "
+                     "its range into the image");
+    command
+        .add_option("--colorbar-position", options.colorbarPosition,
+                    "Where --colorbar draws the legend: right, left, top or bottom")
+        ->capture_default_str();
+    command.add_flag("--outline", options.outline,
+                     "Draw the 12 edges of each splat node's volume box into the image, seen by "
+                     "the scene's camera");
+    command
+        .add_option("--outline-color", options.outlineColor,
+                    "Colour of --outline: black, white or r,g,b (linear, 0 to 1)")
+        ->capture_default_str();
+}
+
+ImageAnnotations::ImageAnnotations(const AnnotationOptions& options, sg::Node& root)
+    : mRoot(root) {
+    if (options.outline) {
+        mOutlineColor = parseOpaqueColor(options.outlineColor, "--outline-color");
+    } else if (options.outlineColor != AnnotationOptions().outlineColor) {
+        throw DataError("--outline-color: only with --outline");
+    }
+    if (options.colorbar) {
+        annotation::LegendPosition position = annotation::LegendPosition::Right;
+        try {
+            position = annotation::parseLegendPosition(options.colorbarPosition);
+        } catch (const DataError& error) {
+            throw DataError(std::string("--colorbar-position: ") + error.what());
+        }
+        mLegend = annotation::ColorLegend::ofScene(root, position);
+    }
+}
+
+void ImageAnnotations::write(const image::Image& image, const std::string& path) const {
+    if (!mLegend && !mOutlineColor) {
+        image::writeImage(image, path);
+        return;
+    }
+    image::Image annotated = image;
+    if (mOutlineColor) {
+        annotation::VolumeOutline::ofScene(mRoot, image.width(), image.height(), *mOutlineColor)
+            .draw(annotated);
+    }
+    if (mLegend) {
+        mLegend->draw(annotated);
+    }
+    image::writeImage(annotated, path);
+}
+
+} // namespace texsplat::apps
