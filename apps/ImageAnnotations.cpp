@@ -17,21 +17,21 @@ void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {
         .add_option("--colorbar-position", options.colorbarPosition,
                     "Where --colorbar draws the legend: right, left, top or bottom")
         ->capture_default_str();
-    command.add_flag("--outline", options.outline,
-                     "Draw the 12 edges of each splat node's volume box into the image, seen by "
-                     "the scene's camera");
+    CLI::Option* outline =
+        command.add_flag("--outline", options.outline,
+                         "Draw the 12 edges of each splat node's volume box into the image, seen "
+                         "by the scene's camera");
     command
         .add_option("--outline-color", options.outlineColor,
                     "Colour of --outline: black, white or r,g,b (linear, 0 to 1)")
-        ->capture_default_str();
+        ->capture_default_str()
+        ->needs(outline);
 }
 
 ImageAnnotations::ImageAnnotations(const AnnotationOptions& options, sg::Node& root)
     : mRoot(root) {
     if (options.outline) {
         mOutlineColor = parseOpaqueColor(options.outlineColor, "--outline-color");
-    } else if (options.outlineColor != AnnotationOptions().outlineColor) {
-        throw DataError("--outline-color: only with --outline");
     }
     if (options.colorbar) {
         annotation::LegendPosition position = annotation::LegendPosition::Right;

@@ -89,11 +89,8 @@ DepthRange Camera::depthRangeFor(const sg::Box3& worldBox) const {
     float nearest = std::numeric_limits<float>::max();
     float farthest = std::numeric_limits<float>::lowest();
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 point((corner & 1) != 0 ? worldBox.max().x : worldBox.min().x,
-                              (corner & 2) != 0 ? worldBox.max().y : worldBox.min().y,
-                              (corner & 4) != 0 ? worldBox.max().z : worldBox.min().z);
         // The camera looks along -z in its own space: depth is -z.
-        const float depth = -(view * glm::vec4(point, 1.0f)).z;
+        const float depth = -(view * glm::vec4(worldBox.corner(corner), 1.0f)).z;
         nearest = std::min(nearest, depth);
         farthest = std::max(farthest, depth);
     }

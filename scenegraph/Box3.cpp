@@ -23,16 +23,18 @@ void Box3::extendBy(const Box3& box) {
     }
 }
 
+glm::vec3 Box3::corner(int index) const {
+    return {(index & 1) != 0 ? mMax.x : mMin.x, (index & 2) != 0 ? mMax.y : mMin.y,
+            (index & 4) != 0 ? mMax.z : mMin.z};
+}
+
 Box3 Box3::transformed(const glm::mat4& matrix) const {
     Box3 result;
     if (isEmpty()) {
         return result;
     }
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 point((corner & 1) != 0 ? mMax.x : mMin.x,
-                              (corner & 2) != 0 ? mMax.y : mMin.y,
-                              (corner & 4) != 0 ? mMax.z : mMin.z);
-        result.extendBy(glm::vec3(matrix * glm::vec4(point, 1.0f)));
+    for (int index = 0; index < 8; ++index) {
+        result.extendBy(glm::vec3(matrix * glm::vec4(corner(index), 1.0f)));
     }
     return result;
 }

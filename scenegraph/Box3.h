@@ -25,6 +25,10 @@ public:
     /// @brief Midpoint (undefined when empty).
     glm::vec3 center() const { return 0.5f * (mMin + mMax); }
 
+    /// @brief Corner `index` of the eight (0 to 7): bit 0 picks max().x over min().x, bit 1 the
+    /// y, bit 2 the z (undefined when empty).
+    glm::vec3 corner(int index) const;
+
     /// @brief Extent per axis; zero when empty.
     glm::vec3 size() const;
 

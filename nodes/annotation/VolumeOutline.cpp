@@ -18,7 +18,7 @@
 namespace texsplat::annotation {
 namespace {
 
-// The corners of a box: bit 0 of the index picks x, bit 1 y, bit 2 z.
+// The edges of a box between its corners (sg::Box3::corner()).
 constexpr std::array<std::pair<int, int>, 12> kEdges = {{{0, 1},
                                                          {2, 3},
                                                          {4, 5},
@@ -65,10 +65,7 @@ private:
                                  action.state().get<sg::ModelMatrixElement>().matrix;
         std::array<glm::vec4, 8> corners;
         for (int corner = 0; corner < 8; ++corner) {
-            const glm::vec3 point((corner & 1) != 0 ? box.max().x : box.min().x,
-                                  (corner & 2) != 0 ? box.max().y : box.min().y,
-                                  (corner & 4) != 0 ? box.max().z : box.min().z);
-            corners[corner] = toClip * glm::vec4(point, 1.0f);
+            corners[corner] = toClip * glm::vec4(box.corner(corner), 1.0f);
         }
         outline.boxes.push_back(corners);
     }

@@ -21,6 +21,15 @@ TEST(Box3, startsEmptyAndGrows) {
     EXPECT_EQ(box.max(), glm::vec3(1.0f, 2.0f, 3.0f));
 }
 
+TEST(Box3, cornersAreNumberedByTheirAxesBits) {
+    const Box3 box(glm::vec3(1.0f, 2.0f, 3.0f), glm::vec3(4.0f, 5.0f, 6.0f));
+    EXPECT_EQ(box.corner(0), box.min());
+    EXPECT_EQ(box.corner(1), glm::vec3(4.0f, 2.0f, 3.0f));
+    EXPECT_EQ(box.corner(2), glm::vec3(1.0f, 5.0f, 3.0f));
+    EXPECT_EQ(box.corner(4), glm::vec3(1.0f, 2.0f, 6.0f));
+    EXPECT_EQ(box.corner(7), box.max());
+}
+
 TEST(Box3, transformedBoundsTheMappedCorners) {
     const Box3 box(glm::vec3(-1.0f), glm::vec3(1.0f));
     const glm::mat4 turn = glm::rotate(glm::mat4(1.0f), glm::radians(45.0f), glm::vec3(0, 0, 1));
