@@ -9,6 +9,7 @@
 #include "nodes/render/RayCastImage.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/Splat.h"
+#include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/MemoryLimit.h"
 #include "scenegraph/actions/RayCastAction.h"
@@ -448,6 +449,7 @@ void runRender(const RenderArguments& arguments) {
     // The extension of a pattern is the extension of every frame's name: a frame number has no
     // letters, so a conversion inside the extension leaves no valid one either way.
     const image::ImageFormat format = image::supportedImageFormatOf(arguments.output);
+    requireWritableFile(animation.output.name(0), "the image");
     if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
         throw DataError("--raycast-step: only with --raycast");
     }
