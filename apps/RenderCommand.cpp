@@ -442,6 +442,23 @@ Framing framingOf(const RenderArguments& arguments) {
     return framing;
 }
 
+// Resolves --backend and, for GL, asks whether the device holds the image, before any work.
+render::BackendChoice chooseBackend(render::BackendRequest request,
+                                    [[maybe_unused]] const std::string& sizeText,
+                                    [[maybe_unused]] glm::ivec2 size) {
+    render::BackendChoice backend = render::BackendChoice::resolve(request);
+#ifdef TEXSPLAT_WITH_GL
+    if (backend.backend == render::Backend::Gl) {
+        try {
+            sg::RenderAction::checkSize(size.x, size.y);
+        } catch (const GlError& error) {
+            throw GlError("--size " + sizeText + ": " + error.what() + " (--backend cpu)");
+        }
+    }
+#endif
+    return backend;
+}
+
 void runRender(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
     // Refuse a bad output name or option before any work, so nothing is left half-done.
@@ -465,6 +482,8 @@ void runRender(const RenderArguments& arguments) {
                         std::to_string(arguments.threads));
     }
     applyMemoryLimit(arguments.memoryLimit);
+    const render::BackendChoice backend =
+        arguments.rayCast ? render::BackendChoice{} : chooseBackend(request, arguments.size, size);
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -484,7 +503,6 @@ void runRender(const RenderArguments& arguments) {
         runRayCast(arguments, animation, *root, size, background, setup, legend);
         return;
     }
-    render::BackendChoice backend = render::BackendChoice::resolve(request);
     const bool withDepth = format == image::ImageFormat::Exr;
     FrameClock clock(animation, *root);
     sg::RenderStatistics total;
