@@ -1,5 +1,6 @@
 #include "nodes/Camera.h"
 
+#include "nodes/detail/Finite.h"
 #include "nodes/detail/NodeContext.h"
 #include "nodes/elements/CameraElement.h"
 #include "scenegraph/Error.h"
@@ -116,6 +117,8 @@ void Camera::viewAll(const sg::Box3& box, float aspect) {
 }
 
 void Camera::doAction(sg::Action& action) {
+    detail::requireFinite(*this, position);
+    detail::requireFinite(*this, orientation);
     sg::State& state = action.state();
     const glm::mat4 modelMatrix = state.get<sg::ModelMatrixElement>().matrix;
     state.modify<CameraElement>() = CameraElement{this, modelMatrix};
