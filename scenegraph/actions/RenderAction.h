@@ -54,8 +54,8 @@ public:
     RenderAction(int width, int height,
                  gl::FramebufferColor color = gl::FramebufferColor::Rgba32F);
 
-    /// @brief Throws the GlError the constructor would for this size (gl::Framebuffer::checkSize()),
-    /// without allocating: commands ask it before any work.
+    /// @brief Throws the GlError the constructor would for this size, without allocating
+    /// (gl::Framebuffer::checkSize()): commands ask it before any work.
     static void checkSize(int width, int height,
                           gl::FramebufferColor color = gl::FramebufferColor::Rgba32F);
 

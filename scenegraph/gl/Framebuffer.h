@@ -39,7 +39,8 @@ class Framebuffer {
 public:
     /// @brief Creates the attachments and checks completeness.
     /// @throws GlError when no context is current, the size exceeds the driver's limit or
-    /// what the device holds (checkSize()), or the driver reports the framebuffer incomplete ("Framebuffer: incomplete (GL_...) for ...").
+    /// what the device holds (checkSize()), or the driver reports the framebuffer incomplete
+    /// ("Framebuffer: incomplete (GL_...) for ...").
     Framebuffer(int width, int height, FramebufferColor color = FramebufferColor::Rgba32F,
                 FramebufferDepth depth = FramebufferDepth::Depth24);
 

@@ -178,7 +178,7 @@ TEST_F(HostileInputTest, aWrongTransformOrCameraIsBlamedOnItsOwnNode) {
     expectError(eye, eye + ":3:9: PerspectiveCamera 'eye': position must be finite, got 0 inf 20");
 }
 
-// llvmpipe reports 16384 pixels a side but holds at most 1 GiB a texture: the framebuffer was
+// llvmpipe reports 16384 pixels a side but cannot hold a 16384² float texture: the framebuffer was
 // incomplete after the scene had been read. The device is asked first.
 TEST_F(HostileInputTest, aGlImageTheDeviceCannotHoldIsRefusedBeforeReadingTheScene) {
     const auto result = runTexsplat("render " + path("missing.iv") +
@@ -218,7 +218,7 @@ TEST_F(HostileInputTest, aVoxelSizeTooLargeToDrawIsBlamedOnTheVolume) {
                                                   transfer +
                                                   "VolumeData { source BLOB resolution 8 8 8 }\n"
                                                   "TextureSplat { }\n}\n");
-    expectError(huge, huge + ": cannot frame the scene: its bounding box reaches 1.1428572e+30, beyond "
-                             "1e+18, the largest coordinate texsplat draws in single precision "
-                             "(a Transform that scales too much?)");
+    expectError(huge, huge + ": cannot frame the scene: its bounding box reaches 1.1428572e+30, "
+                             "beyond 1e+18, the largest coordinate texsplat draws in single "
+                             "precision (a Transform that scales too much?)");
 }

@@ -160,7 +160,7 @@ TEST(Framebuffer, rejectsAnEmptySize) {
     }
 }
 
-// llvmpipe reports 16384 per side but holds at most 1 GiB a texture, so a 16384² float image
+// llvmpipe reports 16384 per side but cannot hold a 16384² float texture (its bytes), so the image
 // made an incomplete framebuffer (issue 14). Proxy textures ask without allocating.
 TEST(Framebuffer, refusesAnImageTheDeviceCannotHoldBeforeAllocating) {
     test::sharedContext();
@@ -174,8 +174,8 @@ TEST(Framebuffer, refusesAnImageTheDeviceCannotHoldBeforeAllocating) {
         const std::string message = error.what();
         const std::string expected =
             kHuge > maxSize ? "Framebuffer: size 16384x16384 is not supported"
-                            : "Framebuffer: this GL device cannot hold a 16384x16384 RGBA32F image; "
-                              "the largest square it holds is ";
+                            : "Framebuffer: this GL device cannot hold a 16384x16384 RGBA32F "
+                              "image; the largest square it holds is ";
         ASSERT_EQ(message.substr(0, expected.size()), expected) << message;
         if (kHuge <= maxSize) {
             const int largest = std::stoi(message.substr(expected.size()));

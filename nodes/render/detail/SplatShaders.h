@@ -102,7 +102,8 @@ out vec4 fragColor;
 
 void main() {
     vec4 color = gouraud ? vec4(vertexColor.rgb * colorScale, vertexColor.a)
-                         : shadeSplat(medium.rgb, medium.a, texture(footprint, texCoord).r * lengthScale);
+                         : shadeSplat(medium.rgb, medium.a,
+                                      texture(footprint, texCoord).r * lengthScale);
     // Light beyond FLT_MAX stays FLT_MAX, as on the CPU backend and in the ray caster.
     fragColor = vec4(min(color.rgb, vec3(3.4028235e38)), color.a);
 }

@@ -25,7 +25,7 @@ void checkTextureSize(const char* what, int width, int height, std::optional<int
 
 /// @brief Whether the device can hold a `width` x `height` texture of `format`, asked of a proxy
 /// texture (GL_PROXY_TEXTURE_2D), which allocates nothing: a driver may refuse a size within
-/// GL_MAX_TEXTURE_SIZE for its bytes (llvmpipe holds at most 1 GiB a texture).
+/// GL_MAX_TEXTURE_SIZE for its bytes (llvmpipe holds no float texture of 16384² pixels).
 bool canHoldTexture(int width, int height, TextureFormat format);
 
 /// @brief Throws DataError "<where>: expected N floats (WxHxC <format>), got M" on a mismatch.
