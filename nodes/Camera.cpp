@@ -72,7 +72,15 @@ glm::mat4 Camera::projectionMatrix(float aspect, const DepthRange& range) const 
                         sg::formatFloat(range.nearDistance) + ", farDistance " +
                         sg::formatFloat(range.farDistance));
     }
-    return projection(aspect, range);
+    const glm::mat4 result = projection(aspect, range);
+    if (!detail::isFinite(result)) {
+        throw DataError(detail::nodeContext(*this) + ": nearDistance " +
+                        sg::formatFloat(range.nearDistance) + " and farDistance " +
+                        sg::formatFloat(range.farDistance) +
+                        " make a projection that is not finite in single precision (their "
+                        "product overflows); use smaller distances");
+    }
+    return result;
 }
 
 DepthRange Camera::depthRangeFor(const sg::Box3& worldBox) const {

@@ -176,6 +176,13 @@ TEST_F(HostileInputTest, aWrongTransformOrCameraIsBlamedOnItsOwnNode) {
     const std::string eye = write(
         "eye.iv", header + "DEF eye PerspectiveCamera { position 0 inf 20 }\n" + rest);
     expectError(eye, eye + ":3:9: PerspectiveCamera 'eye': position must be finite, got 0 inf 20");
+    const std::string far = write("far.iv", header +
+                                                "PerspectiveCamera { position 0 0 20 nearDistance "
+                                                "1e30 farDistance 1e33 }\n" +
+                                                rest);
+    expectError(far, far + ":6:1: PerspectiveCamera: nearDistance 1e+30 and farDistance 1e+33 make "
+                           "a projection that is not finite in single precision (their product "
+                           "overflows); use smaller distances");
 }
 
 // llvmpipe reports 16384 pixels a side but cannot hold a 16384² float texture: the framebuffer was
