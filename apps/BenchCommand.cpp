@@ -8,6 +8,7 @@
 #include "nodes/bench/BenchRunner.h"
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
 #ifdef TEXSPLAT_WITH_GL
@@ -185,8 +186,14 @@ void runBench(const BenchArguments& arguments) {
     options.warmup = arguments.warmup;
     options.threads = arguments.threads;
     options.reference = !arguments.noReference;
+    // The outputs before the long run.
+    if (!arguments.csv.empty()) {
+        requireFileExtension(arguments.csv, {".csv"}, "CSV");
+        requireWritableFile(arguments.csv, "the CSV file");
+    }
     if (!arguments.plot.empty()) {
-        requireFileExtension(arguments.plot, {".svg"}, "plot"); // before the long run
+        requireFileExtension(arguments.plot, {".svg"}, "plot");
+        requireWritableFile(arguments.plot, "the plot");
     }
 
     // Each backend asked for once, in the order given; auto resolves as `render` does.

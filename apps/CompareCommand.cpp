@@ -3,6 +3,7 @@
 
 #include "nodes/image/ImageComparison.h"
 #include "nodes/image/ImageIo.h"
+#include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
 
@@ -145,6 +146,11 @@ ImageComparison compareFiles(const CompareArguments& arguments, const image::Ima
 
 void runCompare(const CompareArguments& arguments) {
     applyMemoryLimit(arguments.memoryLimit);
+    if (!arguments.diff.empty()) {
+        // Before the images are decoded, which may take long.
+        image::supportedImageFormatOf(arguments.diff);
+        requireWritableFile(arguments.diff, "the difference image");
+    }
     const image::Image reference = image::readImage(arguments.reference);
     const image::Image test = image::readImage(arguments.test);
     image::ComparisonOptions options;

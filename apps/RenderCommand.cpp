@@ -9,6 +9,7 @@
 #include "nodes/render/RayCastImage.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/Splat.h"
+#include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/MemoryLimit.h"
 #include "scenegraph/actions/RayCastAction.h"
@@ -413,6 +414,23 @@ Framing framingOf(const RenderArguments& arguments) {
     return framing;
 }
 
+// Resolves --backend and, for GL, asks whether the device holds the image, before any work.
+render::BackendChoice chooseBackend(render::BackendRequest request,
+                                    [[maybe_unused]] const std::string& sizeText,
+                                    [[maybe_unused]] glm::ivec2 size) {
+    render::BackendChoice backend = render::BackendChoice::resolve(request);
+#ifdef TEXSPLAT_WITH_GL
+    if (backend.backend == render::Backend::Gl) {
+        try {
+            sg::RenderAction::checkSize(size.x, size.y);
+        } catch (const GlError& error) {
+            throw GlError("--size " + sizeText + ": " + error.what() + " (--backend cpu)");
+        }
+    }
+#endif
+    return backend;
+}
+
 void runRender(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
     // Refuse a bad output name or option before any work, so nothing is left half-done.
@@ -420,6 +438,7 @@ void runRender(const RenderArguments& arguments) {
     // The extension of a pattern is the extension of every frame's name: a frame number has no
     // letters, so a conversion inside the extension leaves no valid one either way.
     const image::ImageFormat format = image::supportedImageFormatOf(arguments.output);
+    requireWritableFile(animation.output.name(0), "the image");
     if (!arguments.rayCast && arguments.rayCastStep != sg::RayCastAction::kDefaultStepSize) {
         throw DataError("--raycast-step: only with --raycast");
     }
@@ -435,6 +454,8 @@ void runRender(const RenderArguments& arguments) {
                         std::to_string(arguments.threads));
     }
     applyMemoryLimit(arguments.memoryLimit);
+    const render::BackendChoice backend =
+        arguments.rayCast ? render::BackendChoice{} : chooseBackend(request, arguments.size, size);
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -454,7 +475,6 @@ void runRender(const RenderArguments& arguments) {
         runRayCast(arguments, animation, *root, size, background, setup, annotations);
         return;
     }
-    render::BackendChoice backend = render::BackendChoice::resolve(request);
     const bool withDepth = format == image::ImageFormat::Exr;
     FrameClock clock(animation, *root);
     sg::RenderStatistics total;

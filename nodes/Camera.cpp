@@ -1,5 +1,6 @@
 #include "nodes/Camera.h"
 
+#include "nodes/detail/Finite.h"
 #include "nodes/detail/NodeContext.h"
 #include "nodes/elements/CameraElement.h"
 #include "scenegraph/Error.h"
@@ -80,7 +81,15 @@ glm::mat4 Camera::projectionMatrix(float aspect, const DepthRange& range) const 
                         sg::formatFloat(range.nearDistance) + ", farDistance " +
                         sg::formatFloat(range.farDistance));
     }
-    return projection(aspect, range);
+    const glm::mat4 result = projection(aspect, range);
+    if (!detail::isFinite(result)) {
+        throw DataError(detail::nodeContext(*this) + ": nearDistance " +
+                        sg::formatFloat(range.nearDistance) + " and farDistance " +
+                        sg::formatFloat(range.farDistance) +
+                        " make a projection that is not finite in single precision (their "
+                        "product overflows); use smaller distances");
+    }
+    return result;
 }
 
 DepthRange Camera::depthRangeFor(const sg::Box3& worldBox) const {
@@ -122,6 +131,8 @@ void Camera::viewAll(const sg::Box3& box, float aspect) {
 }
 
 void Camera::doAction(sg::Action& action) {
+    detail::requireFinite(*this, position);
+    detail::requireFinite(*this, orientation);
     sg::State& state = action.state();
     const glm::mat4 modelMatrix = state.get<sg::ModelMatrixElement>().matrix;
     state.modify<CameraElement>() = CameraElement{this, modelMatrix};

@@ -42,10 +42,16 @@ public:
     glm::mat4 matrix() const;
 
     /// @brief Post-multiplies sg::ModelMatrixElement by matrix().
+    /// @throws DataError (located at this node) when a field is not finite, a scale is zero, or
+    /// the product overflows, so that a wrong transformation is blamed here rather than on the
+    /// splat node or framing that would trip over it.
     void doAction(sg::Action& action) override;
 
 protected:
     Transform();
+
+private:
+    void checkFields() const;
 };
 
 } // namespace texsplat::nodes

@@ -98,6 +98,25 @@ void writeFileAtomically(const std::string& givenPath,
     }
 }
 
+void requireWritableFile(const std::string& givenPath, const std::string& what) {
+    namespace fs = std::filesystem;
+    const std::string path = throughLinks(givenPath);
+    const std::string folder = directoryOf(path);
+    const auto refuse = [&](const std::string& reason) {
+        throw IoError(givenPath + ": cannot write " + what + ": " + reason);
+    };
+    std::error_code error;
+    if (fs::is_directory(path, error))
+        refuse("it is a folder");
+    const fs::file_status folderStatus = fs::status(folder, error);
+    if (folderStatus.type() == fs::file_type::not_found)
+        refuse("folder '" + folder + "' does not exist");
+    if (folderStatus.type() != fs::file_type::directory)
+        refuse("'" + folder + "' is not a folder");
+    if (::access(folder.c_str(), W_OK | X_OK) != 0)
+        refuse("folder '" + folder + "' is not writable (" + std::strerror(errno) + ")");
+}
+
 void writeFileAtomically(const std::string& path, const std::string& contents) {
     writeFileAtomically(path, [&](std::ofstream& stream) {
         stream.write(contents.data(), static_cast<std::streamsize>(contents.size()));

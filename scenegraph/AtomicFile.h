@@ -18,6 +18,13 @@ namespace texsplat {
 void writeFileAtomically(const std::string& path,
                          const std::function<void(std::ofstream& stream)>& write);
 
+/// @brief Throws IoError("out/x.png: cannot write the image: folder 'out' does not exist") unless
+/// writeFileAtomically() could make `path`: its folder (the folder of the file a symbolic link
+/// points to) exists, is a folder and is writable, and `path` is not itself a folder; `what`
+/// names the file in the message ("the image"). Commands ask it for every output before any
+/// work, so that a typo in a folder name does not cost a whole render or benchmark.
+void requireWritableFile(const std::string& path, const std::string& what);
+
 /// @brief Writes `contents` (bytes as they are) to `path` all at once, as above.
 void writeFileAtomically(const std::string& path, const std::string& contents);
 

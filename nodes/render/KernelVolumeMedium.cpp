@@ -1,5 +1,6 @@
 #include "nodes/render/KernelVolumeMedium.h"
 
+#include "nodes/detail/Finite.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 
@@ -15,17 +16,6 @@ namespace {
 
 // The most voxels per axis within a support below 2 voxels: an open interval of width < 4.
 constexpr int kMaxTaps = 4;
-
-bool isFinite(const glm::mat4& matrix) {
-    for (int c = 0; c < 4; ++c) {
-        for (int r = 0; r < 4; ++r) {
-            if (!std::isfinite(matrix[c][r])) {
-                return false;
-            }
-        }
-    }
-    return true;
-}
 
 float finiteOrMax(float value) {
     return std::min(value, std::numeric_limits<float>::max());
@@ -43,7 +33,7 @@ KernelVolumeMedium::KernelVolumeMedium(std::shared_ptr<const octree::ClassifiedG
     }
     const glm::dmat3 linear(model);
     const double determinant = glm::determinant(linear);
-    if (!isFinite(model) || !std::isfinite(determinant) || determinant == 0.0) {
+    if (!nodes::detail::isFinite(model) || !std::isfinite(determinant) || determinant == 0.0) {
         throw DataError("KernelVolumeMedium: the model matrix must be finite and invertible");
     }
     mRootToLocal = glm::inverse(linear);

@@ -3,10 +3,15 @@
 #include "nodes/OrthographicCamera.h"
 #include "nodes/PerspectiveCamera.h"
 #include "nodes/render/CameraView.h"
+#include "scenegraph/Coordinates.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/fields/ValueFormat.h"
+
+#include <algorithm>
+#include <cmath>
 
 namespace texsplat::render {
 
@@ -40,7 +45,19 @@ sg::Node::Ptr framedScene(const sg::Node::Ptr& scene, float aspect, const Framin
         throw DataError(framing.name +
                         ": nothing to frame (the scene has no geometry and no camera)");
     }
-    camera->viewAll(box.boundingBox(), aspect);
+    const sg::Box3& bounds = box.boundingBox();
+    float largest = 0.0f;
+    for (int axis = 0; axis < 3; ++axis) {
+        largest = std::max({largest, std::abs(bounds.min()[axis]), std::abs(bounds.max()[axis])});
+    }
+    if (!(largest <= sg::kMaxCoordinate)) {
+        throw DataError(framing.name + ": cannot frame the scene: its bounding box reaches " +
+                        sg::formatFloat(largest) + ", beyond " +
+                        sg::formatFloat(static_cast<float>(sg::kMaxCoordinate)) +
+                        ", the largest coordinate texsplat draws in single precision (a "
+                        "Transform that scales too much?)");
+    }
+    camera->viewAll(bounds, aspect);
     sg::Separator::Ptr root = sg::Separator::create();
     root->addChild(camera);
     root->addChild(scene);

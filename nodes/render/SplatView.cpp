@@ -1,5 +1,6 @@
 #include "nodes/render/SplatView.h"
 
+#include "nodes/detail/Finite.h"
 #include "scenegraph/Error.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
@@ -8,20 +9,6 @@
 #include <sstream>
 
 namespace texsplat::render {
-namespace {
-
-bool isFinite(const glm::mat4& matrix) {
-    for (int column = 0; column < 4; ++column) {
-        for (int row = 0; row < 4; ++row) {
-            if (!std::isfinite(matrix[column][row])) {
-                return false;
-            }
-        }
-    }
-    return true;
-}
-
-} // namespace
 
 SplatView SplatView::fromMatrices(const glm::mat4& model, const glm::mat4& view,
                                   const glm::mat4& projection, const glm::vec3& spacing) {
@@ -34,16 +21,21 @@ SplatView SplatView::fromMatrices(const glm::mat4& model, const glm::mat4& view,
         }
     }
     const glm::mat4 modelView = view * model;
-    if (!isFinite(modelView) || !isFinite(projection) ||
-        !(std::abs(glm::determinant(modelView)) > 0.0f)) {
+    // In double: a volume scaled by 1e-20 has a determinant of 1e-60, which float rounds to 0.
+    const glm::dmat4 exactModelView = glm::dmat4(view) * glm::dmat4(model);
+    if (!nodes::detail::isFinite(modelView) || !nodes::detail::isFinite(projection) ||
+        !(std::abs(glm::determinant(exactModelView)) > 0.0)) {
         throw DataError("splat view: the model-view matrix is singular or not finite");
     }
-    const glm::mat4 cameraToLocal = glm::inverse(modelView);
+    // The eye and direction in double too: under a scale of 1e-20 the direction is 1e20 long,
+    // whose square overflows a float's normalization.
+    const glm::dmat4 cameraToLocal = glm::inverse(exactModelView);
     SplatView result;
     result.localToClip = projection * modelView;
     result.isPerspective = projection[3][3] == 0.0f;
-    result.eye = glm::vec3(cameraToLocal * glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-    result.direction = glm::normalize(glm::vec3(cameraToLocal * glm::vec4(0.0f, 0.0f, -1.0f, 0.0f)));
+    result.eye = glm::vec3(cameraToLocal * glm::dvec4(0.0, 0.0, 0.0, 1.0));
+    result.direction =
+        glm::vec3(glm::normalize(glm::dvec3(cameraToLocal * glm::dvec4(0.0, 0.0, -1.0, 0.0))));
     result.spacing = spacing;
     return result;
 }

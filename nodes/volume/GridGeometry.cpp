@@ -1,8 +1,10 @@
 #include "nodes/volume/GridGeometry.h"
 
 #include "nodes/volume/detail/Format.h"
+#include "scenegraph/Coordinates.h"
 #include "scenegraph/Error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -39,6 +41,16 @@ GridGeometry::GridGeometry(const glm::i64vec3& dims, const glm::dvec3& origin,
         throw DataError("grid spacing must be finite and positive, got " + joined(spacing, " "));
     if (!isFinite(origin))
         throw DataError("grid origin must be finite, got " + joined(origin, " "));
+    const glm::dvec3 far = origin + glm::dvec3(dims) * spacing;
+    const double largest = std::max({std::abs(origin.x), std::abs(origin.y), std::abs(origin.z),
+                                     std::abs(far.x), std::abs(far.y), std::abs(far.z)});
+    if (!(largest <= sg::kMaxCoordinate))
+        throw DataError("grid spacing " + joined(spacing, " ") + " from origin " +
+                        joined(origin, " ") + " puts voxels as far as " +
+                        detail::formatNumber(largest) + ", beyond " +
+                        detail::formatNumber(sg::kMaxCoordinate) +
+                        ", the largest coordinate texsplat draws in single precision; give the "
+                        "spacing in a larger length unit");
 }
 
 glm::i64vec3 GridGeometry::indexOf(std::int64_t linear) const {

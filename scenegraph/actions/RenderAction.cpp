@@ -38,11 +38,18 @@ struct PassState {
     PassState& operator=(const PassState&) = delete;
 };
 
+// The depth of the framebuffer: 32-bit float.
+constexpr gl::FramebufferDepth kDepth = gl::FramebufferDepth::Depth32F;
+
 } // namespace
 
 RenderAction::RenderAction(int width, int height, gl::FramebufferColor color)
     : Action(methods()),
-      mFramebuffer(width, height, color, gl::FramebufferDepth::Depth32F) {}
+      mFramebuffer(width, height, color, kDepth) {}
+
+void RenderAction::checkSize(int width, int height, gl::FramebufferColor color) {
+    gl::Framebuffer::checkSize(width, height, color, kDepth);
+}
 
 MethodTable& RenderAction::methods() {
     static MethodTable table;

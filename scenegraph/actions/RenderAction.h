@@ -54,6 +54,11 @@ public:
     RenderAction(int width, int height,
                  gl::FramebufferColor color = gl::FramebufferColor::Rgba32F);
 
+    /// @brief Throws the GlError the constructor would for this size, without allocating
+    /// (gl::Framebuffer::checkSize()): commands ask it before any work.
+    static void checkSize(int width, int height,
+                          gl::FramebufferColor color = gl::FramebufferColor::Rgba32F);
+
     /// @brief The table of this action; the nodes library adds its node types' render methods
     /// (`nodes::registerNodeTypes()`). Unregistered nodes use `Node::doAction()`.
     static MethodTable& methods();

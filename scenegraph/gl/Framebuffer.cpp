@@ -42,9 +42,37 @@ std::string statusName(GLenum status) {
     return std::string("status ") + hex;
 }
 
-// Checks the size under the framebuffer's own name before the texture would under its name.
-Texture2D makeAttachment(int width, int height, TextureFormat format) {
+// The largest n for which the device holds an n x n texture of `format` (at least 1).
+int largestSquare(TextureFormat format) {
+    GLint low = 1;
+    GLint high = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &high);
+    while (low < high) {
+        const GLint middle = low + (high - low + 1) / 2;
+        if (detail::canHoldTexture(middle, middle, format)) {
+            low = middle;
+        } else {
+            high = middle - 1;
+        }
+    }
+    return low;
+}
+
+// Checks an attachment under the framebuffer's own name, before anything is allocated: its
+// extents against the driver's limits, then its bytes against what the device holds.
+void checkAttachment(int width, int height, TextureFormat format) {
     detail::checkTextureSize("Framebuffer", width, height, std::nullopt);
+    if (!detail::canHoldTexture(width, height, format)) {
+        const std::string largest = std::to_string(largestSquare(format));
+        throw GlError("Framebuffer: this GL device cannot hold a " + std::to_string(width) + "x" +
+                      std::to_string(height) + " " + toString(format) +
+                      " image; the largest square it holds is " + largest + "x" + largest +
+                      "; draw a smaller image, or on the CPU backend");
+    }
+}
+
+Texture2D makeAttachment(int width, int height, TextureFormat format) {
+    checkAttachment(width, height, format);
     // Attachments are read 1:1 (read-backs, viewer blits), never minified.
     return Texture2D(width, height, format, {TextureFilter::Nearest, TextureWrap::ClampToEdge,
                                              false});
@@ -65,6 +93,12 @@ Framebuffer::Framebuffer(int width, int height, FramebufferColor color, Framebuf
                       std::to_string(width) + "x" + std::to_string(height) + " " +
                       toString(mColor.format()) + " + " + toString(mDepth.format()));
     }
+}
+
+void Framebuffer::checkSize(int width, int height, FramebufferColor color,
+                            FramebufferDepth depth) {
+    checkAttachment(width, height, textureFormat(color));
+    checkAttachment(width, height, textureFormat(depth));
 }
 
 void Framebuffer::bind() const {

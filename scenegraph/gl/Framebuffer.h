@@ -38,10 +38,17 @@ enum class RowOrder {
 class Framebuffer {
 public:
     /// @brief Creates the attachments and checks completeness.
-    /// @throws GlError when no context is current, the size exceeds the driver's limit, or the
-    /// driver reports the framebuffer incomplete ("Framebuffer: incomplete (GL_...) for ...").
+    /// @throws GlError when no context is current, the size exceeds the driver's limit or
+    /// what the device holds (checkSize()), or the driver reports the framebuffer incomplete
+    /// ("Framebuffer: incomplete (GL_...) for ...").
     Framebuffer(int width, int height, FramebufferColor color = FramebufferColor::Rgba32F,
                 FramebufferDepth depth = FramebufferDepth::Depth24);
+
+    /// @brief Throws the GlError the constructor would, without allocating: a size beyond the
+    /// driver's limit per side, or an attachment the device cannot hold ("Framebuffer: this GL
+    /// device cannot hold a 16384x16384 RGBA32F image; the largest square it holds is
+    /// 8192x8192; ..."), asked of proxy textures.
+    static void checkSize(int width, int height, FramebufferColor color, FramebufferDepth depth);
 
     /// @brief Binds the framebuffer for drawing and reading and sets the viewport to all of it.
     void bind() const;

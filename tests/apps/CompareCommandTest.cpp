@@ -137,8 +137,8 @@ TEST_F(CompareCommandTest, unwritableDiffExitsWithOneAndWritesNothing) {
                                     " --diff " + diff);
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError, "texsplat: error: " + diff +
-                                        ": cannot create a file in directory " +
-                                        path("missing") + ": No such file or directory\n");
+                                        ": cannot write the difference image: folder '" +
+                                        path("missing") + "' does not exist\n");
     EXPECT_FALSE(fs::exists(path("missing")));
 }
 

@@ -149,3 +149,83 @@ TEST_F(HostileInputTest, errorsFoundAfterParsingNameTheSceneFileAndLine) {
 }
 
 } // namespace
+
+// A transformation or camera that is wrong is blamed on its own node, not on the splat node or
+// the framing that trips over it ("splat view: the model-view matrix is singular or not finite",
+// "nothing to frame").
+TEST_F(HostileInputTest, aWrongTransformOrCameraIsBlamedOnItsOwnNode) {
+    const std::string header = "#Inventor V2.1 ascii\nSeparator {\n";
+    const std::string rest = "TransferFunction { preset HOT range 0 1 }\n"
+                             "VolumeData { source BLOB resolution 8 8 8 }\nTextureSplat { }\n}\n";
+    const std::string nan =
+        write("nan.iv", header + "  DEF shift Transform { translation nan 0 0 }\n" + rest);
+    expectError(nan, nan + ":3:13: Transform 'shift': translation must be finite, got nan 0 0");
+    const std::string camera = "PerspectiveCamera { position 0 0 20 }\n";
+    const std::string flat =
+        write("flat.iv", header + camera + "Transform { scaleFactor 1 0 1 }\n" + rest);
+    expectError(flat, flat + ":4:1: Transform: scaleFactor must be non-zero on every axis (a zero "
+                             "scale is singular: it flattens what follows, which splats and rays "
+                             "cannot invert), got 1 0 1");
+    const std::string huge = write("huge.iv", header + camera +
+                                                  "Transform { scaleFactor 1e30 1e30 1e30 }\n"
+                                                  "DEF big Transform { scaleFactor 1e30 1 1 }\n" +
+                                                  rest);
+    expectError(huge, huge + ":5:9: Transform 'big': the transformation overflows: with the "
+                             "transformations above it, the model matrix is not finite "
+                             "(translation 0 0 0, scaleFactor 1e+30 1 1)");
+    const std::string eye = write(
+        "eye.iv", header + "DEF eye PerspectiveCamera { position 0 inf 20 }\n" + rest);
+    expectError(eye, eye + ":3:9: PerspectiveCamera 'eye': position must be finite, got 0 inf 20");
+    const std::string far = write("far.iv", header +
+                                                "PerspectiveCamera { position 0 0 20 nearDistance "
+                                                "1e30 farDistance 1e33 }\n" +
+                                                rest);
+    expectError(far, far + ":6:1: PerspectiveCamera: nearDistance 1e+30 and farDistance 1e+33 make "
+                           "a projection that is not finite in single precision (their product "
+                           "overflows); use smaller distances");
+}
+
+// llvmpipe reports 16384 pixels a side but cannot hold a 16384² float texture: the framebuffer was
+// incomplete after the scene had been read. The device is asked first.
+TEST_F(HostileInputTest, aGlImageTheDeviceCannotHoldIsRefusedBeforeReadingTheScene) {
+    const auto result = runTexsplat("render " + path("missing.iv") +
+                                    " --backend gl --size 16384x16384 -o " + path("out.png"));
+    if (result.standardError.find("cannot hold") == std::string::npos) {
+        GTEST_SKIP() << "this GL device holds a 16384² float image: " << result.standardError;
+    }
+    EXPECT_EQ(result.exitCode, 1);
+    const std::string expected = "texsplat: error: --size 16384x16384: Framebuffer: this GL device "
+                                 "cannot hold a 16384x16384 RGBA32F image; the largest square it "
+                                 "holds is ";
+    EXPECT_EQ(result.standardError.substr(0, expected.size()), expected) << result.standardError;
+    EXPECT_NE(result.standardError.find("; draw a smaller image, or on the CPU backend (--backend "
+                                        "cpu)\n"),
+              std::string::npos)
+        << result.standardError;
+}
+
+// Coordinates beyond what single precision can frame and project are refused where they come
+// from: a voxel size at the volume's header, a huge scale where the scene is framed (both said
+// "PerspectiveCamera: farDistance must be finite …" of the camera texsplat had made).
+TEST_F(HostileInputTest, aVoxelSizeTooLargeToDrawIsBlamedOnTheVolume) {
+    const std::string raw = write("big.raw", "texsplat-raw 1\ndims 4 4 4\ntype float32\n"
+                                             "spacing 1e30 1e30 1e30\ndata\n" +
+                                                 std::string(4 * 4 * 4 * 4, '\0'));
+    const std::string transfer = "TransferFunction { preset HOT range 0 1 }\n";
+    const std::string big =
+        write("big.iv", "#Inventor V2.1 ascii\nSeparator {\n" + transfer +
+                            "VolumeData { source FILE_RAW fileName \"" + raw +
+                            "\" }\nTextureSplat { }\n}\n");
+    expectError(big, big + ":4:1: VolumeData: " + raw +
+                         ":4:9: grid spacing 1e+30 1e+30 1e+30 from origin 0 0 0 puts voxels as "
+                         "far as 1e+30, beyond 1e+18, the largest coordinate texsplat draws in "
+                         "single precision; give the spacing in a larger length unit");
+    const std::string huge = write("huge.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                                              "Transform { scaleFactor 1e30 1e30 1e30 }\n" +
+                                                  transfer +
+                                                  "VolumeData { source BLOB resolution 8 8 8 }\n"
+                                                  "TextureSplat { }\n}\n");
+    expectError(huge, huge + ": cannot frame the scene: its bounding box reaches 1.1428572e+30, "
+                             "beyond 1e+18, the largest coordinate texsplat draws in single "
+                             "precision (a Transform that scales too much?)");
+}

@@ -160,6 +160,34 @@ TEST(Framebuffer, rejectsAnEmptySize) {
     }
 }
 
+// llvmpipe reports 16384 per side but cannot hold a 16384² float texture (its bytes), so the image
+// made an incomplete framebuffer (issue 14). Proxy textures ask without allocating.
+TEST(Framebuffer, refusesAnImageTheDeviceCannotHoldBeforeAllocating) {
+    test::sharedContext();
+    constexpr int kHuge = 16384;
+    GLint maxSize = 0;
+    glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    try {
+        Framebuffer::checkSize(kHuge, kHuge, FramebufferColor::Rgba32F, FramebufferDepth::Depth32F);
+        GTEST_SKIP() << "this device holds a 16384² float image";
+    } catch (const GlError& error) {
+        const std::string message = error.what();
+        const std::string expected =
+            kHuge > maxSize ? "Framebuffer: size 16384x16384 is not supported"
+                            : "Framebuffer: this GL device cannot hold a 16384x16384 RGBA32F "
+                              "image; the largest square it holds is ";
+        ASSERT_EQ(message.substr(0, expected.size()), expected) << message;
+        if (kHuge <= maxSize) {
+            const int largest = std::stoi(message.substr(expected.size()));
+            EXPECT_NE(message.find("; draw a smaller image, or on the CPU backend"),
+                      std::string::npos);
+            EXPECT_NO_THROW(Framebuffer::checkSize(largest, largest, FramebufferColor::Rgba32F,
+                                                   FramebufferDepth::Depth32F));
+            EXPECT_THROW(Framebuffer(largest + 1, largest + 1), GlError);
+        }
+    }
+}
+
 TEST(Framebuffer, moveLeavesTheSourceEmpty) {
     static_assert(!std::is_copy_constructible_v<Framebuffer> &&
                   !std::is_copy_assignable_v<Framebuffer>);

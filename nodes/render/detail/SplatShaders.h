@@ -30,6 +30,7 @@ out vec2 texCoord;
 out float lengthScale;
 flat out vec4 medium;
 out vec4 vertexColor;
+flat out float colorScale;
 
 void main() {
     vec3 centre = positionSize.xyz;
@@ -45,7 +46,11 @@ void main() {
     texCoord = corner.xy * 0.5 + 0.5;
     lengthScale = size / eLength;
     medium = colorExtinction;
-    vertexColor = gouraud ? shadeSplat(colorExtinction.rgb, colorExtinction.a,
+    // The Gouraud colour is interpolated divided by the emission's largest component: the
+    // rasterizer's interpolation of colours near FLT_MAX overflows (Inf - Inf = NaN); shading
+    // is linear in the emission, so the fragment multiplies it back.
+    colorScale = max(max(colorExtinction.r, colorExtinction.g), max(colorExtinction.b, 1e-30));
+    vertexColor = gouraud ? shadeSplat(colorExtinction.rgb / colorScale, colorExtinction.a,
                                        corner.z * lengthScale)
                           : vec4(0.0);
 }
@@ -88,6 +93,7 @@ in vec2 texCoord;
 in float lengthScale;
 flat in vec4 medium;
 in vec4 vertexColor;
+flat in float colorScale;
 
 uniform sampler2D footprint;
 uniform bool gouraud;
@@ -95,8 +101,11 @@ uniform bool gouraud;
 out vec4 fragColor;
 
 void main() {
-    fragColor = gouraud ? vertexColor
-                        : shadeSplat(medium.rgb, medium.a, texture(footprint, texCoord).r * lengthScale);
+    vec4 color = gouraud ? vec4(vertexColor.rgb * colorScale, vertexColor.a)
+                         : shadeSplat(medium.rgb, medium.a,
+                                      texture(footprint, texCoord).r * lengthScale);
+    // Light beyond FLT_MAX stays FLT_MAX, as on the CPU backend and in the ray caster.
+    fragColor = vec4(min(color.rgb, vec3(3.4028235e38)), color.a);
 }
 )";
 

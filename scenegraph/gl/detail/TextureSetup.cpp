@@ -39,6 +39,15 @@ void checkTextureSize(const char* what, int width, int height, std::optional<int
     }
 }
 
+bool canHoldTexture(int width, int height, TextureFormat format) {
+    const FormatInfo info = formatInfo(format);
+    glTexImage2D(GL_PROXY_TEXTURE_2D, 0, static_cast<GLint>(info.internalFormat), width, height,
+                 0, info.format, GL_FLOAT, nullptr);
+    GLint heldWidth = 0;
+    glGetTexLevelParameteriv(GL_PROXY_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &heldWidth);
+    return heldWidth == width;
+}
+
 void checkValueCount(const char* where, std::size_t got, int width, int height, int depth,
                      TextureFormat format) {
     const int channels = formatInfo(format).channels;

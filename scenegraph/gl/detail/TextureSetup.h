@@ -23,6 +23,11 @@ FormatInfo formatInfo(TextureFormat format);
 /// at least 1 and within the driver's limits; `layers` only for array textures.
 void checkTextureSize(const char* what, int width, int height, std::optional<int> layers);
 
+/// @brief Whether the device can hold a `width` x `height` texture of `format`, asked of a proxy
+/// texture (GL_PROXY_TEXTURE_2D), which allocates nothing: a driver may refuse a size within
+/// GL_MAX_TEXTURE_SIZE for its bytes (llvmpipe holds no float texture of 16384² pixels).
+bool canHoldTexture(int width, int height, TextureFormat format);
+
 /// @brief Throws DataError "<where>: expected N floats (WxHxC <format>), got M" on a mismatch.
 void checkValueCount(const char* where, std::size_t got, int width, int height, int depth,
                      TextureFormat format);
