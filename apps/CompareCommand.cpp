@@ -5,6 +5,7 @@
 #include "nodes/image/ImageIo.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "scenegraph/MemoryLimit.h"
 
 #include <CLI/CLI.hpp>
 
@@ -143,8 +144,8 @@ ImageComparison compareFiles(const CompareArguments& arguments, const image::Ima
     }
 }
 
-void runCompare(const CompareArguments& arguments) {
-    applyMemoryLimit(arguments.memoryLimit);
+void runCompare(const CompareArguments& arguments, std::uint64_t memoryLimit) {
+    setMemoryLimit(memoryLimit);
     const image::Image reference = image::readImage(arguments.reference);
     const image::Image test = image::readImage(arguments.test);
     image::ComparisonOptions options;
@@ -179,7 +180,7 @@ void runCompare(const CompareArguments& arguments) {
 
 } // namespace
 
-void addCompareCommand(CLI::App& app, int& exitCode) {
+void addCompareCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<CompareArguments>();
     CLI::App* command = app.add_subcommand(
         "compare", "Compare two images: RMSE, PSNR and max abs error per channel and over RGB");
@@ -207,8 +208,11 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::PositiveNumber);
     command->add_flag("--json", arguments->json, "Print the results as JSON");
     addMemoryLimitOption(*command, arguments->memoryLimit);
-    command->callback([arguments, &exitCode] {
-        runCompare(*arguments);
+    command->callback([arguments, mode, &exitCode] {
+        const std::uint64_t memoryLimit = memoryLimitOf(arguments->memoryLimit);
+        if (mode == CommandMode::Run) {
+            runCompare(*arguments, memoryLimit);
+        }
         exitCode = kExitOk;
     });
 }

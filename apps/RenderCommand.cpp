@@ -441,7 +441,17 @@ Framing framingOf(const RenderArguments& arguments) {
     return framing;
 }
 
-void runRender(const RenderArguments& arguments) {
+// The option values of `render`, checked before any work so that nothing is left half-done.
+struct RenderOptions {
+    glm::ivec2 size;
+    Animation animation;
+    image::ImageFormat format;
+    render::BackendRequest request;
+    glm::vec4 background;
+    std::uint64_t memoryLimit;
+};
+
+RenderOptions checkRenderOptions(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
     // Refuse a bad output name or option before any work, so nothing is left half-done.
     const Animation animation = parseAnimation(arguments);
@@ -462,7 +472,16 @@ void runRender(const RenderArguments& arguments) {
                         std::to_string(kMaxThreads) + ", got " +
                         std::to_string(arguments.threads));
     }
-    applyMemoryLimit(arguments.memoryLimit);
+    return {size,       animation,  format,
+            request,    background, memoryLimitOf(arguments.memoryLimit)};
+}
+
+void runRender(const RenderArguments& arguments, const RenderOptions& options) {
+    const glm::ivec2 size = options.size;
+    const Animation& animation = options.animation;
+    const image::ImageFormat format = options.format;
+    const glm::vec4 background = options.background;
+    setMemoryLimit(options.memoryLimit);
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -482,7 +501,7 @@ void runRender(const RenderArguments& arguments) {
         runRayCast(arguments, animation, *root, size, background, setup, legend);
         return;
     }
-    render::BackendChoice backend = render::BackendChoice::resolve(request);
+    render::BackendChoice backend = render::BackendChoice::resolve(options.request);
     const bool withDepth = format == image::ImageFormat::Exr;
     FrameClock clock(animation, *root);
     sg::RenderStatistics total;
@@ -544,7 +563,7 @@ void runRender(const RenderArguments& arguments) {
 
 } // namespace
 
-void addRenderCommand(CLI::App& app, int& exitCode) {
+void addRenderCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<RenderArguments>();
     CLI::App* command = app.add_subcommand(
         "render", "Render a scene file (or the built-in tornado scene) to a PNG or OpenEXR image, "
@@ -608,8 +627,11 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "Integration step of --raycast in voxels")
         ->capture_default_str();
     addMemoryLimitOption(*command, arguments->memoryLimit);
-    command->callback([arguments, &exitCode] {
-        runRender(*arguments);
+    command->callback([arguments, mode, &exitCode] {
+        const RenderOptions options = checkRenderOptions(*arguments);
+        if (mode == CommandMode::Run) {
+            runRender(*arguments, options);
+        }
         exitCode = kExitOk;
     });
 }
