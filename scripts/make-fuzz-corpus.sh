@@ -18,18 +18,16 @@ trap 'rm -rf "$work"' EXIT
 cat >"$work/ramp.cdl" <<'CDL'
 netcdf ramp {
 dimensions:
-    z = 2 ; y = 3 ; x = 4 ;
+    depth = 2 ; lat = 2 ; lon = 3 ;
 variables:
-    double z(z) ; float y(y) ; float x(x) ;
-    float v(z, y, x) ;
-    float flat(y, x) ;
+    double depth(depth) ; float lat(lat) ; float lon(lon) ;
+    float salinity(depth, lat, lon) ;
+        salinity:units = "psu" ;
+    float surface(lat, lon) ;
 data:
-    z = -5, -3 ;
-    y = 0, 1, 2 ;
-    x = 10, 10.5, 11, 11.5 ;
-    v = 0, 1, 2, 3, 10, 11, 12, 13, 20, 21, 22, 23,
-        100, 101, 102, 103, 110, 111, 112, 113, 120, 121, 122, 123 ;
-    flat = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11 ;
+    depth = 0, 10 ; lat = 40, 40.5 ; lon = -5, -4, -3 ;
+    salinity = 35, 35.1, 35.2, 35.3, 35.4, 35.5, 36, 36.1, 36.2, 36.3, 36.4, 36.5 ;
+    surface = 1, 2, 3, 4, 5, 6 ;
 }
 CDL
 cat >"$work/series.cdl" <<'CDL'
