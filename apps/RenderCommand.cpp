@@ -441,7 +441,7 @@ Framing framingOf(const RenderArguments& arguments) {
     return framing;
 }
 
-// The option values of `render`, checked before any work so that nothing is left half-done.
+// The option values of `render`, as checkRenderOptions() parsed them.
 struct RenderOptions {
     glm::ivec2 size;
     Animation animation;
@@ -472,8 +472,7 @@ RenderOptions checkRenderOptions(const RenderArguments& arguments) {
                         std::to_string(kMaxThreads) + ", got " +
                         std::to_string(arguments.threads));
     }
-    return {size,       animation,  format,
-            request,    background, memoryLimitOf(arguments.memoryLimit)};
+    return {size, animation, format, request, background, memoryLimitOf(arguments.memoryLimit)};
 }
 
 void runRender(const RenderArguments& arguments, const RenderOptions& options) {
