@@ -191,7 +191,7 @@ TEST(NetCdfVolume, sizesInAClassicHeaderAreCheckedAgainstTheFileBeforeLibNetCdfA
                              "\xe2\xe2\xe2\xe2zzzz",  // its name's length, 4 bytes of name
                              24);
     std::ofstream(path, std::ios::binary) << header;
-    EXPECT_EQ(errorOf<ParseError>([&] { listNetCdfVariables(path); }),
+    EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
               path + ": truncated or corrupt NetCDF file: a name at byte 20 needs 3806520034 "
                      "bytes, but the file ends at byte 24");
     // A count of attributes beyond the file (CDF-5: 8-byte counts), checked before the items.
@@ -201,7 +201,7 @@ TEST(NetCdfVolume, sizesInAClassicHeaderAreCheckedAgainstTheFileBeforeLibNetCdfA
                              "\0\0\0\x0c\x7f\xff\xff\xff\xff\xff\xff\xff", // attributes
                              36);
     std::ofstream(path, std::ios::binary | std::ios::trunc) << counts;
-    EXPECT_EQ(errorOf<ParseError>([&] { readNetCdfVariable(path, "v"); }),
+    EXPECT_EQ(errorOf<IoError>([&] { readNetCdfVariable(path, "v"); }),
               path + ": truncated or corrupt NetCDF file: the global attributes at byte 36 "
                      "declares 9223372036854775807 items of at least 4 bytes, but the file ends "
                      "at byte 36");

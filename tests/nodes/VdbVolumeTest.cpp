@@ -281,10 +281,10 @@ TEST(VdbVolume, sizesInTheHeaderAreCheckedAgainstTheFileBeforeOpenVdbAllocates) 
     bytes.replace(65, 4, "\xe2\xe2\xe2\xe2");
     const std::string path = testPath("damaged.vdb");
     std::ofstream(path, std::ios::binary) << bytes;
-    EXPECT_EQ(errorOf<ParseError>([&] { listVdbGrids(path); }),
+    EXPECT_EQ(errorOf<IoError>([&] { listVdbGrids(path); }),
               path + ": truncated or corrupt VDB file: a grid's name at byte 69 needs 3806520034 "
                      "bytes, but the file ends at byte " + std::to_string(bytes.size()));
-    EXPECT_EQ(errorOf<ParseError>([&] { readVdbGrid(path, "density"); }),
+    EXPECT_EQ(errorOf<IoError>([&] { readVdbGrid(path, "density"); }),
               path + ": truncated or corrupt VDB file: a grid's name at byte 69 needs 3806520034 "
                      "bytes, but the file ends at byte " + std::to_string(bytes.size()));
 }

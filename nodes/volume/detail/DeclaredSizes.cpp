@@ -42,12 +42,12 @@ void DeclaredSizes::skip(std::uint64_t bytes, const std::string& what) {
     mIn.seekg(mOffset);
 }
 
-void DeclaredSizes::seek(std::uint64_t offset, const std::string& what) {
+bool DeclaredSizes::seek(std::uint64_t offset) {
     if (offset > std::uint64_t(mEnd))
-        corrupt(what + " at byte " + std::to_string(offset) + ", but the file ends at byte " +
-                std::to_string(mEnd));
+        return false;
     mOffset = static_cast<std::int64_t>(offset);
     mIn.seekg(mOffset);
+    return true;
 }
 
 std::uint64_t DeclaredSizes::sized(std::uint64_t items, std::uint64_t each,
@@ -66,7 +66,7 @@ void DeclaredSizes::need(std::uint64_t bytes, const std::string& what) const {
 }
 
 void DeclaredSizes::corrupt(const std::string& what) const {
-    throw ParseError(mPath + ": " + mDamage + ": " + what);
+    throw IoError(mPath + ": " + mDamage + ": " + what);
 }
 
 } // namespace texsplat::volume::detail

@@ -27,14 +27,15 @@ public:
     /// @brief Skips `bytes`, refused when the file ends before them.
     void skip(std::uint64_t bytes, const std::string& what);
 
-    /// @brief Moves to byte `offset`, refused beyond the end of the file.
-    void seek(std::uint64_t offset, const std::string& what);
+    /// @brief Moves to byte `offset`; false (and stays) when it is beyond the end of the file,
+    /// a truncation that the library reports in its own words.
+    bool seek(std::uint64_t offset);
 
     /// @brief `items` of at least `each` bytes, refused when they cannot fit in the rest of the
     /// file (checked before multiplying, so that the product cannot wrap); answers the bytes.
     std::uint64_t sized(std::uint64_t items, std::uint64_t each, const std::string& what) const;
 
-    /// @throws ParseError "path: <damage>: <what>".
+    /// @throws IoError "path: <damage>: <what>".
     [[noreturn]] void corrupt(const std::string& what) const;
 
 private:

@@ -44,7 +44,11 @@ private:
     // Padded to a multiple of 4 bytes.
     static std::uint64_t padded(std::uint64_t bytes) { return (bytes + 3) / 4 * 4; }
 
-    void name() { mFile.skip(padded(mFile.sized(count("a name's length"), 1, "a name")), "a name"); }
+    void name() {
+        const std::uint64_t length = count("a name's length");
+        mFile.skip(length, "a name");
+        mFile.skip(padded(length) - length, "a name's padding");
+    }
 
     // A list of `tag` items: ABSENT (two zero words) or the tag, a count and the items; each item
     // takes at least 4 bytes, so the count is checked before walking them.

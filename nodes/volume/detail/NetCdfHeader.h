@@ -10,7 +10,7 @@ namespace texsplat::volume::detail {
 /// attribute values) against the bytes the file has, before libnetcdf allocates for them: it
 /// allocates what a name's length says (a 40-byte file made it ask for 3.8 GB). A file of another
 /// format (NetCDF-4 is HDF5) is left to libnetcdf.
-/// @throws ParseError "path: truncated or corrupt NetCDF file: a name at byte 16 needs
+/// @throws IoError "path: truncated or corrupt NetCDF file: a name at byte 16 needs
 /// 3806520052 bytes, but the file ends at byte 40".
 void checkNetCdfHeaderSizes(const std::string& path);
 

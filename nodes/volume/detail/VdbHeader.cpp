@@ -39,11 +39,13 @@ public:
             const std::uint64_t grid = mFile.littleEndian(8, "a grid's position");
             mFile.skip(8, "a grid's buffer position");
             const std::uint64_t end = mFile.littleEndian(8, "a grid's end");
-            mFile.seek(grid, "a grid");
+            if (!mFile.seek(grid))
+                return;
             mFile.skip(4, "a grid's compression flags");
             metadata("a grid's metadata");
             text("a grid's transform type");
-            mFile.seek(end, "the end of a grid");
+            if (!mFile.seek(end))
+                return;
         }
     }
 
