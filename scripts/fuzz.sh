@@ -3,7 +3,7 @@
 # seed corpus in tests/fuzz/corpus/<target>/. Usage: scripts/fuzz.sh <fuzz build dir> --ci
 # Deterministic, so that a change cannot fail CI on a finding it did not cause: a fixed libFuzzer
 # seed (-seed=1) and a fixed number of runs per target, from the committed seeds only. The runs
-# are set per target below so that each takes about 5-20 s here: the header parsers run 500000,
+# are set per target below so that each takes under a minute here: the header parsers run 500000,
 # the file readers (a temporary file per input, third-party decoders: 2 to 400 runs a second
 # under ASan) and the command line (a CLI11 app built per run, about 130 a second) fewer.
 # TEXSPLAT_FUZZ_RUNS, when set, is the runs of every target.
