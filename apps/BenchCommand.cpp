@@ -11,6 +11,7 @@
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
+#include "scenegraph/MemoryLimit.h"
 #ifdef TEXSPLAT_WITH_GL
 #include "scenegraph/gl/EglContext.h"
 #endif
@@ -26,6 +27,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <utility>
 #include <unistd.h>
 
 namespace texsplat::apps {
@@ -149,8 +151,14 @@ sg::Node::Ptr sceneToMeasure(const BenchArguments& arguments) {
                       static_cast<float>(size.x) / static_cast<float>(size.y));
 }
 
-void runBench(const BenchArguments& arguments) {
-    applyMemoryLimit(arguments.memoryLimit);
+// The option values of `bench`, checked before any work.
+struct CheckedBench {
+    bench::BenchOptions options; // all but the backends, which need a device to resolve
+    std::vector<double> budgets; // with a SCENE
+    std::uint64_t memoryLimit;
+};
+
+CheckedBench checkBenchOptions(const BenchArguments& arguments) {
     const bool isScene = !arguments.scene.empty();
     bench::BenchOptions options;
     std::vector<double> budgets;
@@ -195,6 +203,14 @@ void runBench(const BenchArguments& arguments) {
         requireFileExtension(arguments.plot, {".svg"}, "plot");
         requireWritableFile(arguments.plot, "the plot");
     }
+    return {options, budgets, memoryLimitOf(arguments.memoryLimit)};
+}
+
+void runBench(const BenchArguments& arguments, CheckedBench checked) {
+    setMemoryLimit(checked.memoryLimit);
+    const bool isScene = !arguments.scene.empty();
+    bench::BenchOptions& options = checked.options;
+    const std::vector<double>& budgets = checked.budgets;
 
     // Each backend asked for once, in the order given; auto resolves as `render` does.
     std::shared_ptr<gl::EglContext> context;
@@ -251,7 +267,7 @@ void runBench(const BenchArguments& arguments) {
 
 } // namespace
 
-void addBenchCommand(CLI::App& app, int& exitCode) {
+void addBenchCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<BenchArguments>();
     CLI::App* command = app.add_subcommand(
         "bench", "Time texture splats, textured and polygonal Gaussians against the GL device's "
@@ -301,12 +317,15 @@ void addBenchCommand(CLI::App& app, int& exitCode) {
                      "full-resolution splats, set as its maxSplats (1: full resolution)")
         ->capture_default_str();
     addViewOptions(*command, arguments->framing);
-    command->callback([arguments, command, &exitCode] {
+    command->callback([arguments, command, mode, &exitCode] {
         arguments->datasetGiven = command->count("--dataset") > 0;
         arguments->methodGiven = command->count("--method") > 0;
         arguments->backendGiven = command->count("--backend") > 0;
         arguments->budgetsGiven = command->count("--budgets") > 0;
-        runBench(*arguments);
+        CheckedBench checked = checkBenchOptions(*arguments);
+        if (mode == CommandMode::Run) {
+            runBench(*arguments, std::move(checked));
+        }
         exitCode = kExitOk;
     });
 }

@@ -6,6 +6,7 @@
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "scenegraph/MemoryLimit.h"
 
 #include <CLI/CLI.hpp>
 
@@ -144,8 +145,8 @@ ImageComparison compareFiles(const CompareArguments& arguments, const image::Ima
     }
 }
 
-void runCompare(const CompareArguments& arguments) {
-    applyMemoryLimit(arguments.memoryLimit);
+void runCompare(const CompareArguments& arguments, std::uint64_t memoryLimit) {
+    setMemoryLimit(memoryLimit);
     if (!arguments.diff.empty()) {
         // Before the images are decoded, which may take long.
         image::supportedImageFormatOf(arguments.diff);
@@ -185,7 +186,7 @@ void runCompare(const CompareArguments& arguments) {
 
 } // namespace
 
-void addCompareCommand(CLI::App& app, int& exitCode) {
+void addCompareCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<CompareArguments>();
     CLI::App* command = app.add_subcommand(
         "compare", "Compare two images: RMSE, PSNR and max abs error per channel and over RGB");
@@ -213,8 +214,11 @@ void addCompareCommand(CLI::App& app, int& exitCode) {
         ->check(CLI::PositiveNumber);
     command->add_flag("--json", arguments->json, "Print the results as JSON");
     addMemoryLimitOption(*command, arguments->memoryLimit);
-    command->callback([arguments, &exitCode] {
-        runCompare(*arguments);
+    command->callback([arguments, mode, &exitCode] {
+        const std::uint64_t memoryLimit = memoryLimitOf(arguments->memoryLimit);
+        if (mode == CommandMode::Run) {
+            runCompare(*arguments, memoryLimit);
+        }
         exitCode = kExitOk;
     });
 }

@@ -79,7 +79,7 @@ void runInfo(const InfoArguments& arguments) {
 
 } // namespace
 
-void addInfoCommand(CLI::App& app, int& exitCode) {
+void addInfoCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<InfoArguments>();
     CLI::App* command = app.add_subcommand(
         "info", "Print a scene file's graph (types, names, fields that differ from their "
@@ -98,11 +98,13 @@ void addInfoCommand(CLI::App& app, int& exitCode) {
                      "(docs/scene-files.md) instead of printing")
         ->needs(reference);
     reference->excludes(scene);
-    command->callback([arguments, scene, &exitCode] {
+    command->callback([arguments, scene, mode, &exitCode] {
         if (!arguments->reference && scene->count() == 0) {
             throw CLI::RequiredError("scene (or --reference)");
         }
-        runInfo(*arguments);
+        if (mode == CommandMode::Run) {
+            runInfo(*arguments);
+        }
         exitCode = kExitOk;
     });
 }

@@ -402,12 +402,12 @@ void writeVectorTable(const KernelOptions& options) {
                 static_cast<unsigned>(parameters.seed));
 }
 
+// Writes the vector table, or the kernel's outputs after checkOptions().
 void runKernelCommand(const KernelOptions& options) {
     if (!options.vectorTable.empty()) {
         writeVectorTable(options);
         return;
     }
-    checkOptions(options);
     const auto started = std::chrono::steady_clock::now();
     const NamedKernel named = makeKernel(options);
     const double seconds =
@@ -435,7 +435,7 @@ void runKernelCommand(const KernelOptions& options) {
 
 } // namespace
 
-void addKernelCommand(CLI::App& app, int& exitCode) {
+void addKernelCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto options = std::make_shared<KernelOptions>();
     CLI::App* command = app.add_subcommand(
         "kernel", "The reconstruction kernel (Crawfis & Max 1993): the paper's table, the "
@@ -494,8 +494,13 @@ void addKernelCommand(CLI::App& app, int& exitCode) {
         ->needs(vectorTableOption);
     command->add_option("--seed", options->seed, "Vector table marks' random seed (default 1)")
         ->needs(vectorTableOption);
-    command->callback([options, &exitCode] {
-        runKernelCommand(*options);
+    command->callback([options, mode, &exitCode] {
+        if (options->vectorTable.empty()) {
+            checkOptions(*options);
+        }
+        if (mode == CommandMode::Run) {
+            runKernelCommand(*options);
+        }
         exitCode = kExitOk;
     });
 }

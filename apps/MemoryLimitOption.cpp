@@ -16,11 +16,9 @@ void addMemoryLimitOption(CLI::App& command, std::string& value) {
         ->type_name("BYTES");
 }
 
-void applyMemoryLimit(const std::string& value) {
-    setMemoryLimit(value.empty() ? availableMemoryBytes()
-                                 : withOption("--memory-limit", [&] {
-                                       return parseByteCount(value);
-                                   }));
+std::uint64_t memoryLimitOf(const std::string& value) {
+    return value.empty() ? availableMemoryBytes()
+                         : withOption("--memory-limit", [&] { return parseByteCount(value); });
 }
 
 } // namespace texsplat::apps

@@ -1,5 +1,6 @@
 #pragma once
 
+#include <cstdint>
 #include <string>
 
 namespace CLI {
@@ -12,8 +13,8 @@ namespace texsplat::apps {
 /// memory that one piece of large work may ask for (texsplat::memoryLimit()).
 void addMemoryLimitOption(CLI::App& command, std::string& value);
 
-/// @brief Sets the process's memory limit from the option's `value`; empty: the memory
-/// available now. Throws DataError naming --memory-limit for a value that is not a byte count.
-void applyMemoryLimit(const std::string& value);
+/// @brief The memory limit the option's `value` asks for; empty: the memory available now.
+/// Throws DataError naming --memory-limit for a value that is not a byte count.
+std::uint64_t memoryLimitOf(const std::string& value);
 
 } // namespace texsplat::apps

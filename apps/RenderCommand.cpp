@@ -431,7 +431,17 @@ render::BackendChoice chooseBackend(render::BackendRequest request,
     return backend;
 }
 
-void runRender(const RenderArguments& arguments) {
+// The option values of `render`, as checkRenderOptions() parsed them.
+struct RenderOptions {
+    glm::ivec2 size;
+    Animation animation;
+    image::ImageFormat format;
+    render::BackendRequest request;
+    glm::vec4 background;
+    std::uint64_t memoryLimit;
+};
+
+RenderOptions checkRenderOptions(const RenderArguments& arguments) {
     const glm::ivec2 size = parseSize(arguments.size);
     // Refuse a bad output name or option before any work, so nothing is left half-done.
     const Animation animation = parseAnimation(arguments);
@@ -453,9 +463,18 @@ void runRender(const RenderArguments& arguments) {
                         std::to_string(kMaxThreads) + ", got " +
                         std::to_string(arguments.threads));
     }
-    applyMemoryLimit(arguments.memoryLimit);
+    return {size, animation, format, request, background, memoryLimitOf(arguments.memoryLimit)};
+}
+
+void runRender(const RenderArguments& arguments, const RenderOptions& options) {
+    const glm::ivec2 size = options.size;
+    const Animation& animation = options.animation;
+    const image::ImageFormat format = options.format;
+    const glm::vec4 background = options.background;
+    setMemoryLimit(options.memoryLimit);
     const render::BackendChoice backend =
-        arguments.rayCast ? render::BackendChoice{} : chooseBackend(request, arguments.size, size);
+        arguments.rayCast ? render::BackendChoice{}
+                          : chooseBackend(options.request, arguments.size, size);
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -536,7 +555,7 @@ void runRender(const RenderArguments& arguments) {
 
 } // namespace
 
-void addRenderCommand(CLI::App& app, int& exitCode) {
+void addRenderCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<RenderArguments>();
     CLI::App* command = app.add_subcommand(
         "render", "Render a scene file (or the built-in tornado scene) to a PNG or OpenEXR image, "
@@ -595,8 +614,11 @@ void addRenderCommand(CLI::App& app, int& exitCode) {
                         "Integration step of --raycast in voxels")
         ->capture_default_str();
     addMemoryLimitOption(*command, arguments->memoryLimit);
-    command->callback([arguments, &exitCode] {
-        runRender(*arguments);
+    command->callback([arguments, mode, &exitCode] {
+        const RenderOptions options = checkRenderOptions(*arguments);
+        if (mode == CommandMode::Run) {
+            runRender(*arguments, options);
+        }
         exitCode = kExitOk;
     });
 }

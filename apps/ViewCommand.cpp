@@ -3,6 +3,7 @@
 #include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
 #include "apps/viewer/Viewer.h"
+#include "scenegraph/MemoryLimit.h"
 
 #include <CLI/CLI.hpp>
 
@@ -21,7 +22,7 @@ struct ViewArguments {
 
 } // namespace
 
-void addViewCommand(CLI::App& app, int& exitCode) {
+void addViewCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<ViewArguments>();
     ViewerOptions& options = arguments->options;
     CLI::App* command = app.add_subcommand(
@@ -54,13 +55,16 @@ void addViewCommand(CLI::App& app, int& exitCode) {
                         "At the end, write the last rendered view (without the panel) as PNG "
                         "or EXR");
     addMemoryLimitOption(*command, arguments->memoryLimit);
-    command->callback([arguments, &exitCode] {
-        applyMemoryLimit(arguments->memoryLimit);
+    command->callback([arguments, mode, &exitCode] {
+        const std::uint64_t memoryLimit = memoryLimitOf(arguments->memoryLimit);
         ViewerOptions viewerOptions = arguments->options;
         viewerOptions.framing.sceneName = viewerOptions.scene;
         viewerOptions.size = parseSize(arguments->size);
         viewerOptions.backend = render::parseBackendRequest(arguments->backend);
-        Viewer(viewerOptions).run();
+        if (mode == CommandMode::Run) {
+            setMemoryLimit(memoryLimit);
+            Viewer(viewerOptions).run();
+        }
         exitCode = kExitOk;
     });
 }

@@ -1,6 +1,7 @@
 #include "nodes/volume/NetCdfVolume.h"
 
 #include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/detail/NetCdfHeader.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
@@ -66,6 +67,7 @@ public:
     explicit NetCdfFile(const std::string& path) : mPath(path) {
         // The same messages as every reader for missing files, folders and FIFOs.
         static_cast<void>(detail::openForReading(path));
+        detail::checkNetCdfHeaderSizes(path);
         const int status = nc_open(path.c_str(), NC_NOWRITE, &mId);
         if (status == NC_ENOTNC)
             throw ParseError(path + ": not a NetCDF file: expected NetCDF classic, 64-bit offset, "

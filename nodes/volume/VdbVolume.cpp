@@ -7,6 +7,7 @@
 #include "nodes/volume/VdbGrid.h"
 #include "nodes/volume/detail/Printable.h"
 #include "nodes/volume/detail/SourceSupport.h"
+#include "nodes/volume/detail/VdbHeader.h"
 
 #include <openvdb/openvdb.h>
 
@@ -49,10 +50,12 @@ std::string corrupt(const std::string& path, const std::string& reason) {
 }
 
 // Opens with OpenVDB after checking the path ourselves, so a missing file gets the same message
-// as from the raw reader instead of OpenVDB's wording.
+// as from the raw reader instead of OpenVDB's wording, and the sizes its header declares
+// against the file before OpenVDB allocates for them.
 std::unique_ptr<openvdb::io::File> openVdb(const std::string& path) {
     openvdb::initialize();
     detail::openForReading(path);
+    detail::checkVdbHeaderSizes(path);
     auto file = std::make_unique<openvdb::io::File>(path);
     callOpenVdb([&] { return file->open(false); },
                 [&](const std::string& reason) {

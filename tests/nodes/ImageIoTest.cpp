@@ -13,6 +13,7 @@
 #include <fstream>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <unistd.h>
 
 namespace fs = std::filesystem;
@@ -152,6 +153,27 @@ TEST_F(ImageIoTest, pngStoresNonFinitePixelsAsTransparentBlack) {
     const Image read = readImage(path("nan.png"));
     EXPECT_EQ(read.pixel(0, 0), glm::vec4(0.0f));
     EXPECT_EQ(read.pixel(1, 0), glm::vec4(0.0f));
+}
+
+TEST_F(ImageIoTest, pngWithAnEmptyImageDataChunkFirstIsRead) {
+    // Found by fuzz_png_reader: stb_image copies an empty first IDAT chunk with memcpy from a
+    // null buffer (undefined behaviour, which UBSan stops at; harmless in practice). stb's code
+    // is compiled without that one check (nodes/image/CMakeLists.txt); the file reads.
+    Image image(3, 2);
+    image.setPixel(1, 1, {1.0f, 1.0f, 1.0f, 1.0f});
+    writeImage(image, path("plain.png"));
+    std::ifstream in(path("plain.png"), std::ios::binary);
+    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    const std::size_t data = bytes.find("IDAT");
+    ASSERT_NE(data, std::string::npos);
+    // Length 0, "IDAT", its CRC-32, before the chunk (its 4-byte length) that holds the pixels.
+    bytes.insert(data - 4, std::string("\0\0\0\0IDAT\x35\xaf\x06\x1e", 12));
+    std::ofstream(path("empty-idat.png"), std::ios::binary) << bytes;
+    const Image read = readImage(path("empty-idat.png"));
+    ASSERT_EQ(read.width(), 3);
+    ASSERT_EQ(read.height(), 2);
+    EXPECT_EQ(read.pixel(1, 1), glm::vec4(1.0f));
+    EXPECT_EQ(read.pixel(0, 0), glm::vec4(0.0f));
 }
 
 TEST_F(ImageIoTest, writeReplacesAnExistingFileWhole) {

@@ -181,6 +181,32 @@ TEST(NetCdfVolume, aFileThatIsNotNetCdfGetsTheFormatNamed) {
               pipe.path() + ": cannot read file: it is a FIFO, not a regular file");
 }
 
+TEST(NetCdfVolume, sizesInAClassicHeaderAreCheckedAgainstTheFileBeforeLibNetCdfAllocates) {
+    // Found by fuzz_netcdf_reader: a name's length of 0xe2e2e2e2 made libnetcdf allocate 3.8 GB
+    // for a file of 24 bytes.
+    const std::string path = testPath("name.nc");
+    const std::string header("CDF\x01"
+                             "\0\0\0\0"           // no records
+                             "\0\0\0\x0a\0\0\0\x01" // one dimension
+                             "\xe2\xe2\xe2\xe2zzzz",  // its name's length, 4 bytes of name
+                             24);
+    std::ofstream(path, std::ios::binary) << header;
+    EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
+              path + ": truncated or corrupt NetCDF file: a name at byte 20 needs 3806520034 "
+                     "bytes, but the file ends at byte 24");
+    // A count of attributes beyond the file (CDF-5: 8-byte counts), checked before the items.
+    const std::string counts("CDF\x05"
+                             "\0\0\0\0\0\0\0\0"             // no records
+                             "\0\0\0\0\0\0\0\0\0\0\0\0"     // no dimensions
+                             "\0\0\0\x0c\x7f\xff\xff\xff\xff\xff\xff\xff", // attributes
+                             36);
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << counts;
+    EXPECT_EQ(errorOf<IoError>([&] { readNetCdfVariable(path, "v"); }),
+              path + ": truncated or corrupt NetCDF file: the global attributes at byte 36 "
+                     "declares 9223372036854775807 items of at least 4 bytes, but the file ends "
+                     "at byte 36");
+}
+
 TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {
     REQUIRE_NCGEN();
     const std::string path = generate("series", kSeries);

@@ -269,6 +269,26 @@ TEST(VdbVolume, wrapsWhatOpenVdbThrowsForATruncatedFileWithTheFileName) {
     EXPECT_LT(middle.size(), path.size() + 200) << middle;
 }
 
+TEST(VdbVolume, sizesInTheHeaderAreCheckedAgainstTheFileBeforeOpenVdbAllocates) {
+    // Found by fuzz_vdb_reader: a damaged string length made OpenVDB allocate and fill 2.7 GB
+    // while opening a 10 KB file.
+    const std::string valid = writeTestFile();
+    std::ifstream in(valid, std::ios::binary);
+    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    // The header (magic 8, version 4, library version 8, offsets flag 1, UUID 36), no file
+    // metadata (4), the grid count (4), then the first grid's name: its length, then "density".
+    ASSERT_EQ(bytes.substr(65, 11), std::string("\x07\0\0\0density", 11));
+    bytes.replace(65, 4, "\xe2\xe2\xe2\xe2");
+    const std::string path = testPath("damaged.vdb");
+    std::ofstream(path, std::ios::binary) << bytes;
+    EXPECT_EQ(errorOf<IoError>([&] { listVdbGrids(path); }),
+              path + ": truncated or corrupt VDB file: a grid's name at byte 69 needs 3806520034 "
+                     "bytes, but the file ends at byte " + std::to_string(bytes.size()));
+    EXPECT_EQ(errorOf<IoError>([&] { readVdbGrid(path, "density"); }),
+              path + ": truncated or corrupt VDB file: a grid's name at byte 69 needs 3806520034 "
+                     "bytes, but the file ends at byte " + std::to_string(bytes.size()));
+}
+
 TEST(VdbVolume, refusesAFifoBeforeOpeningIt) {
     const texsplat::test::TestFifo pipe(testPath("grids.vdb"));
     const std::string& fifo = pipe.path();

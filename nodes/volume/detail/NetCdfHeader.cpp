@@ -1,0 +1,105 @@
+#include "nodes/volume/detail/NetCdfHeader.h"
+
+#include "nodes/volume/detail/DeclaredSizes.h"
+
+#include <string>
+
+namespace texsplat::volume::detail {
+namespace {
+
+// The header's layout, from the NetCDF classic format specification ("The NetCDF Classic
+// Format", NetCDF User's Guide): big-endian words; counts and lengths are 4 bytes in CDF-1 and
+// CDF-2, 8 in CDF-5; lists start with a tag, or two zero words when absent.
+constexpr std::uint64_t kDimensionTag = 0x0A;
+constexpr std::uint64_t kVariableTag = 0x0B;
+constexpr std::uint64_t kAttributeTag = 0x0C;
+
+class HeaderWalk {
+public:
+    HeaderWalk(DeclaredSizes& file, int version) : mFile(file), mVersion(version) {}
+
+    void walk() {
+        mFile.skip(mVersion == 5 ? 8 : 4, "the record count");
+        list(kDimensionTag, "the dimension list", [&] {
+            name();
+            count("a dimension's length");
+        });
+        attributes("the global attributes");
+        list(kVariableTag, "the variable list", [&] {
+            name();
+            const int idBytes = mVersion == 5 ? 8 : 4;
+            mFile.skip(mFile.sized(count("a variable's dimensions"), idBytes, "its dimension ids"),
+                       "a variable's dimension ids");
+            attributes("a variable's attributes");
+            mFile.skip(4 + (mVersion == 5 ? 8 : 4) + (mVersion == 1 ? 4 : 8),
+                       "a variable's type, size and offset");
+        });
+    }
+
+private:
+    std::uint64_t count(const std::string& what) {
+        return mFile.bigEndian(mVersion == 5 ? 8 : 4, what);
+    }
+
+    // Padded to a multiple of 4 bytes.
+    static std::uint64_t padded(std::uint64_t bytes) { return (bytes + 3) / 4 * 4; }
+
+    void name() {
+        const std::uint64_t length = count("a name's length");
+        mFile.skip(length, "a name");
+        mFile.skip(padded(length) - length, "a name's padding");
+    }
+
+    // A list of `tag` items: ABSENT (two zero words) or the tag, a count and the items; each item
+    // takes at least 4 bytes, so the count is checked before walking them.
+    template <typename Item> void list(std::uint64_t tag, const std::string& what, Item&& item) {
+        const std::uint64_t found = mFile.bigEndian(4, what);
+        const std::uint64_t items = count(what);
+        if (found == 0 && items == 0)
+            return;
+        if (found != tag)
+            mFile.corrupt(what + " has tag " + std::to_string(found) + ", expected " +
+                          std::to_string(tag));
+        mFile.sized(items, 4, what);
+        for (std::uint64_t i = 0; i < items; ++i)
+            item();
+    }
+
+    void attributes(const std::string& what) {
+        list(kAttributeTag, what, [&] {
+            name();
+            const std::uint64_t type = mFile.bigEndian(4, "an attribute's type");
+            const std::uint64_t values = count("an attribute's length");
+            mFile.skip(padded(mFile.sized(values, typeSize(type), "an attribute's values")),
+                       "an attribute's values");
+        });
+    }
+
+    // Bytes of one value of an external type (NC_BYTE 1 ... NC_UINT64 11); 1 for an unknown type,
+    // which libnetcdf refuses itself.
+    static std::uint64_t typeSize(std::uint64_t type) {
+        if (type == 3 || type == 8) // short, ushort
+            return 2;
+        if (type == 4 || type == 5 || type == 9) // int, float, uint
+            return 4;
+        if (type == 6 || type == 10 || type == 11) // double, int64, uint64
+            return 8;
+        return 1; // byte, char, ubyte
+    }
+
+    DeclaredSizes& mFile;
+    int mVersion;
+};
+
+} // namespace
+
+void checkNetCdfHeaderSizes(const std::string& path) {
+    DeclaredSizes file(path, "truncated or corrupt NetCDF file");
+    if (!file.startsWith("CDF"))
+        return;
+    const std::uint64_t version = file.bigEndian(1, "the format version");
+    if (version == 1 || version == 2 || version == 5)
+        HeaderWalk(file, int(version)).walk();
+}
+
+} // namespace texsplat::volume::detail
