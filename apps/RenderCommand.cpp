@@ -342,11 +342,13 @@ void printTimes(const sg::RenderStatistics& statistics, const SetupTimes& setup,
     rusage usage{};
     getrusage(RUSAGE_SELF, &usage);
     const double mebibyte = 1024.0 * 1024.0;
-    std::printf("  memory: peak %.1f MiB resident; splat list %.1f MiB, image %.1f MiB\n",
-                static_cast<double>(usage.ru_maxrss) * 1024.0 / mebibyte,
-                static_cast<double>(statistics.splats / std::max(frames, 1) *
-                                    sizeof(octree::Splat)) / mebibyte,
-                static_cast<double>(imageBytes) / mebibyte);
+    const sg::FrameMemory& bytes = statistics.memory;
+    const auto mib = [&](std::uint64_t count) { return static_cast<double>(count) / mebibyte; };
+    std::printf("  memory: peak %.1f MiB resident; largest frame: grids %.1f, classified %.1f, "
+                "octree %.1f, splat lists %.1f, textures %.1f, image %.1f MiB\n",
+                static_cast<double>(usage.ru_maxrss) * 1024.0 / mebibyte, mib(bytes.grids),
+                mib(bytes.classified), mib(bytes.octree), mib(bytes.splats), mib(bytes.textures),
+                mib(imageBytes));
 }
 
 // Progress of a ray cast on stderr: one updating line on a terminal; otherwise, once the render

@@ -179,6 +179,12 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
         });
     });
     statistics.splats += splats->size();
+    sg::FrameMemory& bytes = statistics.memory;
+    const volume::VectorGridPtr vectorGrid = vectors ? volume.vectorGrid() : nullptr;
+    bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
+    bytes.classified += classified->memoryBytes();
+    bytes.octree += fullResolution ? 0 : mCache->octree().memoryBytes();
+    bytes.splats += splats->memoryBytes();
     result.splats = std::move(splats);
     return result;
 }
@@ -206,6 +212,7 @@ void ScalarSplat::render(sg::RenderAction& action) {
         });
         mBatchContext = context;
     }
+    action.statistics().memory.textures += mBatch->textureBytes();
     sg::RenderAction::SplatWork work;
     work.count = splats.splats->size();
     work.depths = [splats] { return splats.cameraDepths(); };

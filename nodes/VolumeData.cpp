@@ -1,6 +1,7 @@
 #include "nodes/VolumeData.h"
 
 #include "nodes/detail/NodeContext.h"
+#include "nodes/detail/SharedLoads.h"
 #include "nodes/elements/VolumeElement.h"
 #include "nodes/volume/Blob.h"
 #include "nodes/volume/JetStream.h"
@@ -18,6 +19,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <initializer_list>
 #include <map>
 #include <string>
 #include <utility>
@@ -115,6 +117,26 @@ volume::RawHeader VolumeData::headerlessLayout() const {
 }
 
 std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
+    const auto kind = source.as<VolumeSource>();
+    const bool readsFile = kind == VolumeSource::FileRaw ||
+                           kind == VolumeSource::FileRawHeaderless ||
+                           kind == VolumeSource::FileNpy || kind == VolumeSource::FileNrrd ||
+                           kind == VolumeSource::FileNetCdf || kind == VolumeSource::FileVdb;
+    if (!readsFile || fileName.value().empty()) {
+        return read();
+    }
+    // Everything that shapes what is read, so that only equal loads share.
+    std::string key =
+        source.valueText() + "\n" + detail::fileIdentity(resolvedPath(fileName.value()));
+    const std::initializer_list<const sg::Field*> shaping = {
+        &gridName, &timeStep, &dimensions, &dataType, &byteOrder, &headerBytes, &components};
+    for (const sg::Field* field : shaping) {
+        key += "\n" + field->valueText();
+    }
+    return detail::sharedLoad<Loaded>(key, [this] { return read(); });
+}
+
+std::shared_ptr<const VolumeData::Loaded> VolumeData::read() const {
     auto result = std::make_shared<Loaded>();
     const auto kind = source.as<VolumeSource>();
     const auto requireFile = [this]() -> std::string {

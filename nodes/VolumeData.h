@@ -78,7 +78,9 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 ///
 /// Nothing is read or generated until something asks (scalarGrid(), vectorGrid(), fibers(), a
 /// bounding box): a scene pays only for the grids it references. Any change of a field drops the
-/// cache, and the next use loads again. Errors name the node and then the source:
+/// cache, and the next use loads again. Nodes that read the same file with the same fields share
+/// one load and one grid while any of them holds it (a changed file is read again); the grid is
+/// released when the last holder drops it. Errors name the node and then the source:
 /// "VolumeData 'cloud': cloud.raw: cannot open file (No such file or directory)".
 /// A long file load logs its progress at LogLevel::Info, named the same way
 /// ("VolumeData 'cloud': cloud.raw: reading 40%"; when, see volume::logProgress()).
@@ -190,7 +192,11 @@ private:
     struct Loaded;
 
     std::shared_ptr<const Loaded> loaded() const;
+    // The source's data: a file load shared with other nodes loading the same (detail::sharedLoad),
+    // or read().
     std::shared_ptr<const Loaded> load() const;
+    // Reads or generates the source's data.
+    std::shared_ptr<const Loaded> read() const;
     glm::i64vec3 dims() const;
     volume::RawHeader headerlessLayout() const;
 

@@ -2,6 +2,9 @@
 
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
+
+#include <glm/vector_relational.hpp>
 
 #include <cmath>
 #include <limits>
@@ -31,14 +34,17 @@ bool isFinite(glm::dvec3 v) {
 } // namespace
 
 ClassifiedGrid::ClassifiedGrid(glm::u64vec3 dims, glm::dvec3 spacing, glm::dvec3 origin)
-    : mDims(dims), mSpacing(spacing), mOrigin(origin) {
+    : mDims(dims), mBlockDims((dims + (kBlockSize - 1)) / kBlockSize), mSpacing(spacing),
+      mOrigin(origin) {
     if (dims.x == 0 || dims.y == 0 || dims.z == 0) {
         throw DataError("ClassifiedGrid: dimensions must be positive, got " + dimsText(dims));
     }
-    // The voxels live in one std::vector, so their byte count must fit in size_t.
-    constexpr std::uint64_t kMaxVoxels =
-        std::numeric_limits<std::size_t>::max() / sizeof(glm::vec4);
-    if (dims.y > kMaxVoxels / dims.x || dims.z > kMaxVoxels / (dims.x * dims.y)) {
+    // Linear voxel indices are 64-bit, and the block table lives in one std::vector.
+    constexpr std::uint64_t kMax = std::numeric_limits<std::uint64_t>::max();
+    constexpr std::uint64_t kMaxBlocks =
+        std::numeric_limits<std::size_t>::max() / sizeof(std::uint32_t);
+    if (dims.y > kMax / dims.x || dims.z > kMax / (dims.x * dims.y) ||
+        boxBlockCount(dims) > kMaxBlocks) {
         throw DataError("ClassifiedGrid: " + dimsText(dims) +
                         " voxels exceed the addressable memory");
     }
@@ -49,7 +55,24 @@ ClassifiedGrid::ClassifiedGrid(glm::u64vec3 dims, glm::dvec3 spacing, glm::dvec3
     if (!isFinite(origin)) {
         throw DataError("ClassifiedGrid: origin must be finite, got " + vectorText(origin));
     }
-    mVoxels.assign(static_cast<std::size_t>(voxelCount()), glm::vec4(0.0f));
+    mSlots.assign(static_cast<std::size_t>(boxBlockCount(dims)), kNoBlock);
+}
+
+ClassifiedGrid::Block& ClassifiedGrid::block(glm::u64vec3 ijk) {
+    std::uint32_t& slot = mSlots[static_cast<std::size_t>(blockIndex(ijk / kBlockSize))];
+    if (slot == kNoBlock) {
+        if (mBlocks.size() >= kNoBlock) {
+            throw DataError("ClassifiedGrid: more than 2^32 - 1 blocks of 8^3 voxels");
+        }
+        auto allocated = std::make_unique<Block>();
+        allocated->coordinates = ijk / kBlockSize;
+        if (mHasVectors) {
+            allocated->vectors = std::make_unique<std::array<glm::vec3, kBlockVoxels>>();
+        }
+        slot = static_cast<std::uint32_t>(mBlocks.size());
+        mBlocks.push_back(std::move(allocated));
+    }
+    return *mBlocks[slot];
 }
 
 void ClassifiedGrid::setVoxel(glm::u64vec3 ijk, glm::vec3 color, float extinction) {
@@ -65,26 +88,56 @@ void ClassifiedGrid::setVoxel(glm::u64vec3 ijk, glm::vec3 color, float extinctio
             throw DataError(text.str());
         }
     }
-    mVoxels[static_cast<std::size_t>(index(ijk))] = value;
+    if (value == glm::vec4(0.0f) && blockSlot(ijk) == kNoBlock) {
+        return;
+    }
+    glm::vec4& stored = block(ijk).voxels[static_cast<std::size_t>(offsetInBlock(ijk))];
+    mNonEmptyCount += (value != glm::vec4(0.0f) ? 1 : 0) - (stored != glm::vec4(0.0f) ? 1 : 0);
+    stored = value;
 }
 
 void ClassifiedGrid::enableVectors() {
-    if (mVectors.empty()) {
-        mVectors.assign(mVoxels.size(), glm::vec3(0.0f));
+    if (mHasVectors) {
+        return;
+    }
+    mHasVectors = true;
+    for (const std::unique_ptr<Block>& allocated : mBlocks) {
+        allocated->vectors = std::make_unique<std::array<glm::vec3, kBlockVoxels>>();
     }
 }
 
 void ClassifiedGrid::setVector(glm::u64vec3 ijk, glm::vec3 vector) {
     TEXSPLAT_ASSERT(hasVectors(), "ClassifiedGrid::setVector(): enableVectors() first");
-    TEXSPLAT_ASSERT(ijk.x < mDims.x && ijk.y < mDims.y && ijk.z < mDims.z,
-                    "ClassifiedGrid::setVector(): voxel outside the grid");
     if (!isFinite(glm::dvec3(vector))) {
         std::ostringstream text;
         text << "ClassifiedGrid: voxel (" << ijk.x << ", " << ijk.y << ", " << ijk.z
              << "): vector must be finite, got " << vectorText(glm::dvec3(vector));
         throw DataError(text.str());
     }
-    mVectors[static_cast<std::size_t>(index(ijk))] = vector;
+    const std::uint32_t slot = blockSlot(ijk);
+    if (slot != kNoBlock) {
+        const StorageIndex storage = storageIndex(slot, ijk);
+        (*mBlocks[slot]->vectors)[static_cast<std::size_t>(storage % kBlockVoxels)] = vector;
+    }
+}
+
+std::uint64_t ClassifiedGrid::boxBlockCount(glm::u64vec3 dims) {
+    const glm::u64vec3 blocks = dims / kBlockSize + glm::u64vec3(glm::notEqual(
+                                                        dims % kBlockSize, glm::u64vec3(0)));
+    return byteProduct(byteProduct(blocks.x, blocks.y), blocks.z);
+}
+
+std::uint64_t ClassifiedGrid::memoryBytes() const {
+    return memoryBytesFor(mDims, mBlocks.size(), mHasVectors);
+}
+
+std::uint64_t ClassifiedGrid::memoryBytesFor(glm::u64vec3 dims, std::uint64_t blocks,
+                                             bool withVectors) {
+    const std::uint64_t perBlock =
+        sizeof(Block) + sizeof(std::unique_ptr<Block>) +
+        (withVectors ? sizeof(std::array<glm::vec3, kBlockVoxels>) : 0);
+    return byteSum(byteProduct(boxBlockCount(dims), sizeof(std::uint32_t)),
+                         byteProduct(blocks, perBlock));
 }
 
 } // namespace texsplat::octree

@@ -7,7 +7,10 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <array>
+#include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace texsplat::octree {
@@ -18,51 +21,93 @@ namespace texsplat::octree {
 ///
 /// Voxel (i, j, k) is a sample at `origin + spacing * (i, j, k)`; its cell, the box a splat of
 /// it stands for, is that point +- spacing / 2. Dimensions and indices are 64-bit; the linear
-/// index is `i + nx * (j + ny * k)`. A voxel whose colour and extinction are all zero is empty
-/// and produces no splat (docs/design.md: "no splats for transparent voxels").
+/// index `i + nx * (j + ny * k)` names a voxel (octree keys), but voxels are read by their
+/// coordinates, or by storage index while walking blocks. A voxel whose colour and extinction
+/// are all zero is empty and produces no splat (docs/design.md: "no splats for transparent
+/// voxels").
+///
+/// Storage is block-sparse, so that memory follows what the transfer function leaves visible,
+/// not the grid's box: voxels live in 8³ blocks aligned to voxel (0, 0, 0) (the octree's nodes
+/// of level 3), and a block is allocated only when a non-empty value is set in it. A block
+/// table of 4 bytes per block of the box says where each block is. A dense grid pays the table
+/// and nothing else; an all-transparent one allocates no block.
 class ClassifiedGrid {
 public:
-    /// @brief A grid of @p dims voxels, all empty.
-    /// @throws DataError when a dimension is zero, the voxel count does not fit in memory
+    /// @brief Edge length of a block in voxels (2^kBlockLevel).
+    static constexpr std::uint64_t kBlockSize = 8;
+    /// @brief The octree level whose nodes are the blocks.
+    static constexpr int kBlockLevel = 3;
+    /// @brief Voxels per block.
+    static constexpr std::size_t kBlockVoxels = 512;
+
+    /// @brief Where a voxel lies in the block storage (its block's slot, times kBlockVoxels,
+    /// plus its place in the block, x fastest): a cheap handle for voxel() and vector() while
+    /// walking blocks.
+    using StorageIndex = std::uint64_t;
+
+    /// @brief A grid of @p dims voxels, all empty (no block allocated).
+    /// @throws DataError when a dimension is zero, the block table does not fit in memory
     /// addressing, a spacing is not finite and positive, or the origin is not finite.
     ClassifiedGrid(glm::u64vec3 dims, glm::dvec3 spacing, glm::dvec3 origin);
 
-    /// @brief Sets voxel @p ijk (which must lie inside the grid).
+    /// @brief Sets voxel @p ijk (which must lie inside the grid). An empty value in a block
+    /// that holds nothing yet allocates nothing.
     /// @throws DataError when a colour channel or the extinction is negative or not finite.
     void setVoxel(glm::u64vec3 ijk, glm::vec3 color, float extinction);
 
     /// @brief Gives every voxel a vector, all zero until setVector(): the flow that vector splats
     /// draw as marks (Crawfis & Max 1993, "Combined Vector and Scalar Textures"). Scalar grids have
-    /// none and pay nothing for it (12 more bytes per voxel when enabled).
+    /// none and pay nothing for it (12 more bytes per voxel of the allocated blocks when enabled).
     void enableVectors();
 
     /// @brief Whether enableVectors() was called.
-    [[nodiscard]] bool hasVectors() const { return !mVectors.empty(); }
+    [[nodiscard]] bool hasVectors() const { return mHasVectors; }
 
     /// @brief Sets the vector of voxel @p ijk, in the grid's (local) space; needs hasVectors().
+    /// An empty voxel draws no splat, so in a block that holds nothing the vector is not kept.
     /// @throws DataError when a component is not finite.
     void setVector(glm::u64vec3 ijk, glm::vec3 vector);
 
-    /// @brief The vector of the voxel with linear index @p index (hasVectors() must hold).
-    [[nodiscard]] glm::vec3 vector(std::uint64_t index) const {
-        TEXSPLAT_ASSERT(index < mVectors.size(), "ClassifiedGrid::vector(): no vector there");
-        return mVectors[static_cast<std::size_t>(index)];
+    /// @brief Colour (xyz) and extinction (w) of voxel @p ijk (zero outside allocated blocks).
+    [[nodiscard]] glm::vec4 voxel(glm::u64vec3 ijk) const {
+        const std::uint32_t slot = blockSlot(ijk);
+        return slot == kNoBlock ? glm::vec4(0.0f) : storedVoxel(storageIndex(slot, ijk));
     }
 
-    /// @brief Colour (xyz) and extinction (w) of the voxel with linear index @p index.
-    [[nodiscard]] glm::vec4 voxel(std::uint64_t index) const {
-        TEXSPLAT_ASSERT(index < mVoxels.size(), "ClassifiedGrid::voxel(): index outside the grid");
-        return mVoxels[static_cast<std::size_t>(index)];
+    /// @brief Colour and extinction of the voxel stored at @p storage (from forEachBlock()).
+    [[nodiscard]] glm::vec4 storedVoxel(StorageIndex storage) const {
+        return mBlocks[static_cast<std::size_t>(storage / kBlockVoxels)]
+            ->voxels[static_cast<std::size_t>(storage % kBlockVoxels)];
     }
 
-    /// @brief Whether the voxel with linear index @p index is empty (all four values zero).
-    [[nodiscard]] bool isEmptyVoxel(std::uint64_t index) const {
-        return voxel(index) == glm::vec4(0.0f);
+    /// @brief The vector of voxel @p ijk (hasVectors() must hold; zero outside allocated blocks).
+    [[nodiscard]] glm::vec3 vector(glm::u64vec3 ijk) const {
+        TEXSPLAT_ASSERT(mHasVectors, "ClassifiedGrid::vector(): no vectors");
+        const std::uint32_t slot = blockSlot(ijk);
+        return slot == kNoBlock ? glm::vec3(0.0f) : storedVector(storageIndex(slot, ijk));
+    }
+
+    /// @brief The vector of the voxel stored at @p storage (hasVectors() must hold).
+    [[nodiscard]] glm::vec3 storedVector(StorageIndex storage) const {
+        TEXSPLAT_ASSERT(mHasVectors, "ClassifiedGrid::storedVector(): no vectors");
+        const Block& block = *mBlocks[static_cast<std::size_t>(storage / kBlockVoxels)];
+        return (*block.vectors)[static_cast<std::size_t>(storage % kBlockVoxels)];
+    }
+
+    /// @brief Whether voxel @p ijk is empty (all four values zero).
+    [[nodiscard]] bool isEmptyVoxel(glm::u64vec3 ijk) const {
+        return voxel(ijk) == glm::vec4(0.0f);
     }
 
     /// @brief Linear index of voxel @p ijk.
     [[nodiscard]] std::uint64_t index(glm::u64vec3 ijk) const {
         return ijk.x + mDims.x * (ijk.y + mDims.y * ijk.z);
+    }
+
+    /// @brief Voxel coordinates of linear index @p index.
+    [[nodiscard]] glm::u64vec3 coordinates(std::uint64_t index) const {
+        TEXSPLAT_ASSERT(index < voxelCount(), "ClassifiedGrid: index outside the grid");
+        return {index % mDims.x, (index / mDims.x) % mDims.y, index / (mDims.x * mDims.y)};
     }
 
     /// @brief World position of a point given in voxel index coordinates (voxel centres are
@@ -80,15 +125,96 @@ public:
     /// @brief World position of voxel (0, 0, 0).
     [[nodiscard]] glm::dvec3 origin() const { return mOrigin; }
 
-    /// @brief Total number of voxels.
+    /// @brief Total number of voxels of the box, empty or not.
     [[nodiscard]] std::uint64_t voxelCount() const { return mDims.x * mDims.y * mDims.z; }
 
+    /// @brief Number of blocks along x, y, z (the box rounded up to whole blocks).
+    [[nodiscard]] glm::u64vec3 blockDims() const { return mBlockDims; }
+
+    /// @brief Whether block @p block (block coordinates) is allocated; voxels outside allocated
+    /// blocks are empty.
+    [[nodiscard]] bool hasBlock(glm::u64vec3 block) const {
+        return mSlots[static_cast<std::size_t>(blockIndex(block))] != kNoBlock;
+    }
+
+    /// @brief What blockStorage() answers for an unallocated block.
+    static constexpr StorageIndex kNoStorage = ~StorageIndex{0};
+
+    /// @brief The storage index of the voxel (0, 0, 0) of block @p block (block coordinates), or
+    /// kNoStorage when the block is not allocated; voxel ijk of the block is at that plus
+    /// offsetInBlock(ijk).
+    [[nodiscard]] StorageIndex blockStorage(glm::u64vec3 block) const {
+        const std::uint32_t slot = mSlots[static_cast<std::size_t>(blockIndex(block))];
+        return slot == kNoBlock ? kNoStorage : StorageIndex{slot} * kBlockVoxels;
+    }
+
+    /// @brief Where voxel @p ijk lies in its block's storage.
+    [[nodiscard]] static std::uint64_t offsetInBlock(glm::u64vec3 ijk) {
+        const glm::u64vec3 inBlock = ijk % kBlockSize;
+        return inBlock.x + kBlockSize * (inBlock.y + kBlockSize * inBlock.z);
+    }
+
+    /// @brief Number of non-empty voxels: what a full-resolution splat list holds at most.
+    [[nodiscard]] std::uint64_t nonEmptyVoxelCount() const { return mNonEmptyCount; }
+
+    /// @brief Number of allocated blocks.
+    [[nodiscard]] std::size_t blockCount() const { return mBlocks.size(); }
+
+    /// @brief Calls `visit(glm::u64vec3 block, StorageIndex first)` for every allocated block,
+    /// in allocation order: the block's coordinates and the storage index of its voxel (0, 0, 0)
+    /// (voxel (x, y, z) of the block is at `first + x + 8 * (y + 8 * z)`; voxels of a block
+    /// clipped by the grid's upper faces read as empty there).
+    template <typename Visit> void forEachBlock(Visit&& visit) const {
+        for (std::size_t slot = 0; slot < mBlocks.size(); ++slot) {
+            visit(mBlocks[slot]->coordinates, StorageIndex{slot} * kBlockVoxels);
+        }
+    }
+
+    /// @brief Bytes held: the block table and the allocated blocks (with their vectors).
+    [[nodiscard]] std::uint64_t memoryBytes() const;
+
+    /// @brief Number of blocks of a box of @p dims voxels, saturating at the largest uint64.
+    [[nodiscard]] static std::uint64_t boxBlockCount(glm::u64vec3 dims);
+
+    /// @brief What a grid of @p dims with @p blocks allocated blocks costs (memoryBytes()),
+    /// saturating at the largest uint64: for an estimate before classifying.
+    [[nodiscard]] static std::uint64_t memoryBytesFor(glm::u64vec3 dims, std::uint64_t blocks,
+                                                      bool withVectors);
+
 private:
+    static constexpr std::uint32_t kNoBlock = 0xffffffffu;
+
+    struct Block {
+        glm::u64vec3 coordinates{0};
+        std::array<glm::vec4, kBlockVoxels> voxels{};
+        std::unique_ptr<std::array<glm::vec3, kBlockVoxels>> vectors; // with hasVectors() only
+    };
+
+    [[nodiscard]] std::uint64_t blockIndex(glm::u64vec3 block) const {
+        return block.x + mBlockDims.x * (block.y + mBlockDims.y * block.z);
+    }
+
+    [[nodiscard]] std::uint32_t blockSlot(glm::u64vec3 ijk) const {
+        TEXSPLAT_ASSERT(ijk.x < mDims.x && ijk.y < mDims.y && ijk.z < mDims.z,
+                        "ClassifiedGrid: voxel outside the grid");
+        return mSlots[static_cast<std::size_t>(blockIndex(ijk / kBlockSize))];
+    }
+
+    [[nodiscard]] static StorageIndex storageIndex(std::uint32_t slot, glm::u64vec3 ijk) {
+        return StorageIndex{slot} * kBlockVoxels + offsetInBlock(ijk);
+    }
+
+    // The block of `ijk`, allocated on first use.
+    Block& block(glm::u64vec3 ijk);
+
     glm::u64vec3 mDims;
+    glm::u64vec3 mBlockDims;
     glm::dvec3 mSpacing;
     glm::dvec3 mOrigin;
-    std::vector<glm::vec4> mVoxels;
-    std::vector<glm::vec3> mVectors;
+    bool mHasVectors = false;
+    std::uint64_t mNonEmptyCount = 0;
+    std::vector<std::uint32_t> mSlots; // per block of the box: its slot in mBlocks, or kNoBlock
+    std::vector<std::unique_ptr<Block>> mBlocks;
 };
 
 } // namespace texsplat::octree

@@ -90,8 +90,8 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
     mMeanVectors.shrink_to_fit();
 }
 
-Octree::Statistics Octree::voxelStatistics(std::uint64_t index) const {
-    const glm::vec4 value = mGrid->voxel(index);
+Octree::Statistics Octree::voxelStatistics(glm::u64vec3 voxel) const {
+    const glm::vec4 value = mGrid->voxel(voxel);
     Statistics statistics;
     statistics.sum = glm::dvec4(value);
     statistics.minimum = value;
@@ -99,9 +99,9 @@ Octree::Statistics Octree::voxelStatistics(std::uint64_t index) const {
     statistics.count = 1;
     statistics.record.meanColor = glm::vec3(value);
     statistics.record.meanExtinction = value.w;
-    statistics.record.nonEmptyCount = mGrid->isEmptyVoxel(index) ? 0 : 1;
+    statistics.record.nonEmptyCount = value == glm::vec4(0.0f) ? 0 : 1;
     if (mGrid->hasVectors() && statistics.record.nonEmptyCount > 0) {
-        const glm::vec3 vector = mGrid->vector(index);
+        const glm::vec3 vector = mGrid->vector(voxel);
         statistics.meanVector = vector;
         statistics.vectorSum = glm::dvec3(vector);
         const double length = glm::length(glm::dvec3(vector));
@@ -117,10 +117,17 @@ Octree::Statistics Octree::voxelStatistics(std::uint64_t index) const {
 // before the node appends its non-empty children contiguously, so siblings stay adjacent.
 Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
     if (level == 0) {
-        return voxelStatistics(mGrid->index(coord));
+        return voxelStatistics(coord);
     }
     const glm::u64vec3 dims = mGrid->dims();
     Statistics statistics;
+    if (level == ClassifiedGrid::kBlockLevel && !mGrid->hasBlock(coord)) {
+        // An unallocated block: its voxels are empty, and only their number enters the mean.
+        const glm::u64vec3 begin = coord << glm::u64vec3(level);
+        const glm::u64vec3 extent = glm::min(begin + ClassifiedGrid::kBlockSize, dims) - begin;
+        statistics.count = extent.x * extent.y * extent.z;
+        return statistics;
+    }
     std::array<OctreeNode, 8> childRecords;
     std::array<glm::vec3, 8> childVectors;
     int childCount = 0;
@@ -162,17 +169,17 @@ OctreeNode Octree::node(const NodeRef& node) const {
     if (node.level > 0) {
         return mNodes[static_cast<std::size_t>(node.index)];
     }
-    const glm::vec4 value = mGrid->voxel(node.index);
+    const glm::vec4 value = mGrid->voxel(node.coord);
     OctreeNode voxel;
     voxel.meanColor = glm::vec3(value);
     voxel.meanExtinction = value.w;
-    voxel.nonEmptyCount = mGrid->isEmptyVoxel(node.index) ? 0 : 1;
+    voxel.nonEmptyCount = value == glm::vec4(0.0f) ? 0 : 1;
     return voxel;
 }
 
 glm::vec3 Octree::meanVector(const NodeRef& node) const {
     TEXSPLAT_ASSERT(mGrid->hasVectors(), "Octree::meanVector(): the grid has no vectors");
-    return node.level == 0 ? mGrid->vector(node.index)
+    return node.level == 0 ? mGrid->vector(node.coord)
                            : mMeanVectors[static_cast<std::size_t>(node.index)];
 }
 

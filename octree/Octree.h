@@ -23,7 +23,9 @@ namespace texsplat::octree {
 /// Nodes are aligned power-of-two blocks clipped to the grid, so any dimensions work (one voxel
 /// thick included); an axis that is exhausted simply stops splitting. Only nodes of level >= 1
 /// holding at least one non-empty voxel get a record (about 1/7 of the voxel count for dense
-/// data); voxels are read from the shared grid, and empty subtrees have no nodes at all.
+/// data); voxels are read from the shared grid, and empty subtrees have no nodes at all. The
+/// nodes of level 3 are the grid's 8³ blocks: the build skips the blocks the grid did not
+/// allocate, so its time follows the allocated blocks (plus one step per 512 voxels of the box).
 class Octree {
 public:
     /// @brief Builds the hierarchy over @p grid in O(voxels) time.
@@ -113,7 +115,7 @@ private:
     }
 
     Statistics build(int level, glm::u64vec3 coord);
-    Statistics voxelStatistics(std::uint64_t index) const;
+    Statistics voxelStatistics(glm::u64vec3 voxel) const;
 
     std::shared_ptr<const ClassifiedGrid> mGrid;
     std::vector<OctreeNode> mNodes;

@@ -44,7 +44,7 @@ std::vector<std::uint64_t> axisOrderFor(const ClassifiedGrid& grid, const View& 
 } // namespace
 
 SliceOrder::SliceOrder(const ClassifiedGrid& grid, const View& view)
-    : mDims(grid.dims()), mAxes{2, 1, 0} {
+    : mGrid(&grid), mAxes{2, 1, 0} {
     const glm::dvec3 direction = glm::abs(view.direction());
     int slice = 2;
     if (direction.x > direction[slice]) {
@@ -64,6 +64,22 @@ SliceOrder::SliceOrder(const ClassifiedGrid& grid, const View& view)
     for (int axis = 0; axis < 3; ++axis) {
         mOrder[static_cast<std::size_t>(axis)] = axisOrderFor(grid, view, axis);
     }
+    constexpr std::uint64_t kSize = ClassifiedGrid::kBlockSize;
+    const std::vector<std::uint64_t>& inner = mOrder[static_cast<std::size_t>(mAxes[2])];
+    for (std::uint64_t step = 0; step < inner.size(); ++step) {
+        const std::uint64_t block = inner[step] / kSize;
+        if (mSegments.empty() || mSegments.back().block != block) {
+            mSegments.push_back({block, step, step});
+        }
+        mSegments.back().end = step + 1;
+    }
+    const glm::u64vec3 blockDims = grid.blockDims();
+    mRowHasBlocks.assign(static_cast<std::size_t>(blockDims[mAxes[0]] * blockDims[mAxes[1]]),
+                         false);
+    grid.forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex /*first*/) {
+        mRowHasBlocks[static_cast<std::size_t>(block[mAxes[0]] +
+                                               blockDims[mAxes[0]] * block[mAxes[1]])] = true;
+    });
 }
 
 } // namespace texsplat::octree

@@ -17,7 +17,7 @@ namespace texsplat::octree {
 /// view walks from both ends toward the slice holding the eye, that slice last (for an eye
 /// outside the grid, one end is empty). Along any ray from the eye every cell coordinate moves
 /// away from the eye's, so this nested order puts every cell before the cells in front of it
-/// on a common ray (docs/octree.md). Indices are 64-bit linear grid indices.
+/// on a common ray (docs/octree.md). The order refers to the grid, which must outlive it.
 class SliceOrder {
 public:
     /// @brief The order of @p grid's voxels for @p view.
@@ -31,31 +31,57 @@ public:
         return mOrder[static_cast<std::size_t>(axis)];
     }
 
-    /// @brief Calls `visit(std::uint64_t index, glm::u64vec3 voxel)` with the linear index and
-    /// the coordinates of every voxel, back to front.
+    /// @brief Calls `visit(glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored)` for every
+    /// voxel of the grid's allocated blocks, back to front: the voxels of the whole box in this
+    /// order, less those of unallocated blocks (which are empty). The walk skips a row of blocks
+    /// that holds none at once and an unallocated block within a row at once, so its time
+    /// follows the allocated blocks, plus one step per row of the box and per block of a row
+    /// that holds blocks.
     template <typename Visit> void forEach(Visit&& visit) const {
-        const glm::u64vec3 stride(1, mDims.x, mDims.x * mDims.y);
         const auto outer = static_cast<std::size_t>(mAxes[0]);
         const auto middle = static_cast<std::size_t>(mAxes[1]);
         const auto inner = static_cast<std::size_t>(mAxes[2]);
+        constexpr std::uint64_t kSize = ClassifiedGrid::kBlockSize;
+        const glm::u64vec3 blockDims = mGrid->blockDims();
         glm::u64vec3 voxel(0);
         for (const std::uint64_t a : mOrder[outer]) {
             voxel[mAxes[0]] = a;
             for (const std::uint64_t b : mOrder[middle]) {
                 voxel[mAxes[1]] = b;
-                const std::uint64_t base = a * stride[mAxes[0]] + b * stride[mAxes[1]];
-                for (const std::uint64_t c : mOrder[inner]) {
-                    voxel[mAxes[2]] = c;
-                    visit(base + c * stride[mAxes[2]], voxel);
+                if (!mRowHasBlocks[static_cast<std::size_t>(
+                        a / kSize + blockDims[mAxes[0]] * (b / kSize))]) {
+                    continue;
+                }
+                for (const Segment& segment : mSegments) {
+                    voxel[mAxes[2]] = segment.block * kSize;
+                    const ClassifiedGrid::StorageIndex first = mGrid->blockStorage(voxel / kSize);
+                    if (first == ClassifiedGrid::kNoStorage) {
+                        continue;
+                    }
+                    for (std::uint64_t step = segment.begin; step < segment.end; ++step) {
+                        voxel[mAxes[2]] = mOrder[inner][step];
+                        visit(voxel, first + ClassifiedGrid::offsetInBlock(voxel));
+                    }
                 }
             }
         }
     }
 
 private:
-    glm::u64vec3 mDims;
+    // A run of the inner axis' order that stays in one block: steps [begin, end) of it.
+    struct Segment {
+        std::uint64_t block;
+        std::uint64_t begin;
+        std::uint64_t end;
+    };
+
+    const ClassifiedGrid* mGrid;
     std::array<int, 3> mAxes;
     std::array<std::vector<std::uint64_t>, 3> mOrder;
+    std::vector<Segment> mSegments;
+    // Per block of the outer and middle axes (outer fastest): whether the row of blocks along
+    // the inner axis holds an allocated block.
+    std::vector<bool> mRowHasBlocks;
 };
 
 } // namespace texsplat::octree

@@ -73,6 +73,10 @@ public:
     /// @brief The scalar part, back to front.
     [[nodiscard]] const std::vector<Splat>& splats() const { return mSplats; }
 
+    /// @brief Bytes the list holds (its allocated capacity).
+    [[nodiscard]] std::uint64_t memoryBytes() const {
+        return mSplats.capacity() * sizeof(Splat) + mVectors.capacity() * sizeof(SplatVector);
+    }
     /// @brief The vector part, parallel to `splats()`, or empty for scalar splats.
     [[nodiscard]] const std::vector<SplatVector>& vectors() const { return mVectors; }
 

@@ -70,7 +70,7 @@ void emitSplats(const Cut& cut, const View& view, SplatList& splats,
         Splat splat;
         if (node.level == 0) {
             // Voxels are most of a fine cut: read them straight from the grid.
-            const glm::vec4 value = grid.voxel(node.index);
+            const glm::vec4 value = grid.voxel(node.coord);
             splat.position = glm::vec3(grid.toWorld(glm::dvec3(node.coord)));
             splat.color = glm::vec3(value);
             splat.extinction = value.w;
@@ -95,21 +95,25 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
                      const VectorEmission* vectors) {
     splats.clear();
     TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
-    SliceOrder(grid, view).forEach([&](std::uint64_t index, glm::u64vec3 voxel) {
-        if (grid.isEmptyVoxel(index)) {
+    // Exactly what the list can hold: growing it by doubling would, for a big grid, hold the old
+    // and the new array at once and keep up to twice the splats' bytes.
+    splats.reserve(static_cast<std::size_t>(grid.nonEmptyVoxelCount()), vectors != nullptr);
+    SliceOrder(grid, view).forEach([&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
+        const glm::vec4 value = grid.storedVoxel(stored);
+        if (value == glm::vec4(0.0f)) {
             return;
         }
         const glm::dvec3 position = grid.toWorld(glm::dvec3(voxel));
         if (view.isPerspective() && view.depth(position) <= 0.0) {
             return;
         }
-        const glm::vec4 value = grid.voxel(index);
         Splat splat;
         splat.position = glm::vec3(position);
         splat.color = glm::vec3(value);
         splat.extinction = value.w;
         if (vectors) {
-            splats.add(splat, vectorSplat(*vectors, splat.position, grid.vector(index), index));
+            splats.add(splat, vectorSplat(*vectors, splat.position, grid.storedVector(stored),
+                                          grid.index(voxel)));
         } else {
             splats.add(splat);
         }

@@ -1,6 +1,7 @@
 #include "nodes/detail/SplatMemory.h"
 
 #include "nodes/VolumeData.h"
+#include "octree/ClassifiedGrid.h"
 #include "octree/OctreeNode.h"
 #include "octree/Splat.h"
 #include "scenegraph/MemoryLimit.h"
@@ -37,21 +38,29 @@ SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool
     // The vector field when there is one: scalarGrid() of vector data would make a component.
     const volume::VectorGridPtr vectors = volume.vectorGrid();
     SplatMemory memory;
-    memory.dims = vectors ? vectors->geometry().dims() : volume.scalarGrid()->geometry().dims();
+    std::uint64_t stored = 0;
+    if (vectors) {
+        memory.dims = vectors->geometry().dims();
+        stored = vectors->storedVoxelCount();
+    } else {
+        const volume::ScalarGridPtr scalars = volume.scalarGrid();
+        memory.dims = scalars->geometry().dims();
+        stored = scalars->storedVoxelCount();
+    }
     // Saturating: a sparse grid's box may hold 2^60 voxels, whose bytes would wrap.
-    const std::uint64_t voxels =
-        byteProduct(byteProduct(static_cast<std::uint64_t>(memory.dims.x),
-                                static_cast<std::uint64_t>(memory.dims.y)),
-                    static_cast<std::uint64_t>(memory.dims.z));
-    memory.classified =
-        byteProduct(voxels, sizeof(glm::vec4) + (withVectors ? sizeof(glm::vec3) : 0));
-    // Records exist for non-empty nodes of level >= 1: at most one per 7 voxels (1/8 + 1/64 +
-    // ...), with a mean vector each for vector grids.
+    const glm::u64vec3 dims(memory.dims);
+    const std::uint64_t boxBlocks = octree::ClassifiedGrid::boxBlockCount(dims);
+    // Each stored voxel can make at most one classified block non-empty, and a voxel that is
+    // not stored classifies to nothing.
+    memory.classified = octree::ClassifiedGrid::memoryBytesFor(
+        dims, std::min(boxBlocks, stored), withVectors);
+    // Records exist for non-empty nodes of level >= 1: at most one per 7 non-empty voxels
+    // (1/8 + 1/64 + ...), with a mean vector each for vector grids.
     memory.octree =
-        withOctree ? byteProduct(voxels / 7 + 1, sizeof(octree::OctreeNode) +
+        withOctree ? byteProduct(stored / 7 + 1, sizeof(octree::OctreeNode) +
                                                      (withVectors ? sizeof(glm::vec3) : 0))
                    : 0;
-    const std::uint64_t splats = maxSplats > 0 ? std::min(voxels, maxSplats) : voxels;
+    const std::uint64_t splats = maxSplats > 0 ? std::min(stored, maxSplats) : stored;
     memory.splats =
         byteProduct(splats, kBytesPerSplat + (withVectors ? kBytesPerVectorSplat : 0));
     return memory;

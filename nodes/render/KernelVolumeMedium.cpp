@@ -47,20 +47,20 @@ KernelVolumeMedium::KernelVolumeMedium(std::shared_ptr<const octree::ClassifiedG
 
     mDims = glm::i64vec3(mGrid->dims());
     const glm::i64vec3 voxelBricks = (mDims + (kBrickSize - 1)) / kBrickSize;
+    static_assert(kBrickSize == static_cast<std::int64_t>(octree::ClassifiedGrid::kBlockSize),
+                  "voxel bricks are the classified grid's blocks");
     std::vector<std::uint8_t> occupied(
         static_cast<std::size_t>(voxelBricks.x * voxelBricks.y * voxelBricks.z), 0);
-    for (std::int64_t k = 0; k < mDims.z; ++k) {
-        for (std::int64_t j = 0; j < mDims.y; ++j) {
-            const auto base = static_cast<std::uint64_t>(mDims.x * (j + mDims.y * k));
-            const std::int64_t brickRow =
-                voxelBricks.x * (j / kBrickSize + voxelBricks.y * (k / kBrickSize));
-            for (std::int64_t i = 0; i < mDims.x; ++i) {
-                if (!mGrid->isEmptyVoxel(base + static_cast<std::uint64_t>(i))) {
-                    occupied[static_cast<std::size_t>(brickRow + i / kBrickSize)] = 1;
-                }
+    mGrid->forEachBlock([&](glm::u64vec3 block, octree::ClassifiedGrid::StorageIndex first) {
+        for (std::size_t voxel = 0; voxel < octree::ClassifiedGrid::kBlockVoxels; ++voxel) {
+            if (mGrid->storedVoxel(first + voxel) != glm::vec4(0.0f)) {
+                const glm::i64vec3 brick(block);
+                occupied[static_cast<std::size_t>(
+                    brick.x + voxelBricks.x * (brick.y + voxelBricks.y * brick.z))] = 1;
+                return;
             }
         }
-    }
+    });
     // Bricks of sample positions b = -1 .. voxelBricks (stored at b + 1) cover index positions
     // [b·B, (b+1)·B); the voxels within the support of such a position lie in voxel bricks
     // b−1 .. b+1.
@@ -225,12 +225,10 @@ sg::RayCastMedium::Sample KernelVolumeMedium::sample(const sg::RayCastRay& ray, 
             if (!(yz < support2)) {
                 continue;
             }
-            const auto row = static_cast<std::uint64_t>(
-                low.x + mDims.x * ((low.y + j) + mDims.y * (low.z + k)));
             for (int i = 0; i < taps[0]; ++i) {
                 const float r2 = yz + distance2[0][i];
                 if (r2 < support2) {
-                    sum += (*mKernel)(r2) * mGrid->voxel(row + static_cast<std::uint64_t>(i));
+                    sum += (*mKernel)(r2) * mGrid->voxel(glm::u64vec3(low + glm::i64vec3(i, j, k)));
                 }
             }
         }

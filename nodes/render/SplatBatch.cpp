@@ -82,6 +82,19 @@ void SplatBatch::setInstanceAttributes(std::size_t first) {
     mAttributeFirst = first;
 }
 
+std::uint64_t SplatBatch::textureBytes() const {
+    std::uint64_t bytes = 0;
+    if (mFootprint) {
+        bytes += std::uint64_t(mFootprint->width()) * std::uint64_t(mFootprint->height()) *
+                 std::uint64_t(gl::bytesPerTexel(mFootprint->format()));
+    }
+    if (mTable) {
+        bytes += std::uint64_t(mTable->width()) * std::uint64_t(mTable->height()) *
+                 std::uint64_t(mTable->layers()) * std::uint64_t(gl::bytesPerTexel(mTable->format()));
+    }
+    return bytes;
+}
+
 SplatBatch SplatBatch::textured(const kernel::FootprintTexture& footprint) {
     SplatBatch batch(SplatShape::TexturedSquare, footprint.extent(), kSquareVertices,
                      kSquareIndices);

@@ -11,6 +11,7 @@
 #include "scenegraph/gl/VertexArray.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 
@@ -72,6 +73,9 @@ public:
     /// @brief Replaces the instance data by `splats` (back to front, as drawn); vector and
     /// combined batches need the list's vectors.
     void upload(const octree::SplatList& splats);
+
+    /// @brief Bytes of the batch's textures (footprint, vector table), for the time report.
+    [[nodiscard]] std::uint64_t textureBytes() const;
 
     /// @brief As upload(), remembering `splats` so that isUploaded() can tell: a node used
     /// twice in a graph (DEF/USE) draws two lists with one batch, and RenderAction may

@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <variant>
@@ -54,6 +55,11 @@ public:
     virtual void forEachStored(const VoxelVisitor& visit) const = 0;
     /// @brief Bytes of voxel storage held (for sparse grids proportional to the active blocks).
     virtual std::size_t memoryBytes() const = 0;
+    /// @brief Number of stored voxels, finite or not: a bound on the non-empty ones, which is
+    /// what work on the grid's voxels costs. By default every voxel of the box (dense storage).
+    virtual std::uint64_t storedVoxelCount() const {
+        return static_cast<std::uint64_t>(mGeometry.voxelCount());
+    }
 
     /// @brief Calls `visit` for every non-empty voxel (stored and finite), in storage order.
     void forEachActive(const VoxelVisitor& visit) const;

@@ -45,6 +45,10 @@ public:
     void forEachStored(const typename Grid<T>::VoxelVisitor& visit) const override;
     /// @copydoc Grid::memoryBytes
     std::size_t memoryBytes() const override;
+    /// @brief The active voxels (activeVoxelCount()).
+    std::uint64_t storedVoxelCount() const override {
+        return static_cast<std::uint64_t>(activeVoxelCount());
+    }
 
     /// @brief What a grid of `blocks` allocated blocks costs (its memoryBytes()), saturating at
     /// the largest uint64: a loader checks it against memory before building the grid.

@@ -1,5 +1,7 @@
 #include "scenegraph/actions/RenderStatistics.h"
 
+#include <algorithm>
+
 namespace texsplat::sg {
 
 std::string_view toString(RenderPhase phase) {
@@ -24,7 +26,16 @@ RenderStatistics& RenderStatistics::operator+=(const RenderStatistics& other) {
     }
     splats += other.splats;
     triangles += other.triangles;
+    memory.keepLarger(other.memory);
     return *this;
+}
+
+void FrameMemory::keepLarger(const FrameMemory& other) {
+    grids = std::max(grids, other.grids);
+    classified = std::max(classified, other.classified);
+    octree = std::max(octree, other.octree);
+    splats = std::max(splats, other.splats);
+    textures = std::max(textures, other.textures);
 }
 
 } // namespace texsplat::sg

@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string_view>
 
 namespace texsplat::sg {
@@ -22,11 +23,27 @@ inline constexpr std::size_t kRenderPhaseCount = 6;
 /// @brief Lower-case name of a phase ("read back"), for reports.
 std::string_view toString(RenderPhase phase);
 
+/// @brief Bytes a frame's drawing keeps, per kind, as `texsplat render --time-report` lists
+/// them: measured from the objects, so that what a scene does not use shows as 0 (a
+/// full-resolution frame builds no octree, the CPU backend makes no textures). Each splat node
+/// adds what it reads and makes; a grid that two nodes read counts twice.
+struct FrameMemory {
+    std::uint64_t grids = 0;      ///< the volume grids the splat nodes read
+    std::uint64_t classified = 0; ///< the classified grids (octree::ClassifiedGrid)
+    std::uint64_t octree = 0;     ///< the octrees' node records
+    std::uint64_t splats = 0;     ///< the splat lists
+    std::uint64_t textures = 0;   ///< GL textures of the splat batches (footprints, vector tables)
+
+    /// @brief Keeps the larger of each count: the largest frame of an animation.
+    void keepLarger(const FrameMemory& other);
+};
+
 /// @brief Where one frame's time went and how much it drew.
 struct RenderStatistics {
     std::array<double, kRenderPhaseCount> seconds{}; ///< wall seconds per RenderPhase
     std::size_t splats = 0;    ///< splats drawn (instances)
     std::size_t triangles = 0; ///< opaque triangles drawn (splat quads not counted)
+    FrameMemory memory;        ///< bytes the frame's drawing keeps
 
     /// @brief Seconds spent in `phase`.
     double time(RenderPhase phase) const { return seconds[static_cast<std::size_t>(phase)]; }
@@ -34,7 +51,8 @@ struct RenderStatistics {
     /// @brief Adds `wallSeconds` to `phase`.
     void addTime(RenderPhase phase, double wallSeconds);
 
-    /// @brief Adds another frame's times and counts (totals over an animation).
+    /// @brief Adds another frame's times and counts (totals over an animation); memory keeps
+    /// the larger frame's.
     RenderStatistics& operator+=(const RenderStatistics& other);
 };
 

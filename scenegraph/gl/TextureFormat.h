@@ -33,6 +33,9 @@ struct TextureSampling {
     bool mipmaps = false; ///< Build mipmaps after each upload (minifying then blends levels).
 };
 
+/// @brief Bytes one texel of `format` takes (as the driver is asked to store it).
+int bytesPerTexel(TextureFormat format);
+
 /// @brief Name of a format as in GL ("RGBA32F").
 const char* toString(TextureFormat format);
 

@@ -62,11 +62,10 @@ void EmitVoxelSplatsBaselineMemoryOrder(benchmark::State& state) {
         for (std::uint64_t k = 0; k < dims.z; ++k) {
             for (std::uint64_t j = 0; j < dims.y; ++j) {
                 for (std::uint64_t i = 0; i < dims.x; ++i) {
-                    const std::uint64_t index = grid->index({i, j, k});
-                    if (grid->isEmptyVoxel(index)) {
+                    const glm::vec4 voxel = grid->voxel(glm::u64vec3(i, j, k));
+                    if (voxel == glm::vec4(0.0f)) {
                         continue;
                     }
-                    const glm::vec4 voxel = grid->voxel(index);
                     texsplat::octree::Splat splat;
                     splat.position = glm::vec3(grid->toWorld(glm::dvec3(i, j, k)));
                     splat.color = glm::vec3(voxel);
@@ -90,7 +89,9 @@ void SliceOrderWalk(benchmark::State& state) {
     for (auto _ : state) {
         const texsplat::octree::SliceOrder order(*grid, view);
         std::uint64_t sum = 0;
-        order.forEach([&](std::uint64_t index, const glm::u64vec3&) { sum += index; });
+        order.forEach([&](const glm::u64vec3&, texsplat::octree::ClassifiedGrid::StorageIndex stored) {
+            sum += stored;
+        });
         benchmark::DoNotOptimize(sum);
     }
     state.SetItemsProcessed(state.iterations() *

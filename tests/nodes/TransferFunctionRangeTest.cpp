@@ -32,7 +32,7 @@ int transparentVoxels(const TransferFunction& tf, const DenseScalarGrid& grid) {
     const auto classified = tf.classify(grid);
     int count = 0;
     for (std::int64_t i = 0; i < grid.geometry().dims().x; ++i) {
-        count += classified->isEmptyVoxel(classified->index({std::uint64_t(i), 0, 0})) ? 1 : 0;
+        count += classified->isEmptyVoxel(glm::u64vec3(std::uint64_t(i), 0, 0)) ? 1 : 0;
     }
     return count;
 }
@@ -132,7 +132,7 @@ TEST(TransferFunctionRange, unitDistanceZeroIsOneVoxel) {
     EXPECT_FLOAT_EQ(top.extinction, 4.0f);
     EXPECT_FLOAT_EQ(top.color.r, 8.0f);
     const auto classified = tf->classify(*fine);
-    EXPECT_EQ(classified->voxel(classified->index({2, 0, 0})), glm::vec4(8.0f, 8.0f, 8.0f, 4.0f));
+    EXPECT_EQ(classified->voxel(glm::u64vec3(2, 0, 0)), glm::vec4(8.0f, 8.0f, 8.0f, 4.0f));
     // Anisotropic voxels: the geometric mean of the spacing.
     DenseScalarGrid flat(GridGeometry({1, 1, 1}, glm::dvec3(0.0), glm::dvec3(0.5, 1.0, 2.0)));
     EXPECT_FLOAT_EQ(tf->dataScale(flat).unitDistance, 1.0f);

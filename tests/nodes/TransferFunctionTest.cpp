@@ -213,14 +213,14 @@ TEST(TransferFunction, classifiesAGridIntoTheOctreeInput) {
     EXPECT_EQ(classified->dims(), glm::u64vec3(3, 2, 1));
     EXPECT_EQ(classified->origin(), glm::dvec3(10.0, 20.0, 30.0));
     EXPECT_EQ(classified->spacing(), glm::dvec3(0.5, 1.0, 2.0));
-    EXPECT_TRUE(classified->isEmptyVoxel(classified->index({0, 0, 0})));
-    EXPECT_TRUE(classified->isEmptyVoxel(classified->index({2, 0, 0})));
-    EXPECT_EQ(classified->voxel(classified->index({1, 0, 0})),
+    EXPECT_TRUE(classified->isEmptyVoxel(glm::u64vec3(0, 0, 0)));
+    EXPECT_TRUE(classified->isEmptyVoxel(glm::u64vec3(2, 0, 0)));
+    EXPECT_EQ(classified->voxel(glm::u64vec3(1, 0, 0)),
               glm::vec4(0.25f, 0.25f, 0.25f, 0.5f));
-    EXPECT_EQ(classified->voxel(classified->index({0, 1, 0})), glm::vec4(1.0f));
-    EXPECT_EQ(classified->voxel(classified->index({1, 1, 0})), glm::vec4(1.0f));
+    EXPECT_EQ(classified->voxel(glm::u64vec3(0, 1, 0)), glm::vec4(1.0f));
+    EXPECT_EQ(classified->voxel(glm::u64vec3(1, 1, 0)), glm::vec4(1.0f));
     const Classification quarter = tf->classify(0.25f);
-    EXPECT_EQ(classified->voxel(classified->index({2, 1, 0})),
+    EXPECT_EQ(classified->voxel(glm::u64vec3(2, 1, 0)),
               glm::vec4(quarter.color, quarter.extinction));
 }
 

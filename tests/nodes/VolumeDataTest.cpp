@@ -137,6 +137,36 @@ TEST(VolumeData, readsARawFile) {
     EXPECT_TRUE(log.messages().empty()) << "a small file loads quietly";
 }
 
+TEST(VolumeData, nodesReadingTheSameFileShareOneGridWhileOneHoldsIt) {
+    volume::DenseScalarGrid grid(volume::GridGeometry({2, 3, 4}));
+    grid.setValue({1, 2, 3}, 42.0f);
+    const std::string path = testPath("shared.raw");
+    volume::writeRawVolume(path, grid);
+    const auto reader = [&path] {
+        const auto volume = VolumeData::create();
+        volume->source.setValue(VolumeSource::FileRaw);
+        volume->fileName = path;
+        return volume;
+    };
+    auto first = reader();
+    const auto second = reader();
+    volume::ScalarGridPtr read = first->scalarGrid();
+    EXPECT_EQ(second->scalarGrid(), read);
+    const std::weak_ptr<const volume::ScalarGrid> released = read;
+    read.reset();
+
+    // Nothing else holds the grid once both nodes let it go; a changed file is read again.
+    first.reset();
+    second->fileName = path; // a field change drops the node's load
+    grid.setValue({1, 2, 3}, 7.0f);
+    volume::writeRawVolume(path, grid);
+    std::filesystem::last_write_time(path, std::filesystem::last_write_time(path) +
+                                               std::chrono::seconds(1));
+    const volume::ScalarGridPtr reread = second->scalarGrid();
+    EXPECT_TRUE(released.expired());
+    EXPECT_EQ(reread->value({1, 2, 3}), 7.0f);
+}
+
 TEST(VolumeData, logsTheProgressOfABigFile) {
     // 256^3 float32 = 64 MiB, the size from which progress is logged: a file of zeros, sparse on
     // disk, read in 16 chunks of 4 MiB.

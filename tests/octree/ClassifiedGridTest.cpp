@@ -28,10 +28,10 @@ TEST(ClassifiedGrid, startsEmptyWithLinearIndexXFastest) {
     ClassifiedGrid grid({5, 7, 3}, {1.0, 2.0, 0.5}, {10.0, 0.0, -1.0});
     EXPECT_EQ(grid.voxelCount(), 105u);
     EXPECT_EQ(grid.index({1, 2, 1}), 1u + 5u * (2u + 7u * 1u));
-    EXPECT_TRUE(grid.isEmptyVoxel(grid.index({4, 6, 2})));
+    EXPECT_TRUE(grid.isEmptyVoxel(glm::u64vec3(4, 6, 2)));
     grid.setVoxel({4, 6, 2}, {0.0f, 0.0f, 0.0f}, 0.25f);
-    EXPECT_FALSE(grid.isEmptyVoxel(grid.index({4, 6, 2})));
-    EXPECT_EQ(grid.voxel(grid.index({4, 6, 2})).w, 0.25f);
+    EXPECT_FALSE(grid.isEmptyVoxel(glm::u64vec3(4, 6, 2)));
+    EXPECT_EQ(grid.voxel(glm::u64vec3(4, 6, 2)).w, 0.25f);
     EXPECT_EQ(grid.toWorld({4.0, 6.0, 2.0}), glm::dvec3(14.0, 12.0, 0.0));
 }
 
@@ -66,7 +66,7 @@ TEST(ClassifiedGrid, rejectsNegativeOrNonFiniteValues) {
                                 std::numeric_limits<float>::infinity());
               }),
               "ClassifiedGrid: voxel (0, 1, 0): extinction must be finite and >= 0, got inf");
-    EXPECT_TRUE(grid.isEmptyVoxel(grid.index({1, 0, 1})));
+    EXPECT_TRUE(grid.isEmptyVoxel(glm::u64vec3(1, 0, 1)));
 }
 
 TEST(ClassifiedGrid, vectorsAreThereOnlyWhenEnabledAndMustBeFinite) {
@@ -74,12 +74,71 @@ TEST(ClassifiedGrid, vectorsAreThereOnlyWhenEnabledAndMustBeFinite) {
     EXPECT_FALSE(grid.hasVectors());
     grid.enableVectors();
     ASSERT_TRUE(grid.hasVectors());
-    EXPECT_EQ(grid.vector(1), glm::vec3(0.0f));
+    EXPECT_EQ(grid.vector(glm::u64vec3(1, 0, 0)), glm::vec3(0.0f));
+    // An empty voxel draws nothing: in a block that holds nothing its vector is not kept.
     grid.setVector({1, 0, 0}, {1.0f, -2.0f, 3.0f});
-    EXPECT_EQ(grid.vector(1), glm::vec3(1.0f, -2.0f, 3.0f));
+    EXPECT_EQ(grid.vector(glm::u64vec3(1, 0, 0)), glm::vec3(0.0f));
+    EXPECT_EQ(grid.blockCount(), 0u);
+    grid.setVoxel({1, 0, 0}, glm::vec3(0.0f), 1.0f);
+    grid.setVector({1, 0, 0}, {1.0f, -2.0f, 3.0f});
+    EXPECT_EQ(grid.vector(glm::u64vec3(1, 0, 0)), glm::vec3(1.0f, -2.0f, 3.0f));
     EXPECT_EQ(errorOf([&] {
                   grid.setVector({0, 0, 0}, {0.0f, std::numeric_limits<float>::quiet_NaN(), 0.0f});
               }),
               "ClassifiedGrid: voxel (0, 0, 0): vector must be finite, got (0, nan, 0)");
-    EXPECT_EQ(grid.vector(0), glm::vec3(0.0f));
+    EXPECT_EQ(grid.vector(glm::u64vec3(0, 0, 0)), glm::vec3(0.0f));
+}
+
+TEST(ClassifiedGrid, allocatesABlockOnlyWhereANonEmptyValueIsSet) {
+    const glm::u64vec3 dims(64, 40, 17);
+    ClassifiedGrid grid(dims, glm::dvec3(1.0), glm::dvec3(0.0));
+    EXPECT_EQ(grid.blockDims(), glm::u64vec3(8, 5, 3));
+    const std::uint64_t table = ClassifiedGrid::boxBlockCount(dims) * sizeof(std::uint32_t);
+    EXPECT_EQ(grid.memoryBytes(), table);
+    for (std::uint64_t k = 0; k < dims.z; ++k) {
+        grid.setVoxel({3, 5, k}, glm::vec3(0.0f), 0.0f);
+    }
+    EXPECT_EQ(grid.blockCount(), 0u);
+    EXPECT_EQ(grid.memoryBytes(), table);
+
+    grid.setVoxel({63, 39, 16}, glm::vec3(1.0f), 2.0f); // in a block clipped by all three faces
+    grid.setVoxel({56, 32, 16}, glm::vec3(0.5f), 0.0f); // the same block
+    grid.setVoxel({8, 0, 0}, glm::vec3(0.0f), 1.0f);
+    EXPECT_EQ(grid.blockCount(), 2u);
+    EXPECT_EQ(grid.nonEmptyVoxelCount(), 3u);
+    EXPECT_TRUE(grid.hasBlock({7, 4, 2}));
+    EXPECT_TRUE(grid.hasBlock({1, 0, 0}));
+    EXPECT_FALSE(grid.hasBlock({0, 0, 0}));
+    EXPECT_EQ(grid.memoryBytes(), ClassifiedGrid::memoryBytesFor(dims, 2, false));
+    EXPECT_GT(grid.memoryBytes(), table + 2 * ClassifiedGrid::kBlockVoxels * sizeof(glm::vec4));
+    EXPECT_EQ(grid.voxel(glm::u64vec3(63, 39, 16)), glm::vec4(1.0f, 1.0f, 1.0f, 2.0f));
+    EXPECT_EQ(grid.voxel(glm::u64vec3(56, 32, 16)), glm::vec4(0.5f, 0.5f, 0.5f, 0.0f));
+    EXPECT_TRUE(grid.isEmptyVoxel(glm::u64vec3(57, 32, 16)));
+
+    // An allocated block takes empty values like any other (the voxel is empty again).
+    grid.setVoxel({8, 0, 0}, glm::vec3(0.0f), 0.0f);
+    EXPECT_TRUE(grid.isEmptyVoxel(glm::u64vec3(8, 0, 0)));
+    EXPECT_EQ(grid.nonEmptyVoxelCount(), 2u);
+
+    std::uint64_t visited = 0;
+    grid.forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex first) {
+        EXPECT_EQ(first, grid.blockStorage(block));
+        EXPECT_EQ(grid.storedVoxel(first + ClassifiedGrid::offsetInBlock({63, 39, 16})),
+                  grid.voxel(block * ClassifiedGrid::kBlockSize + glm::u64vec3(7, 7, 0)));
+        ++visited;
+    });
+    EXPECT_EQ(visited, 2u);
+    EXPECT_EQ(grid.blockStorage({0, 0, 0}), ClassifiedGrid::kNoStorage);
+}
+
+TEST(ClassifiedGrid, vectorsOfBlocksAllocatedAfterEnablingAreKept) {
+    ClassifiedGrid grid({20, 3, 3}, glm::dvec3(1.0), glm::dvec3(0.0));
+    grid.setVoxel({1, 1, 1}, glm::vec3(1.0f), 1.0f);
+    grid.enableVectors();
+    grid.setVoxel({17, 2, 2}, glm::vec3(1.0f), 1.0f);
+    grid.setVector({1, 1, 1}, {1.0f, 0.0f, 0.0f});
+    grid.setVector({17, 2, 2}, {0.0f, 0.0f, 4.0f});
+    EXPECT_EQ(grid.vector(glm::u64vec3(1, 1, 1)), glm::vec3(1.0f, 0.0f, 0.0f));
+    EXPECT_EQ(grid.vector(glm::u64vec3(17, 2, 2)), glm::vec3(0.0f, 0.0f, 4.0f));
+    EXPECT_EQ(grid.memoryBytes(), ClassifiedGrid::memoryBytesFor(grid.dims(), 2, true));
 }

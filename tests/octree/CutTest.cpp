@@ -53,7 +53,7 @@ TEST(Cut, zeroThresholdSplatsExactlyTheNonEmptyVoxels) {
         }
         std::vector<std::uint64_t> nonEmpty;
         for (std::uint64_t index = 0; index < octree.grid().voxelCount(); ++index) {
-            if (!octree.grid().isEmptyVoxel(index)) {
+            if (!octree.grid().isEmptyVoxel(octree.grid().coordinates(index))) {
                 nonEmpty.push_back(index);
             }
         }
@@ -139,7 +139,7 @@ std::shared_ptr<ClassifiedGrid> scaledGrid(const ClassifiedGrid& grid, float fac
     for (std::uint64_t k = 0; k < dims.z; ++k) {
         for (std::uint64_t j = 0; j < dims.y; ++j) {
             for (std::uint64_t i = 0; i < dims.x; ++i) {
-                const glm::vec4 value = grid.voxel(grid.index({i, j, k})) * factor;
+                const glm::vec4 value = grid.voxel(glm::u64vec3(i, j, k)) * factor;
                 scaled->setVoxel({i, j, k}, glm::vec3(value), value.w);
             }
         }

@@ -30,9 +30,8 @@ BruteForce bruteForce(const ClassifiedGrid& grid, glm::u64vec3 begin, glm::u64ve
     for (std::uint64_t k = begin.z; k < end.z; ++k) {
         for (std::uint64_t j = begin.y; j < end.y; ++j) {
             for (std::uint64_t i = begin.x; i < end.x; ++i) {
-                const std::uint64_t index = grid.index({i, j, k});
-                values.emplace_back(grid.voxel(index));
-                result.nonEmpty += grid.isEmptyVoxel(index) ? 0 : 1;
+                values.emplace_back(grid.voxel(glm::u64vec3(i, j, k)));
+                result.nonEmpty += grid.isEmptyVoxel(glm::u64vec3(i, j, k)) ? 0 : 1;
             }
         }
     }

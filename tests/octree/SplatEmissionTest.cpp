@@ -66,7 +66,7 @@ TEST(SplatEmission, voxelSplatsSkipEmptyVoxelsAndFollowTheSliceOrder) {
     emitVoxelSplats(*grid, view, splats);
     std::uint64_t nonEmpty = 0;
     for (std::uint64_t index = 0; index < grid->voxelCount(); ++index) {
-        nonEmpty += grid->isEmptyVoxel(index) ? 0 : 1;
+        nonEmpty += grid->isEmptyVoxel(grid->coordinates(index)) ? 0 : 1;
     }
     ASSERT_EQ(splats.size(), nonEmpty);
     float previousZ = -1.0f;
