@@ -47,6 +47,20 @@ template <class T> std::shared_ptr<T> firstOfType(sg::Node& root) {
                                   : std::dynamic_pointer_cast<T>(search.paths().front().tail());
 }
 
+// Mean luminance (Rec. 709) of the part of `region` inside `image`, over an opaque black page
+// where the image is transparent; 0 for a region outside the image.
+double luminanceUnder(const image::Image& image, image::ImageRegion region) {
+    const int x0 = std::max(region.x, 0);
+    const int y0 = std::max(region.y, 0);
+    const int x1 = std::min(region.x + region.width, image.width());
+    const int y1 = std::min(region.y + region.height, image.height());
+    if (x0 >= x1 || y0 >= y1) {
+        return 0.0;
+    }
+    const glm::dvec4 mean = image.statistics({x0, y0, x1 - x0, y1 - y0}).mean;
+    return 0.2126 * mean.r + 0.7152 * mean.g + 0.0722 * mean.b;
+}
+
 } // namespace
 
 LegendPosition parseLegendPosition(const std::string& name) {
@@ -134,9 +148,13 @@ void ColorLegend::draw(image::Image& image) const {
             topLeft.x = keepInside(centre - textWidth / 2, textWidth, image.width());
             topLeft.y = bar.y + bar.height + layout.gap;
         }
-        font.draw(image, topLeft + glm::ivec2(font.shadowOffset()), text,
-                  glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
-        font.draw(image, topLeft, text, glm::vec4(1.0f));
+        // Ink that stands out from what lies under the label, with a shadow of the other tone.
+        const bool onLight = luminanceUnder(image, {topLeft.x, topLeft.y, textWidth, labelHeight}) >
+                             0.5;
+        const glm::vec4 black(0.0f, 0.0f, 0.0f, 1.0f);
+        const glm::vec4 white(1.0f);
+        font.draw(image, topLeft + glm::ivec2(font.shadowOffset()), text, onLight ? white : black);
+        font.draw(image, topLeft, text, onLight ? black : white);
     }
 }
 

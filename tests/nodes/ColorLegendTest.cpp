@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 namespace texsplat::annotation {
 namespace {
 
@@ -127,6 +129,31 @@ TEST(NumberFont, drawsGlyphsAtScale) {
     EXPECT_FALSE(NumberFont::hasGlyph('x'));
     EXPECT_EQ(errorOf<DataError>([&] { NumberFont::draw(image, {0, 0}, "1x", 1, {}); }),
               "NumberFont: no glyph for 'x'; it writes digits, '-', '+', '.', 'e' and space");
+}
+
+TEST(ColorLegend, labelsAreDarkOnALightBackground) {
+    // On white the labels are drawn in the other tone than on black: the label area on white is
+    // the negative of the label area on black.
+    const auto drawnOn = [](float tone) {
+        image::Image image(320, 240);
+        for (int y = 0; y < 240; ++y)
+            for (int x = 0; x < 320; ++x)
+                image.setPixel(x, y, glm::vec4(glm::vec3(tone), 1.0f));
+        legendOf(magma(), LegendPosition::Right).draw(image);
+        return image;
+    };
+    const image::Image onBlack = drawnOn(0.0f);
+    const image::Image onWhite = drawnOn(1.0f);
+    const image::ImageRegion bar = legendOf(magma(), LegendPosition::Right).barRegion(320, 240);
+    int ink = 0;
+    double mismatch = 0.0;
+    for (int y = 0; y < 240; ++y)
+        for (int x = bar.x + bar.width; x < 320; ++x) {
+            ink += onBlack.pixel(x, y).g > 0.5f ? 1 : 0;
+            mismatch += std::abs(onWhite.pixel(x, y).g - (1.0f - onBlack.pixel(x, y).g));
+        }
+    EXPECT_GT(ink, 40);
+    EXPECT_LT(mismatch, 1.0);
 }
 
 } // namespace
