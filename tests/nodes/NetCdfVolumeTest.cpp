@@ -207,6 +207,26 @@ TEST(NetCdfVolume, sizesInAClassicHeaderAreCheckedAgainstTheFileBeforeLibNetCdfA
                      "at byte 36");
 }
 
+TEST(NetCdfVolume, aVariableOfAnUnknownTypeIsRefusedBeforeLibNetCdfDividesByItsSize) {
+    // Found by fuzz_netcdf_reader (scripts/fuzz-long.sh, seed 7): a variable of type 12 in a
+    // classic file stopped the process with SIGFPE inside libnetcdf (NC_check_vlen).
+    const std::string path = testPath("type.nc");
+    const std::string header("CDF\x01"
+                             "\0\0\0\0"                          // no records
+                             "\0\0\0\x0a\0\0\0\x01"              // one dimension:
+                             "\0\0\0\x01x\0\0\0\0\0\0\x03"        // x, of 3
+                             "\0\0\0\0\0\0\0\0"                  // no global attributes
+                             "\0\0\0\x0b\0\0\0\x01"              // one variable:
+                             "\0\0\0\x01v\0\0\0\0\0\0\x01\0\0\0\0" // v(x)
+                             "\0\0\0\0\0\0\0\0"                  // no attributes
+                             "\0\0\0\x0c\0\0\0\x0c\0\0\0\x50",   // type 12, size, offset
+                             80);
+    std::ofstream(path, std::ios::binary) << header;
+    EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
+              path + ": truncated or corrupt NetCDF file: a variable's type is 12, expected 1 "
+                     "to 6");
+}
+
 TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {
     REQUIRE_NCGEN();
     const std::string path = generate("series", kSeries);

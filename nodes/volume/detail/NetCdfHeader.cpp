@@ -31,8 +31,14 @@ public:
             mFile.skip(mFile.sized(count("a variable's dimensions"), idBytes, "its dimension ids"),
                        "a variable's dimension ids");
             attributes("a variable's attributes");
-            mFile.skip(4 + (mVersion == 5 ? 8 : 4) + (mVersion == 1 ? 4 : 8),
-                       "a variable's type, size and offset");
+            // libnetcdf divides by the size of the variable's type: an unknown type (size 0
+            // there) stops the process with a floating-point exception.
+            const std::uint64_t type = mFile.bigEndian(4, "a variable's type");
+            if (type < 1 || type > (mVersion == 5 ? 11u : 6u))
+                mFile.corrupt("a variable's type is " + std::to_string(type) + ", expected 1 to " +
+                              (mVersion == 5 ? "11" : "6"));
+            mFile.skip((mVersion == 5 ? 8 : 4) + (mVersion == 1 ? 4 : 8),
+                       "a variable's size and offset");
         });
     }
 
