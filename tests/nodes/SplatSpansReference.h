@@ -28,10 +28,21 @@
 namespace texsplat::test {
 
 /// @brief FootprintSampler's lookup at square coordinates (a, b), before the length scale, one
-/// pixel at a time: the radial profile at a² + b² (linear between samples) or the padded
+/// pixel at a time: the radial cubic pieces at r = √(a² + b²) where the sampler has them (0
+/// beyond the reach, where the SIMD loop skips the pixel), else the radial profile at a² + b² (linear between samples), or the padded
 /// texture's bilinear lookup, with the clamps compositeSplats() applies.
 inline float sampleFootprint(const render::cpu::FootprintSampler& sampler, float a, float b) {
     const float* values = sampler.values.data();
+    if (sampler.hasPieces) {
+        const float rho = a * a + b * b;
+        if (!(rho <= sampler.reach)) {
+            return 0.0f;
+        }
+        const float position = std::sqrt(rho) * sampler.piecesPerRadius;
+        const float floor = std::min(std::floor(position),
+                                     render::cpu::FootprintSampler::kPieces - 1.0f);
+        return sampler.piece(static_cast<int>(floor), position - floor);
+    }
     if (sampler.isRadial) {
         constexpr float kSamples =
             static_cast<float>(render::cpu::FootprintSampler::kProfileSamples);

@@ -202,5 +202,29 @@ TEST(SplatSpans, matchesScalarReferenceBehindADepthPlane) {
     EXPECT_GT(hidden, all / 10);
 }
 
+TEST(FootprintSampler, cubicPiecesFollowThePapersKernelAsCloselyAsTheProfile) {
+    // The SIMD loop looks the paper's radial footprint up in 16 cubics (in registers) instead
+    // of the 4096-sample profile (gathered): they must follow the kernel that closely. A
+    // truncated Gaussian falls to 0 like a square root at its edge, which cubics follow only to
+    // 1e-3 of its peak: it keeps the profile.
+    const CompositeWorkload paper =
+        test::compositeWorkload("blob16", "texture", WorkloadCamera::Orthographic, 64);
+    ASSERT_TRUE(paper.sampler->isRadial);
+    EXPECT_TRUE(paper.sampler->hasPieces);
+    EXPECT_LE(paper.sampler->pieceError, 1e-5 * paper.sampler->peak);
+    const CompositeWorkload gaussian =
+        test::compositeWorkload("blob16", "texture-gaussian", WorkloadCamera::Orthographic, 64);
+    ASSERT_TRUE(gaussian.sampler->isRadial);
+    EXPECT_FALSE(gaussian.sampler->hasPieces) << gaussian.sampler->pieceError;
+}
+
+TEST(SplatSpans, matchesScalarReferenceForTheTruncatedGaussiansProfile) {
+    const CompositeWorkload workload =
+        test::compositeWorkload("blob32", "texture-gaussian", WorkloadCamera::Perspective, 128);
+    ASSERT_TRUE(workload.sampler->isRadial);
+    ASSERT_FALSE(workload.sampler->hasPieces);
+    expectMatchesReference(workload);
+}
+
 } // namespace
 } // namespace texsplat::render::cpu

@@ -10,6 +10,8 @@
 
 #include <algorithm>
 #include <cfloat>
+#include <cmath>
+#include <optional>
 
 HWY_BEFORE_NAMESPACE();
 namespace texsplat::render::cpu::HWY_NAMESPACE {
@@ -111,22 +113,277 @@ template <class D, class V> HWY_INLINE V PhiSeries(D d, V x) {
     return hn::MulAdd(highest, x4, low);
 }
 
-// What a batch's splats are: scalar (radial profile or texture), vector marks, or combined.
-enum class Kind { Radial, Texture, Vector, Combined };
+// The radial footprint at ρ = a² + b² (at most the reach) from the sampler's cubic pieces in
+// r = √ρ, looked up in registers: each coefficient's 16 values fill 16 / lanes vectors, one
+// permute each and a select between them.
+template <class D> class PieceLookup {
+public:
+    static constexpr std::size_t kLanes = hn::MaxLanes(D());
+    static constexpr std::size_t kParts = (FootprintSampler::kPieces + kLanes - 1) / kLanes;
+    using V = hn::Vec<D>;
+
+    PieceLookup(D d, const FootprintSampler& sampler)
+        : mPerRadius(hn::Set(d, sampler.piecesPerRadius)) {
+        for (std::size_t k = 0; k < 4; ++k) {
+            for (std::size_t part = 0; part < kParts; ++part) {
+                mCoefficients[k][part] = hn::LoadU(d, sampler.pieces[k].data() + part * kLanes);
+            }
+        }
+    }
+
+    V operator()(D d, V rho) const {
+        const hn::RebindToSigned<D> di;
+        const V position = hn::Mul(hn::Sqrt(rho), mPerRadius);
+        const V floor =
+            hn::Min(hn::Floor(position), hn::Set(d, FootprintSampler::kPieces - 1.0f));
+        const V u = hn::Sub(position, floor);
+        const auto index = hn::ConvertTo(di, floor);
+        const auto lanes =
+            hn::IndicesFromVec(d, hn::And(index, hn::Set(di, static_cast<int>(kLanes - 1))));
+        const auto coefficient = [&](std::size_t k) {
+            V value = hn::TableLookupLanes(mCoefficients[k][0], lanes);
+            for (std::size_t part = 1; part < kParts; ++part) {
+                const auto inPart =
+                    hn::RebindMask(d, hn::Gt(index, hn::Set(di, static_cast<int>(part * kLanes) - 1)));
+                value = hn::IfThenElse(inPart, hn::TableLookupLanes(mCoefficients[k][part], lanes),
+                                       value);
+            }
+            return value;
+        };
+        return hn::MulAdd(hn::MulAdd(hn::MulAdd(coefficient(3), u, coefficient(2)), u,
+                                     coefficient(1)),
+                          u, coefficient(0));
+    }
+
+private:
+    V mPerRadius;
+    V mCoefficients[4][kParts];
+};
+
+// What a batch's splats are: scalar (radial profile, radial cubic pieces or texture), vector
+// marks, or combined.
+enum class Kind { Radial, RadialPieces, Texture, Vector, Combined };
+
+// A colour below this (per unit of footprint) can be added to any pixel without a clamp: the
+// sum of it and a pixel no larger than FLT_MAX rounds to at most FLT_MAX, whose half ulp
+// (1e31) it stays below, so min(…, FLT_MAX) would change nothing.
+constexpr float kUnclampedColour = 1e29f;
+
+// What every splat of a batch shares.
+template <class D> struct Batch {
+    D d;
+    const FootprintSampler* sampler;
+    const MarkSampler* marks;
+    ColorPlanes& planes;
+    int rowBegin;
+    int rowEnd;
+    bool depthTest;
+    bool squareTest; // the square's edges cut the footprint (else its reach lies inside)
+    std::optional<PieceLookup<D>> pieces;
+};
+
+// Composites one splat's rows of [batch.rowBegin, batch.rowEnd); with kClamp, every sum is
+// clamped to FLT_MAX (kUnclampedColour says when that is not needed).
+template <Kind kKind, bool kClamp, class D>
+HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, int first,
+                               int last) {
+    const D d = batch.d;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const auto lane = hn::Iota(d, 0.0f);
+    const auto one = hn::Set(d, 1.0f);
+    const auto zero = hn::Zero(d);
+    const auto largest = hn::Set(d, FLT_MAX);
+    const auto clamp = [&](auto value) {
+        if constexpr (kClamp) {
+            return hn::Min(value, largest);
+        } else {
+            return value;
+        }
+    };
+    const FootprintSampler* sampler = batch.sampler;
+    const MarkSampler* marks = batch.marks;
+    ColorPlanes& planes = batch.planes;
+    const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
+    const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
+    const auto red = hn::Set(d, splat.color[0]);
+    const auto green = hn::Set(d, splat.color[1]);
+    const auto blue = hn::Set(d, splat.color[2]);
+    const auto tau = hn::Set(d, splat.extinction);
+    // C·f·φ(τf) = C·α/τ; below 1e-30 the medium is pure emission, C·f (φ = 1 − τf/2 + …).
+    const bool absorbs = splat.extinction > 1e-30f;
+    const auto inverseTau = hn::Set(d, absorbs ? 1.0f / splat.extinction : 0.0f);
+    const auto lengthScale = hn::Set(d, splat.lengthScale);
+    const auto reach = hn::Set(d, sampler != nullptr ? sampler->reach : 2.0f);
+    // Thin splats (optical depth at most ½ anywhere) take φ's series, thick ones Expm1.
+    const bool thin =
+        sampler != nullptr && splat.extinction * splat.lengthScale * sampler->peak <= 0.5f;
+    const auto ax = hn::Set(d, splat.square[0]);
+    const auto bx = hn::Set(d, splat.square[3]);
+    const auto wx = hn::Set(d, splat.square[6]);
+    const auto zx = hn::Set(d, splat.depth[0]);
+    for (int row = first; row < last; ++row) {
+        const auto y = static_cast<float>(row);
+        const auto a0 = hn::Set(d, splat.square[1] * y + splat.square[2]);
+        const auto b0 = hn::Set(d, splat.square[4] * y + splat.square[5]);
+        const auto w0 = hn::Set(d, splat.square[7] * y + splat.square[8]);
+        const auto z0 = hn::Set(d, splat.depth[1] * y + splat.depth[2]);
+        float* redRow = planes.red(row);
+        float* greenRow = planes.green(row);
+        float* blueRow = planes.blue(row);
+        float* alphaRow = planes.alpha(row);
+        const float* depthRow = batch.depthTest ? planes.depth(row) : nullptr;
+        for (int column = splat.columnBegin; column < splat.columnEnd; column += lanes) {
+            const auto x = hn::Add(hn::Set(d, static_cast<float>(column)), lane);
+            auto a = hn::MulAdd(ax, x, a0);
+            auto b = hn::MulAdd(bx, x, b0);
+            auto inside = hn::Gt(one, zero); // all true
+            if (projective) {
+                const auto w = hn::MulAdd(wx, x, w0);
+                inside = hn::Gt(w, zero);
+                // 1/w: the estimate and one Newton step (relative error ~1e-7), cheaper than a
+                // division.
+                const auto estimate = hn::ApproximateReciprocal(w);
+                const auto inverseW =
+                    hn::Mul(estimate, hn::NegMulAdd(w, estimate, hn::Set(d, 2.0f)));
+                a = hn::Mul(a, inverseW);
+                b = hn::Mul(b, inverseW);
+            }
+            constexpr bool kRadial = kKind == Kind::Radial || kKind == Kind::RadialPieces;
+            if (!kRadial || batch.squareTest) {
+                inside = hn::And(inside,
+                                 hn::And(hn::Le(hn::Abs(a), one), hn::Le(hn::Abs(b), one)));
+            }
+            const auto rho = hn::MulAdd(a, a, hn::Mul(b, b));
+            if constexpr (kRadial) {
+                // Beyond the kernel's support the footprint is exactly 0: skip those pixels.
+                inside = hn::And(inside, hn::Le(rho, reach));
+            }
+            if (clipped || batch.depthTest) {
+                const auto z = hn::MulAdd(zx, x, z0);
+                if (clipped) {
+                    inside = hn::And(inside, hn::And(hn::Ge(z, hn::Neg(one)), hn::Le(z, one)));
+                }
+                if (batch.depthTest) {
+                    const auto window = hn::MulAdd(z, hn::Set(d, 0.5f), hn::Set(d, 0.5f));
+                    inside = hn::And(inside, hn::Lt(window, hn::LoadU(d, depthRow + column)));
+                }
+            }
+            if (hn::AllFalse(d, inside)) {
+                continue;
+            }
+            if constexpr (kKind == Kind::Vector) {
+                // The polygon's colour and the opacity of one voxel's slab, through the texture
+                // operator: MODULATE (C·I, A·A_tex) or BLEND (C(1 − I) + K·I, A·A_tex).
+                auto intensity = zero;
+                auto opacity = zero;
+                SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
+                const auto alpha =
+                    hn::IfThenElseZero(inside, hn::Mul(hn::Set(d, splat.polygonAlpha), opacity));
+                const auto mark = [&](decltype(alpha) colour, float blendColour) {
+                    return marks->blend ? hn::MulAdd(colour, hn::Sub(one, intensity),
+                                                     hn::Mul(hn::Set(d, blendColour), intensity))
+                                        : hn::Mul(colour, intensity);
+                };
+                const auto transmitted = hn::Sub(one, alpha);
+                const auto over = [&](float* plane, decltype(alpha) source) {
+                    const auto destination = hn::LoadU(d, plane + column);
+                    hn::StoreU(clamp(hn::MulAdd(transmitted, destination, source)), d,
+                               plane + column);
+                };
+                over(redRow, clamp(hn::Mul(mark(red, marks->blendColor[0]), alpha)));
+                over(greenRow, clamp(hn::Mul(mark(green, marks->blendColor[1]), alpha)));
+                over(blueRow, clamp(hn::Mul(mark(blue, marks->blendColor[2]), alpha)));
+                over(alphaRow, alpha);
+                continue;
+            }
+            hn::Vec<D> footprint;
+            if constexpr (kKind == Kind::RadialPieces) {
+                footprint = (*batch.pieces)(d, hn::Min(rho, reach));
+            } else if constexpr (kKind == Kind::Combined) {
+                // The scalar part samples its footprint where a TextureSplat would.
+                const float* m = splat.footprintFromSquare;
+                footprint = Footprint<false>(
+                    d, *sampler, hn::MulAdd(hn::Set(d, m[0]), a, hn::Mul(hn::Set(d, m[1]), b)),
+                    hn::MulAdd(hn::Set(d, m[2]), a, hn::Mul(hn::Set(d, m[3]), b)));
+            } else {
+                footprint = Footprint<kKind == Kind::Radial>(d, *sampler, a, b);
+            }
+            const auto f =
+                hn::IfThenElseZero(inside, hn::Mul(hn::Max(footprint, zero), lengthScale));
+            const auto opticalDepth = hn::Mul(tau, f);
+            auto alpha = opticalDepth;
+            auto weight = f;
+            if (thin) {
+                const auto phi = PhiSeries(d, opticalDepth);
+                alpha = hn::Mul(opticalDepth, phi);
+                weight = hn::Mul(f, phi);
+            } else {
+                alpha = hn::Neg(hn::Expm1(d, hn::Neg(opticalDepth)));
+                weight = absorbs ? hn::Mul(alpha, inverseTau) : f;
+            }
+            const auto transmitted = hn::Sub(one, alpha);
+            const auto over = [&](float* plane, decltype(weight) source) {
+                const auto destination = hn::LoadU(d, plane + column);
+                hn::StoreU(clamp(hn::MulAdd(transmitted, destination, source)), d,
+                           plane + column);
+            };
+            auto colourRed = hn::Mul(red, weight);
+            auto colourGreen = hn::Mul(green, weight);
+            auto colourBlue = hn::Mul(blue, weight);
+            if constexpr (kKind == Kind::Combined) {
+                // The marks change only the colour, by `contrast`: BLEND dissolves towards K by
+                // c·I, MODULATE multiplies by 1 − c + c·I (no marks: I = 0).
+                auto intensity = zero;
+                auto opacity = zero;
+                if ((splat.flags & SplatRaster::kMarks) != 0) {
+                    SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
+                }
+                intensity = hn::Mul(hn::Set(d, marks->contrast), intensity);
+                const auto mark = [&](decltype(weight) colour, float blendColour) {
+                    return marks->blend
+                               ? hn::MulAdd(colour, hn::Sub(one, intensity),
+                                            hn::Mul(hn::Set(d, blendColour),
+                                                    hn::Mul(intensity, alpha)))
+                               : hn::Mul(colour, hn::Add(hn::Sub(one, hn::Set(d, marks->contrast)),
+                                                         intensity));
+                };
+                colourRed = mark(colourRed, marks->blendColor[0]);
+                colourGreen = mark(colourGreen, marks->blendColor[1]);
+                colourBlue = mark(colourBlue, marks->blendColor[2]);
+            }
+            over(redRow, clamp(colourRed));
+            over(greenRow, clamp(colourGreen));
+            over(blueRow, clamp(colourBlue));
+            over(alphaRow, alpha);
+        }
+    }
+}
+
+// Whether no colour `splat` adds reaches kUnclampedColour (nor is NaN): its medium is finite
+// and its colour times the largest footprint stays below it.
+bool isUnclamped(const SplatRaster& splat, const FootprintSampler& sampler) {
+    const float largest = std::max({std::abs(splat.color[0]), std::abs(splat.color[1]),
+                                    std::abs(splat.color[2])});
+    return largest * sampler.peak * splat.lengthScale <= kUnclampedColour &&
+           splat.extinction >= 0.0f && splat.extinction <= FLT_MAX;
+}
 
 template <Kind kKind>
 void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
                          const FootprintSampler* sampler, const MarkSampler* marks,
                          ColorPlanes& planes, int rowBegin, int rowEnd) {
     // Up to 16 lanes (AVX-512): 1.1× eight on 7–9-pixel-wide splats (CpuRasterizerBenchmark).
-    const hn::CappedTag<float, 16> d;
-    const int lanes = static_cast<int>(hn::Lanes(d));
-    const auto lane = hn::Iota(d, 0.0f);
-    const auto one = hn::Set(d, 1.0f);
-    const auto zero = hn::Zero(d);
-    const auto largest = hn::Set(d, FLT_MAX);
-    const bool depthTest = planes.hasDepth();
-
+    using D = hn::CappedTag<float, 16>;
+    const D d;
+    Batch<D> batch{d,      sampler,           marks,
+                   planes, rowBegin,          rowEnd,
+                   planes.hasDepth(), sampler == nullptr || sampler->reach > 1.0f, std::nullopt};
+    if constexpr (kKind == Kind::RadialPieces) {
+        batch.pieces.emplace(d, *sampler);
+    }
+    // Vector and combined splats keep every clamp; scalar splats drop them where they change
+    // nothing (seven of a pixel's operations).
+    constexpr bool kMayDropClamps = kKind != Kind::Vector && kKind != Kind::Combined;
     for (std::size_t i = 0; i < count; ++i) {
         const SplatRaster& splat = splats[i];
         const int first = std::max(splat.rowBegin, rowBegin);
@@ -134,157 +391,10 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
         if (first >= last || splat.columnBegin >= splat.columnEnd) {
             continue;
         }
-        const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
-        const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
-        const auto red = hn::Set(d, splat.color[0]);
-        const auto green = hn::Set(d, splat.color[1]);
-        const auto blue = hn::Set(d, splat.color[2]);
-        const auto tau = hn::Set(d, splat.extinction);
-        // C·f·φ(τf) = C·α/τ; below 1e-30 the medium is pure emission, C·f (φ = 1 − τf/2 + …).
-        const bool absorbs = splat.extinction > 1e-30f;
-        const auto inverseTau = hn::Set(d, absorbs ? 1.0f / splat.extinction : 0.0f);
-        const auto lengthScale = hn::Set(d, splat.lengthScale);
-        const auto reach = hn::Set(d, sampler != nullptr ? sampler->reach : 2.0f);
-        // Thin splats (optical depth at most ½ anywhere) take φ's series, thick ones Expm1.
-        const bool thin =
-            sampler != nullptr && splat.extinction * splat.lengthScale * sampler->peak <= 0.5f;
-        const auto ax = hn::Set(d, splat.square[0]);
-        const auto bx = hn::Set(d, splat.square[3]);
-        const auto wx = hn::Set(d, splat.square[6]);
-        const auto zx = hn::Set(d, splat.depth[0]);
-        for (int row = first; row < last; ++row) {
-            const auto y = static_cast<float>(row);
-            const auto a0 = hn::Set(d, splat.square[1] * y + splat.square[2]);
-            const auto b0 = hn::Set(d, splat.square[4] * y + splat.square[5]);
-            const auto w0 = hn::Set(d, splat.square[7] * y + splat.square[8]);
-            const auto z0 = hn::Set(d, splat.depth[1] * y + splat.depth[2]);
-            float* redRow = planes.red(row);
-            float* greenRow = planes.green(row);
-            float* blueRow = planes.blue(row);
-            float* alphaRow = planes.alpha(row);
-            const float* depthRow = depthTest ? planes.depth(row) : nullptr;
-            for (int column = splat.columnBegin; column < splat.columnEnd; column += lanes) {
-                const auto x = hn::Add(hn::Set(d, static_cast<float>(column)), lane);
-                auto a = hn::MulAdd(ax, x, a0);
-                auto b = hn::MulAdd(bx, x, b0);
-                auto inside = hn::Gt(one, zero); // all true
-                if (projective) {
-                    const auto w = hn::MulAdd(wx, x, w0);
-                    inside = hn::Gt(w, zero);
-                    // 1/w: the estimate and one Newton step (relative error ~1e-7), cheaper
-                    // than a division.
-                    const auto estimate = hn::ApproximateReciprocal(w);
-                    const auto inverseW =
-                        hn::Mul(estimate, hn::NegMulAdd(w, estimate, hn::Set(d, 2.0f)));
-                    a = hn::Mul(a, inverseW);
-                    b = hn::Mul(b, inverseW);
-                }
-                inside = hn::And(inside,
-                                 hn::And(hn::Le(hn::Abs(a), one), hn::Le(hn::Abs(b), one)));
-                if constexpr (kKind == Kind::Radial) {
-                    // Beyond the kernel's support the footprint is exactly 0: skip those pixels.
-                    inside = hn::And(inside, hn::Le(hn::MulAdd(a, a, hn::Mul(b, b)), reach));
-                }
-                if (clipped || depthTest) {
-                    const auto z = hn::MulAdd(zx, x, z0);
-                    if (clipped) {
-                        inside = hn::And(inside,
-                                         hn::And(hn::Ge(z, hn::Neg(one)), hn::Le(z, one)));
-                    }
-                    if (depthTest) {
-                        const auto window = hn::MulAdd(z, hn::Set(d, 0.5f), hn::Set(d, 0.5f));
-                        inside = hn::And(inside, hn::Lt(window, hn::LoadU(d, depthRow + column)));
-                    }
-                }
-                if (hn::AllFalse(d, inside)) {
-                    continue;
-                }
-                if constexpr (kKind == Kind::Vector) {
-                    // The polygon's colour and the opacity of one voxel's slab, through the
-                    // texture operator: MODULATE (C·I, A·A_tex) or BLEND (C(1 − I) + K·I, A·A_tex).
-                    auto intensity = zero;
-                    auto opacity = zero;
-                    SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
-                    const auto alpha = hn::IfThenElseZero(
-                        inside, hn::Mul(hn::Set(d, splat.polygonAlpha), opacity));
-                    const auto mark = [&](decltype(alpha) colour, float blendColour) {
-                        return marks->blend
-                                   ? hn::MulAdd(colour, hn::Sub(one, intensity),
-                                                hn::Mul(hn::Set(d, blendColour), intensity))
-                                   : hn::Mul(colour, intensity);
-                    };
-                    const auto transmitted = hn::Sub(one, alpha);
-                    const auto over = [&](float* plane, decltype(alpha) source) {
-                        const auto destination = hn::LoadU(d, plane + column);
-                        hn::StoreU(hn::Min(hn::MulAdd(transmitted, destination, source), largest),
-                                   d, plane + column);
-                    };
-                    over(redRow, hn::Min(hn::Mul(mark(red, marks->blendColor[0]), alpha), largest));
-                    over(greenRow,
-                         hn::Min(hn::Mul(mark(green, marks->blendColor[1]), alpha), largest));
-                    over(blueRow, hn::Min(hn::Mul(mark(blue, marks->blendColor[2]), alpha), largest));
-                    over(alphaRow, alpha);
-                    continue;
-                }
-                auto footprintA = a;
-                auto footprintB = b;
-                if constexpr (kKind == Kind::Combined) {
-                    // The scalar part samples its footprint where a TextureSplat would.
-                    const float* m = splat.footprintFromSquare;
-                    footprintA = hn::MulAdd(hn::Set(d, m[0]), a, hn::Mul(hn::Set(d, m[1]), b));
-                    footprintB = hn::MulAdd(hn::Set(d, m[2]), a, hn::Mul(hn::Set(d, m[3]), b));
-                }
-                constexpr bool kRadial = kKind == Kind::Radial;
-                const auto f = hn::IfThenElseZero(
-                    inside, hn::Mul(hn::Max(Footprint<kRadial>(d, *sampler, footprintA, footprintB),
-                                            zero),
-                                    lengthScale));
-                const auto opticalDepth = hn::Mul(tau, f);
-                auto alpha = opticalDepth;
-                auto weight = f;
-                if (thin) {
-                    const auto phi = PhiSeries(d, opticalDepth);
-                    alpha = hn::Mul(opticalDepth, phi);
-                    weight = hn::Mul(f, phi);
-                } else {
-                    alpha = hn::Neg(hn::Expm1(d, hn::Neg(opticalDepth)));
-                    weight = absorbs ? hn::Mul(alpha, inverseTau) : f;
-                }
-                const auto transmitted = hn::Sub(one, alpha);
-                const auto over = [&](float* plane, decltype(weight) source) {
-                    const auto destination = hn::LoadU(d, plane + column);
-                    hn::StoreU(hn::Min(hn::MulAdd(transmitted, destination, source), largest), d,
-                               plane + column);
-                };
-                auto colourRed = hn::Mul(red, weight);
-                auto colourGreen = hn::Mul(green, weight);
-                auto colourBlue = hn::Mul(blue, weight);
-                if constexpr (kKind == Kind::Combined) {
-                    // The marks change only the colour, by `contrast`: BLEND dissolves towards K
-                    // by c·I, MODULATE multiplies by 1 − c + c·I (no marks: I = 0).
-                    auto intensity = zero;
-                    auto opacity = zero;
-                    if ((splat.flags & SplatRaster::kMarks) != 0) {
-                        SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
-                    }
-                    intensity = hn::Mul(hn::Set(d, marks->contrast), intensity);
-                    const auto mark = [&](decltype(weight) colour, float blendColour) {
-                        return marks->blend
-                                   ? hn::MulAdd(colour, hn::Sub(one, intensity),
-                                                hn::Mul(hn::Set(d, blendColour),
-                                                        hn::Mul(intensity, alpha)))
-                                   : hn::Mul(colour, hn::Add(hn::Sub(one, hn::Set(d, marks->contrast)),
-                                                             intensity));
-                    };
-                    colourRed = mark(colourRed, marks->blendColor[0]);
-                    colourGreen = mark(colourGreen, marks->blendColor[1]);
-                    colourBlue = mark(colourBlue, marks->blendColor[2]);
-                }
-                over(redRow, hn::Min(colourRed, largest));
-                over(greenRow, hn::Min(colourGreen, largest));
-                over(blueRow, hn::Min(colourBlue, largest));
-                over(alphaRow, alpha);
-            }
+        if (kMayDropClamps && isUnclamped(splat, *sampler)) {
+            CompositeSplat<kKind, false>(batch, splat, first, last);
+        } else {
+            CompositeSplat<kKind, true>(batch, splat, first, last);
         }
     }
 }
@@ -297,6 +407,9 @@ void CompositeSplats(const SplatRaster* splats, std::size_t count,
     } else if (marks != nullptr) {
         CompositeSplatsWith<Kind::Combined>(splats, count, sampler, marks, planes, rowBegin,
                                             rowEnd);
+    } else if (sampler->hasPieces) {
+        CompositeSplatsWith<Kind::RadialPieces>(splats, count, sampler, marks, planes, rowBegin,
+                                                rowEnd);
     } else if (sampler->isRadial) {
         CompositeSplatsWith<Kind::Radial>(splats, count, sampler, marks, planes, rowBegin, rowEnd);
     } else {
