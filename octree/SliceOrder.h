@@ -38,30 +38,42 @@ public:
     /// follows the allocated blocks, plus one step per row of the box and per block of a row
     /// that holds blocks.
     template <typename Visit> void forEach(Visit&& visit) const {
-        const auto outer = static_cast<std::size_t>(mAxes[0]);
+        for (std::size_t slice = 0; slice < sliceCount(); ++slice) {
+            forEachInSlice(slice, visit);
+        }
+    }
+
+    /// @brief Slices of the walk: planes across the slicing axis, back to front. No voxel of
+    /// a slice is in front of a later slice's, so slices can be walked apart (in parallel) and
+    /// their splats laid end to end.
+    [[nodiscard]] std::size_t sliceCount() const {
+        return mOrder[static_cast<std::size_t>(mAxes[0])].size();
+    }
+
+    /// @brief forEach() over slice `slice` (< sliceCount()) only.
+    template <typename Visit> void forEachInSlice(std::size_t slice, Visit&& visit) const {
         const auto middle = static_cast<std::size_t>(mAxes[1]);
         const auto inner = static_cast<std::size_t>(mAxes[2]);
         constexpr std::uint64_t kSize = ClassifiedGrid::kBlockSize;
         const glm::u64vec3 blockDims = mGrid->blockDims();
         glm::u64vec3 voxel(0);
-        for (const std::uint64_t a : mOrder[outer]) {
-            voxel[mAxes[0]] = a;
-            for (const std::uint64_t b : mOrder[middle]) {
-                voxel[mAxes[1]] = b;
-                if (!mRowHasBlocks[static_cast<std::size_t>(
-                        a / kSize + blockDims[mAxes[0]] * (b / kSize))]) {
+        const std::uint64_t a = mOrder[static_cast<std::size_t>(mAxes[0])][slice];
+        voxel[mAxes[0]] = a;
+        for (const std::uint64_t b : mOrder[middle]) {
+            voxel[mAxes[1]] = b;
+            if (!mRowHasBlocks[static_cast<std::size_t>(a / kSize +
+                                                        blockDims[mAxes[0]] * (b / kSize))]) {
+                continue;
+            }
+            for (const Segment& segment : mSegments) {
+                voxel[mAxes[2]] = segment.block * kSize;
+                const ClassifiedGrid::StorageIndex first = mGrid->blockStorage(voxel / kSize);
+                if (first == ClassifiedGrid::kNoStorage) {
                     continue;
                 }
-                for (const Segment& segment : mSegments) {
-                    voxel[mAxes[2]] = segment.block * kSize;
-                    const ClassifiedGrid::StorageIndex first = mGrid->blockStorage(voxel / kSize);
-                    if (first == ClassifiedGrid::kNoStorage) {
-                        continue;
-                    }
-                    for (std::uint64_t step = segment.begin; step < segment.end; ++step) {
-                        voxel[mAxes[2]] = mOrder[inner][step];
-                        visit(voxel, first + ClassifiedGrid::offsetInBlock(voxel));
-                    }
+                for (std::uint64_t step = segment.begin; step < segment.end; ++step) {
+                    voxel[mAxes[2]] = mOrder[inner][step];
+                    visit(voxel, first + ClassifiedGrid::offsetInBlock(voxel));
                 }
             }
         }

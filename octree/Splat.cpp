@@ -23,6 +23,11 @@ void SplatList::add(const Splat& splat, const SplatVector& vector) {
     mVectors.push_back(vector);
 }
 
+void SplatList::resize(std::size_t count, bool withVectors) {
+    mSplats.resize(count);
+    mVectors.resize(withVectors ? count : 0);
+}
+
 void SplatList::clear() {
     mSplats.clear();
     mVectors.clear();

@@ -61,6 +61,19 @@ public:
     /// @brief Removes every splat, keeping the allocated memory for the next frame.
     void clear();
 
+    /// @brief Makes the list exactly @p count splats long (with as many vectors when
+    /// @p withVectors, else none), for a caller that writes them in place through
+    /// writableSplats() and writableVectors(), e.g. from several threads at once.
+    void resize(std::size_t count, bool withVectors);
+
+    /// @brief The splats, to be written in place (see resize()).
+    [[nodiscard]] Splat* writableSplats() { return mSplats.data(); }
+
+    /// @brief The vectors, to be written in place (see resize()); null without vectors.
+    [[nodiscard]] SplatVector* writableVectors() {
+        return mVectors.empty() ? nullptr : mVectors.data();
+    }
+
     /// @brief Number of splats.
     [[nodiscard]] std::size_t size() const { return mSplats.size(); }
 

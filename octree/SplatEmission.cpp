@@ -11,8 +11,12 @@
 
 #include <glm/geometric.hpp>
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
+#include <numeric>
+#include <vector>
 
 namespace texsplat::octree {
 namespace {
@@ -95,28 +99,55 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
                      const VectorEmission* vectors) {
     splats.clear();
     TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
-    // Exactly what the list can hold: growing it by doubling would, for a big grid, hold the old
-    // and the new array at once and keep up to twice the splats' bytes.
-    splats.reserve(static_cast<std::size_t>(grid.nonEmptyVoxelCount()), vectors != nullptr);
-    SliceOrder(grid, view).forEach([&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
+    const SliceOrder order(grid, view);
+    // A voxel's splat, or none for an empty voxel or one behind the eye.
+    const auto splatOf = [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored,
+                             Splat& splat) {
         const glm::vec4 value = grid.storedVoxel(stored);
         if (value == glm::vec4(0.0f)) {
-            return;
+            return false;
         }
         const glm::dvec3 position = grid.toWorld(glm::dvec3(voxel));
         if (view.isPerspective() && view.depth(position) <= 0.0) {
-            return;
+            return false;
         }
-        Splat splat;
         splat.position = glm::vec3(position);
         splat.color = glm::vec3(value);
         splat.extinction = value.w;
-        if (vectors) {
-            splats.add(splat, vectorSplat(*vectors, splat.position, grid.storedVector(stored),
-                                          grid.index(voxel)));
-        } else {
-            splats.add(splat);
-        }
+        return true;
+    };
+    // Slices in parallel: count each one's splats, lay the slices end to end, then write each
+    // slice's splats at its offset. The list is exactly as long as its splats (no growth by
+    // doubling, which would hold the old and the new array at once), and the same for any number
+    // of threads.
+    const std::size_t slices = order.sliceCount();
+    std::vector<std::size_t> offsets(slices + 1, 0);
+    tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
+        std::size_t count = 0;
+        Splat splat;
+        order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
+            count += splatOf(voxel, stored, splat) ? 1 : 0;
+        });
+        offsets[slice + 1] = count;
+    });
+    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+    splats.resize(offsets.back(), vectors != nullptr);
+    Splat* const out = splats.writableSplats();
+    SplatVector* const outVectors = splats.writableVectors();
+    tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
+        std::size_t next = offsets[slice];
+        Splat splat;
+        order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
+            if (!splatOf(voxel, stored, splat)) {
+                return;
+            }
+            out[next] = splat;
+            if (vectors) {
+                outVectors[next] = vectorSplat(*vectors, splat.position, grid.storedVector(stored),
+                                               grid.index(voxel));
+            }
+            ++next;
+        });
     });
 }
 
