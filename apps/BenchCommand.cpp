@@ -3,6 +3,7 @@
 
 #include "apps/OptionError.h"
 #include "apps/SceneSetup.h"
+#include "apps/ThreadLimit.h"
 
 #include "nodes/bench/BenchReport.h"
 #include "nodes/bench/BenchRunner.h"
@@ -208,6 +209,7 @@ CheckedBench checkBenchOptions(const BenchArguments& arguments) {
 
 void runBench(const BenchArguments& arguments, CheckedBench checked) {
     setMemoryLimit(checked.memoryLimit);
+    const ThreadLimit threadLimit(arguments.threads);
     const bool isScene = !arguments.scene.empty();
     bench::BenchOptions& options = checked.options;
     const std::vector<double>& budgets = checked.budgets;

@@ -2,6 +2,7 @@
 #include "apps/ImageAnnotations.h"
 #include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
+#include "apps/ThreadLimit.h"
 
 #include "nodes/image/ImageIo.h"
 #include "nodes/render/BackendChoice.h"
@@ -474,6 +475,7 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const image::ImageFormat format = options.format;
     const glm::vec4 background = options.background;
     setMemoryLimit(options.memoryLimit);
+    const ThreadLimit threadLimit(arguments.threads);
     const render::BackendChoice backend =
         arguments.rayCast ? render::BackendChoice{}
                           : chooseBackend(options.request, arguments.size, size);

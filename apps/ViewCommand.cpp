@@ -2,6 +2,7 @@
 
 #include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
+#include "apps/ThreadLimit.h"
 #include "apps/viewer/Viewer.h"
 #include "scenegraph/MemoryLimit.h"
 
@@ -63,6 +64,7 @@ void addViewCommand(CLI::App& app, int& exitCode, CommandMode mode) {
         viewerOptions.backend = render::parseBackendRequest(arguments->backend);
         if (mode == CommandMode::Run) {
             setMemoryLimit(memoryLimit);
+            const ThreadLimit threadLimit(viewerOptions.threads);
             Viewer(viewerOptions).run();
         }
         exitCode = kExitOk;

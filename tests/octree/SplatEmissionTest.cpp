@@ -8,6 +8,9 @@
 #include "octree/Splat.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include <cstring>
 
 #include <vector>
 
@@ -85,6 +88,50 @@ TEST(SplatEmission, voxelSplatsBehindTheEyeAreCulled) {
     EXPECT_EQ(splats.size(), 3u * 36u) << "only the voxels with x > 2.5";
     for (const Splat& splat : splats.splats()) {
         EXPECT_GT(splat.position.x, 2.5f);
+    }
+}
+
+TEST(SplatEmission, voxelSplatsAreTheSameForAnyNumberOfThreads) {
+    // Slices are emitted in parallel: the list must be the serial walk's, splat for splat.
+    const glm::u64vec3 dims(37, 29, 41);
+    auto grid = std::make_shared<ClassifiedGrid>(dims, glm::dvec3(1.0, 0.7, 1.3), glm::dvec3(0.0));
+    grid->enableVectors();
+    for (std::uint64_t k = 0; k < dims.z; ++k) {
+        for (std::uint64_t j = 0; j < dims.y; ++j) {
+            for (std::uint64_t i = 0; i < dims.x; ++i) {
+                if ((i * 7 + j * 3 + k * 5) % 4 == 0 || (i > 20 && j < 9)) {
+                    continue; // empty voxels, and empty blocks
+                }
+                const float shade = static_cast<float>((i + 2 * j + 3 * k) % 11) / 11.0f;
+                grid->setVoxel({i, j, k}, glm::vec3(shade, 0.5f, 1.0f - shade), 0.1f + shade);
+                grid->setVector({i, j, k}, glm::vec3(shade - 0.5f, 1.0f, 0.25f * shade));
+            }
+        }
+    }
+    const View view = View::perspective({-9.0, 40.0, 12.0}, {0.4, -0.8, 0.1});
+    const auto emitWith = [&](int threads) {
+        SplatList splats;
+        tbb::task_arena(threads).execute([&] {
+            texsplat::octree::VectorEmission vectors;
+            vectors.rows = 7;
+            vectors.columns = 5;
+            emitVoxelSplats(*grid, view, splats, &vectors);
+        });
+        return splats;
+    };
+    const SplatList serial = emitWith(1);
+    ASSERT_GT(serial.size(), 1000u);
+    for (const int threads : {2, 7}) {
+        const SplatList parallel = emitWith(threads);
+        ASSERT_EQ(parallel.size(), serial.size()) << threads << " threads";
+        EXPECT_EQ(std::memcmp(parallel.splats().data(), serial.splats().data(),
+                              serial.size() * sizeof(Splat)),
+                  0)
+            << threads << " threads";
+        EXPECT_EQ(std::memcmp(parallel.vectors().data(), serial.vectors().data(),
+                              serial.size() * sizeof(texsplat::octree::SplatVector)),
+                  0)
+            << threads << " threads";
     }
 }
 
