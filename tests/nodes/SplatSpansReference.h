@@ -38,10 +38,11 @@ inline float sampleFootprint(const render::cpu::FootprintSampler& sampler, float
         if (!(rho <= sampler.reach)) {
             return 0.0f;
         }
-        const float position = std::sqrt(rho) * sampler.piecesPerRadius;
-        const float floor = std::min(std::floor(position),
-                                     render::cpu::FootprintSampler::kPieces - 1.0f);
-        return sampler.piece(static_cast<int>(floor), position - floor);
+        const float position =
+            std::min(std::sqrt(rho) * sampler.piecesPerRadius,
+                     render::cpu::FootprintSampler::kPieces - 1.0f);
+        const float nearest = std::nearbyint(position); // halves to even, as the SIMD loop
+        return sampler.piece(static_cast<int>(nearest), position - nearest);
     }
     if (sampler.isRadial) {
         constexpr float kSamples =

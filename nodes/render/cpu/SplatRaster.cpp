@@ -41,41 +41,78 @@ SquareFrame squareFrame(const SplatView& view, const glm::vec3& sight) {
     return {u, glm::cross(axis, u), eLength};
 }
 
+// The cubic c0 + c1·v + c2·v² + c3·v³ through (v[j], y[j]), j < 4: the 4×4 Vandermonde system
+// solved by Gaussian elimination with partial pivoting.
+std::array<double, 4> cubicThrough(const double (&v)[4], const double (&y)[4]) {
+    double system[4][5];
+    for (int row = 0; row < 4; ++row) {
+        double power = 1.0;
+        for (int column = 0; column < 4; ++column, power *= v[row]) {
+            system[row][column] = power;
+        }
+        system[row][4] = y[row];
+    }
+    for (int pivot = 0; pivot < 4; ++pivot) {
+        int best = pivot;
+        for (int row = pivot + 1; row < 4; ++row) {
+            if (std::abs(system[row][pivot]) > std::abs(system[best][pivot])) {
+                best = row;
+            }
+        }
+        std::swap(system[pivot], system[best]);
+        for (int row = pivot + 1; row < 4; ++row) {
+            const double factor = system[row][pivot] / system[pivot][pivot];
+            for (int column = pivot; column < 5; ++column) {
+                system[row][column] -= factor * system[pivot][column];
+            }
+        }
+    }
+    std::array<double, 4> c{};
+    for (int row = 3; row >= 0; --row) {
+        double sum = system[row][4];
+        for (int column = row + 1; column < 4; ++column) {
+            sum -= system[row][column] * c[static_cast<std::size_t>(column)];
+        }
+        c[static_cast<std::size_t>(row)] = sum / system[row][row];
+    }
+    return c;
+}
+
 // Fits `sampler.pieces` to the footprint f(extent·r) over r ∈ [0, √reach] and measures how far
-// they stray from it. Each piece is the cubic through the kernel at u = 0, ⅓, ⅔, 1 of its
-// interval (Newton's forward differences), so neighbours meet; the coefficients are rounded to
-// float before the error is measured, as the SIMD loop evaluates them. In r rather than ρ = r²:
-// the paper's kernel has a |r|³ term, a cusp in ρ at the centre that 16 cubics in ρ follow only
-// to 8e-5 of the peak (2e-6 in r).
+// they stray from it. In p = r·piecesPerRadius ∈ [0, kPieces − 1], piece i covers p ∈ [i − ½,
+// i + ½] (the end pieces only their halves inside), in v = p − i, so that the SIMD loop finds it
+// by rounding p. Each is the cubic through the kernel at four evenly spaced points of its
+// interval, so neighbours meet; the coefficients are rounded to float before the error is
+// measured, as the loop evaluates them. In r rather than ρ = r²: the paper's kernel has a |r|³
+// term, a cusp in ρ at the centre that cubics in ρ follow only to 8e-5 of the peak.
 void fitPieces(FootprintSampler& sampler, const kernel::RadialKernel& kernel, double extent) {
     constexpr int kPieces = FootprintSampler::kPieces;
-    const double width = std::sqrt(static_cast<double>(sampler.reach)) / kPieces;
-    const auto exact = [&](int piece, double u) {
-        return kernel.footprint(extent * (piece + u) * width);
+    const double perRadius = (kPieces - 1) / std::sqrt(static_cast<double>(sampler.reach));
+    const auto exact = [&](double position) {
+        return kernel.footprint(extent * position / perRadius);
     };
     double error = 0.0;
     for (int piece = 0; piece < kPieces; ++piece) {
+        const double low = std::max(piece - 0.5, 0.0) - piece;
+        const double high = std::min(piece + 0.5, kPieces - 1.0) - piece;
+        double v[4];
         double y[4];
         for (int node = 0; node < 4; ++node) {
-            y[node] = exact(piece, node / 3.0);
+            v[node] = low + (high - low) * node / 3.0;
+            y[node] = exact(piece + v[node]);
         }
-        const double d1 = y[1] - y[0];
-        const double d2 = y[2] - 2.0 * y[1] + y[0];
-        const double d3 = y[3] - 3.0 * y[2] + 3.0 * y[1] - y[0];
-        // p(s) in s = 3u, then scaled to u.
-        const double inS[4] = {y[0], d1 - d2 / 2.0 + d3 / 3.0, d2 / 2.0 - d3 / 2.0, d3 / 6.0};
-        double scale = 1.0;
-        for (std::size_t k = 0; k < 4; ++k, scale *= 3.0) {
-            sampler.pieces[k][static_cast<std::size_t>(piece)] = static_cast<float>(inS[k] * scale);
+        const std::array<double, 4> c = cubicThrough(v, y);
+        for (std::size_t k = 0; k < 4; ++k) {
+            sampler.pieces[k][static_cast<std::size_t>(piece)] = static_cast<float>(c[k]);
         }
         constexpr int kChecks = 48;
         for (int check = 0; check <= kChecks; ++check) {
-            const double u = static_cast<double>(check) / kChecks;
-            error = std::max(error, std::abs(sampler.piece(piece, static_cast<float>(u)) -
-                                             exact(piece, u)));
+            const double at = low + (high - low) * check / kChecks;
+            error = std::max(error, std::abs(sampler.piece(piece, static_cast<float>(at)) -
+                                             exact(piece + at)));
         }
     }
-    sampler.piecesPerRadius = static_cast<float>(1.0 / width);
+    sampler.piecesPerRadius = static_cast<float>(perRadius);
     sampler.pieceError = static_cast<float>(error);
     sampler.hasPieces = error <= FootprintSampler::kPieceTolerance * sampler.peak;
 }

@@ -41,24 +41,25 @@ struct FootprintSampler {
 
     /// @brief Radial: the footprint as kPieces cubics in r = √ρ over [0, √reach], each through
     /// the kernel at four points of its interval, which the SIMD loop looks up in registers
-    /// instead of gathering two profile samples from memory (a third of a pixel's cost). Piece i
-    /// covers r ∈ [i, i + 1]/piecesPerRadius; pieces[k][i] is its coefficient of u^k, u the
-    /// position in the interval (0 to 1). Used when `hasPieces`: their largest difference from
-    /// the kernel, `pieceError`, is within kPieceTolerance of the peak, as close as the profile
-    /// is (the paper's kernel: 2e-6; a truncated Gaussian, whose footprint falls to 0 like a
-    /// square root at its edge, keeps the profile).
+    /// instead of gathering two profile samples from memory. In p = r·piecesPerRadius ∈ [0,
+    /// kPieces − 1], piece i covers p ∈ [i − ½, i + ½] (the end pieces the half inside) and
+    /// pieces[k][i] is its coefficient of v^k, v = p − i: the loop finds i by rounding p.
+    /// Used when `hasPieces`: their largest difference from the kernel, `pieceError`, is within
+    /// kPieceTolerance of the peak, as close as the profile is (the paper's kernel: 3e-6; a
+    /// truncated Gaussian, whose footprint falls to 0 like a square root at its edge, keeps the
+    /// profile).
     static constexpr int kPieces = 16;
     static constexpr double kPieceTolerance = 1e-5;
     bool hasPieces = false;
-    float piecesPerRadius = 0.0f; ///< kPieces / √reach
+    float piecesPerRadius = 0.0f; ///< (kPieces − 1) / √reach
     float pieceError = 0.0f;      ///< the largest |cubic − kernel|, measured when made
     std::array<std::array<float, kPieces>, 4> pieces{};
 
-    /// @brief Piece `index` at `u` ∈ [0, 1], by Horner's rule in float as the SIMD loop evaluates
-    /// it (with fused multiply-adds).
-    float piece(int index, float u) const {
+    /// @brief Piece `index` at `v` ∈ [−½, ½], by Horner's rule in float as the SIMD loop
+    /// evaluates it (with fused multiply-adds).
+    float piece(int index, float v) const {
         const auto i = static_cast<std::size_t>(index);
-        return std::fma(std::fma(std::fma(pieces[3][i], u, pieces[2][i]), u, pieces[1][i]), u,
+        return std::fma(std::fma(std::fma(pieces[3][i], v, pieces[2][i]), v, pieces[1][i]), v,
                         pieces[0][i]);
     }
 

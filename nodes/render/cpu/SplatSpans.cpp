@@ -113,9 +113,9 @@ template <class D, class V> HWY_INLINE V PhiSeries(D d, V x) {
     return hn::MulAdd(highest, x4, low);
 }
 
-// The radial footprint at ρ = a² + b² (at most the reach) from the sampler's cubic pieces in
-// r = √ρ, looked up in registers: each coefficient's 16 values fill 16 / lanes vectors, one
-// permute each and a select between them.
+// The radial footprint at ρ = a² + b² from the sampler's cubic pieces in r = √ρ, looked up in
+// registers: each coefficient's 16 values fill 16 / lanes vectors, one permute each and a
+// select between them.
 template <class D> class PieceLookup {
 public:
     static constexpr std::size_t kLanes = hn::MaxLanes(D());
@@ -133,26 +133,29 @@ public:
 
     V operator()(D d, V rho) const {
         const hn::RebindToSigned<D> di;
-        const V position = hn::Mul(hn::Sqrt(rho), mPerRadius);
-        const V floor =
-            hn::Min(hn::Floor(position), hn::Set(d, FootprintSampler::kPieces - 1.0f));
-        const V u = hn::Sub(position, floor);
-        const auto index = hn::ConvertTo(di, floor);
-        const auto lanes =
-            hn::IndicesFromVec(d, hn::And(index, hn::Set(di, static_cast<int>(kLanes - 1))));
+        // The piece is p rounded to the nearest integer, found by adding 2^23: the sum's
+        // mantissa holds it in its low bits (no float-to-int conversion and its overflow
+        // fix-ups). p beyond the last piece (outside the reach, skipped) takes the last one.
+        const V position = hn::Min(hn::Mul(hn::Sqrt(rho), mPerRadius),
+                                   hn::Set(d, FootprintSampler::kPieces - 1.0f));
+        const V magic = hn::Set(d, 8388608.0f);
+        const V shifted = hn::Add(position, magic);
+        const V nearest = hn::Sub(shifted, magic);
+        const V v = hn::Sub(position, nearest);
+        const auto lanes = hn::IndicesFromVec(
+            d, hn::And(hn::BitCast(di, shifted), hn::Set(di, static_cast<int>(kLanes - 1))));
         const auto coefficient = [&](std::size_t k) {
             V value = hn::TableLookupLanes(mCoefficients[k][0], lanes);
             for (std::size_t part = 1; part < kParts; ++part) {
-                const auto inPart =
-                    hn::RebindMask(d, hn::Gt(index, hn::Set(di, static_cast<int>(part * kLanes) - 1)));
+                const auto inPart = hn::Gt(nearest, hn::Set(d, static_cast<float>(part * kLanes) - 0.5f));
                 value = hn::IfThenElse(inPart, hn::TableLookupLanes(mCoefficients[k][part], lanes),
                                        value);
             }
             return value;
         };
-        return hn::MulAdd(hn::MulAdd(hn::MulAdd(coefficient(3), u, coefficient(2)), u,
+        return hn::MulAdd(hn::MulAdd(hn::MulAdd(coefficient(3), v, coefficient(2)), v,
                                      coefficient(1)),
-                          u, coefficient(0));
+                          v, coefficient(0));
     }
 
 private:
@@ -221,6 +224,9 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
     const auto bx = hn::Set(d, splat.square[3]);
     const auto wx = hn::Set(d, splat.square[6]);
     const auto zx = hn::Set(d, splat.depth[0]);
+    // Pixel columns of the box's first vector (whole numbers, exact in float), and the step.
+    const auto firstX = hn::Add(hn::Set(d, static_cast<float>(splat.columnBegin)), lane);
+    const auto nextX = hn::Set(d, static_cast<float>(lanes));
     for (int row = first; row < last; ++row) {
         const auto y = static_cast<float>(row);
         const auto a0 = hn::Set(d, splat.square[1] * y + splat.square[2]);
@@ -232,8 +238,9 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
         float* blueRow = planes.blue(row);
         float* alphaRow = planes.alpha(row);
         const float* depthRow = batch.depthTest ? planes.depth(row) : nullptr;
-        for (int column = splat.columnBegin; column < splat.columnEnd; column += lanes) {
-            const auto x = hn::Add(hn::Set(d, static_cast<float>(column)), lane);
+        auto x = firstX;
+        for (int column = splat.columnBegin; column < splat.columnEnd;
+             column += lanes, x = hn::Add(x, nextX)) {
             auto a = hn::MulAdd(ax, x, a0);
             auto b = hn::MulAdd(bx, x, b0);
             auto inside = hn::Gt(one, zero); // all true
@@ -298,7 +305,7 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
             }
             hn::Vec<D> footprint;
             if constexpr (kKind == Kind::RadialPieces) {
-                footprint = (*batch.pieces)(d, hn::Min(rho, reach));
+                footprint = (*batch.pieces)(d, rho);
             } else if constexpr (kKind == Kind::Combined) {
                 // The scalar part samples its footprint where a TextureSplat would.
                 const float* m = splat.footprintFromSquare;
