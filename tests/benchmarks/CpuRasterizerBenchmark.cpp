@@ -24,8 +24,6 @@
 namespace {
 
 using texsplat::render::cpu::ColorPlanes;
-using texsplat::render::cpu::FootprintSampler;
-using texsplat::render::cpu::SplatRaster;
 using texsplat::test::CompositeWorkload;
 using texsplat::test::WorkloadCamera;
 
@@ -64,8 +62,7 @@ void timeComposite(benchmark::State& state, const Composite& composite, const st
     const CompositeWorkload& workload = timed.workload;
     ColorPlanes planes(workload.width, workload.height, glm::vec4(0.0f), false);
     for (auto _ : state) {
-        composite(workload.splats.data(), workload.splats.size(), *workload.sampler, planes, 0,
-                  workload.height);
+        composite(workload, planes);
         benchmark::DoNotOptimize(planes.alpha(0));
         benchmark::ClobberMemory();
     }
@@ -82,10 +79,11 @@ void timeComposite(benchmark::State& state, const Composite& composite, const st
 void CompositeSplatsSimd(benchmark::State& state) {
     timeComposite(
         state,
-        [](const SplatRaster* splats, std::size_t count, const FootprintSampler& sampler,
-           ColorPlanes& planes, int rowBegin, int rowEnd) {
-            texsplat::render::cpu::compositeSplats(splats, count, &sampler, nullptr, planes,
-                                                   rowBegin, rowEnd);
+        [](const CompositeWorkload& workload, ColorPlanes& planes) {
+            texsplat::render::cpu::compositeSplats(workload.splats.data(), workload.rows.data(),
+                                                   workload.splats.size(),
+                                                   workload.sampler.get(), nullptr, planes, 0,
+                                                   workload.height);
         },
         texsplat::render::cpu::compositeTarget());
 }
@@ -97,7 +95,13 @@ BENCHMARK(CompositeSplatsSimd)
 
 // Baseline: the scalar reference, one pixel at a time, std::expm1 for every fragment.
 void CompositeSplatsBaselineScalar(benchmark::State& state) {
-    timeComposite(state, texsplat::test::compositeSplatsScalar, "scalar");
+    timeComposite(
+        state,
+        [](const CompositeWorkload& workload, ColorPlanes& planes) {
+            texsplat::test::compositeSplatsScalar(workload.splats.data(), workload.splats.size(),
+                                                  *workload.sampler, planes, 0, workload.height);
+        },
+        "scalar");
 }
 BENCHMARK(CompositeSplatsBaselineScalar)
     ->Args({0, 64})

@@ -13,6 +13,7 @@
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/ColorPlanes.h"
 #include "nodes/render/cpu/SplatRaster.h"
+#include "nodes/render/cpu/SplatSpans.h"
 #include "octree/Splat.h"
 
 #include <glm/geometric.hpp>
@@ -144,6 +145,7 @@ enum class WorkloadCamera {
 /// @brief The splats of one `texsplat bench` frame set up for compositeSplats(), in order.
 struct CompositeWorkload {
     std::vector<render::cpu::SplatRaster> splats; ///< back to front, those covering a pixel
+    std::vector<render::cpu::RowSpan> rows;       ///< the rows of each of `splats`
     std::shared_ptr<const render::cpu::FootprintSampler> sampler; ///< the batch's footprint
     int width = 0;                                                ///< image columns
     int height = 0;                                               ///< image rows
@@ -188,6 +190,7 @@ inline CompositeWorkload compositeWorkload(const std::string& dataset, const std
     for (const render::cpu::SplatRaster& raster : setUpSplats(setup, batch.splats->splats())) {
         if (!raster.isEmpty()) {
             workload.splats.push_back(raster);
+            workload.rows.push_back(render::cpu::rowSpanOf(raster));
         }
     }
     return workload;

@@ -116,8 +116,9 @@ std::uint64_t expectMatchesReference(const CompositeWorkload& workload,
         prepare(scalar);
     }
     for (int row = 0; row < workload.height; row += kBandRows) {
-        compositeSplats(workload.splats.data(), workload.splats.size(), workload.sampler.get(),
-                        nullptr, simd, row, std::min(row + kBandRows, workload.height));
+        compositeSplats(workload.splats.data(), workload.rows.data(), workload.splats.size(),
+                        workload.sampler.get(), nullptr, simd, row,
+                        std::min(row + kBandRows, workload.height));
     }
     const std::uint64_t fragments =
         test::compositeSplatsScalar(workload.splats.data(), workload.splats.size(),

@@ -130,6 +130,7 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             statistics.addTime(sg::RenderPhase::Order, secondsSince(orderStart));
         }
         std::vector<SplatRaster> rasters(kChunk);
+        std::vector<RowSpan> rows(kChunk);
         for (const sg::detail::SplatRun& run : runs) {
             const PreparedBatch& batch = batches[run.batch];
             const octree::Splat* splats = batch.splats->splats->splats().data();
@@ -145,9 +146,12 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                                                          vectors ? vectors + first : nullptr,
                                                          range.size(),
                                                          rasters.data() + range.begin());
+                                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                                          rows[i] = rowSpanOf(rasters[i]);
+                                      }
                                   });
                 tbb::parallel_for(0, bands.count, [&](int band) {
-                    compositeSplats(rasters.data(), count, batch.sampler.get(),
+                    compositeSplats(rasters.data(), rows.data(), count, batch.sampler.get(),
                                     batch.marks.get(), planes, bands.begin(band),
                                     bands.end(band, frame.height));
                 });

@@ -12,6 +12,7 @@
 #include <cfloat>
 #include <cmath>
 #include <optional>
+#include <type_traits>
 
 HWY_BEFORE_NAMESPACE();
 namespace texsplat::render::cpu::HWY_NAMESPACE {
@@ -376,7 +377,7 @@ bool isUnclamped(const SplatRaster& splat, const FootprintSampler& sampler) {
 }
 
 template <Kind kKind>
-void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
+void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                          const FootprintSampler* sampler, const MarkSampler* marks,
                          ColorPlanes& planes, int rowBegin, int rowEnd) {
     // Up to 16 lanes (AVX-512): 1.1× eight on 7–9-pixel-wide splats (CpuRasterizerBenchmark).
@@ -392,12 +393,12 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
     // nothing (seven of a pixel's operations).
     constexpr bool kMayDropClamps = kKind != Kind::Vector && kKind != Kind::Combined;
     for (std::size_t i = 0; i < count; ++i) {
-        const SplatRaster& splat = splats[i];
-        const int first = std::max(splat.rowBegin, rowBegin);
-        const int last = std::min(splat.rowEnd, rowEnd);
-        if (first >= last || splat.columnBegin >= splat.columnEnd) {
+        const int first = std::max(rows[i].begin, rowBegin);
+        const int last = std::min(rows[i].end, rowEnd);
+        if (first >= last) {
             continue;
         }
+        const SplatRaster& splat = splats[i];
         if (kMayDropClamps && isUnclamped(splat, *sampler)) {
             CompositeSplat<kKind, false>(batch, splat, first, last);
         } else {
@@ -406,22 +407,23 @@ void CompositeSplatsWith(const SplatRaster* splats, std::size_t count,
     }
 }
 
-void CompositeSplats(const SplatRaster* splats, std::size_t count,
+void CompositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                      const FootprintSampler* sampler, const MarkSampler* marks,
                      ColorPlanes& planes, int rowBegin, int rowEnd) {
+    const auto with = [&](auto kind) {
+        CompositeSplatsWith<decltype(kind)::value>(splats, rows, count, sampler, marks, planes,
+                                                   rowBegin, rowEnd);
+    };
     if (marks != nullptr && !marks->isCombined) {
-        CompositeSplatsWith<Kind::Vector>(splats, count, sampler, marks, planes, rowBegin, rowEnd);
+        with(std::integral_constant<Kind, Kind::Vector>{});
     } else if (marks != nullptr) {
-        CompositeSplatsWith<Kind::Combined>(splats, count, sampler, marks, planes, rowBegin,
-                                            rowEnd);
+        with(std::integral_constant<Kind, Kind::Combined>{});
     } else if (sampler->hasPieces) {
-        CompositeSplatsWith<Kind::RadialPieces>(splats, count, sampler, marks, planes, rowBegin,
-                                                rowEnd);
+        with(std::integral_constant<Kind, Kind::RadialPieces>{});
     } else if (sampler->isRadial) {
-        CompositeSplatsWith<Kind::Radial>(splats, count, sampler, marks, planes, rowBegin, rowEnd);
+        with(std::integral_constant<Kind, Kind::Radial>{});
     } else {
-        CompositeSplatsWith<Kind::Texture>(splats, count, sampler, marks, planes, rowBegin,
-                                           rowEnd);
+        with(std::integral_constant<Kind, Kind::Texture>{});
     }
 }
 
@@ -436,10 +438,10 @@ namespace texsplat::render::cpu {
 HWY_EXPORT(CompositeSplats);
 HWY_EXPORT(CompositeTarget);
 
-void compositeSplats(const SplatRaster* splats, std::size_t count,
+void compositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                      const FootprintSampler* sampler, const MarkSampler* marks,
                      ColorPlanes& planes, int rowBegin, int rowEnd) {
-    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, count, sampler, marks, planes, rowBegin,
+    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, rows, count, sampler, marks, planes, rowBegin,
                                           rowEnd);
 }
 
