@@ -26,6 +26,23 @@ std::uint64_t nodeKey(const NodeRef& node) {
     return node.index ^ (static_cast<std::uint64_t>(node.level) << 58);
 }
 
+// Whether every voxel centre of `grid` lies in front of the perspective eye, with a margin for
+// rounding: depth is linear, so the box of the centres is in front when its corners are.
+bool isInFrontOfEye(const ClassifiedGrid& grid, const View& view) {
+    const glm::dvec3 low = grid.toWorld(glm::dvec3(0.0));
+    const glm::dvec3 high = grid.toWorld(glm::dvec3(grid.dims()) - 1.0);
+    const double margin = 1e-9 * (glm::length(high - low) + glm::length(view.eye() - low));
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 point((corner & 1) != 0 ? high.x : low.x,
+                               (corner & 2) != 0 ? high.y : low.y,
+                               (corner & 4) != 0 ? high.z : low.z);
+        if (!(view.depth(point) > margin)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 } // namespace
 
 int tableColumn(float towardEye, int columns) {
@@ -100,21 +117,11 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
     splats.clear();
     TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
     const SliceOrder order(grid, view);
-    // A voxel's splat, or none for an empty voxel or one behind the eye.
-    const auto splatOf = [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored,
-                             Splat& splat) {
-        const glm::vec4 value = grid.storedVoxel(stored);
-        if (value == glm::vec4(0.0f)) {
-            return false;
-        }
-        const glm::dvec3 position = grid.toWorld(glm::dvec3(voxel));
-        if (view.isPerspective() && view.depth(position) <= 0.0) {
-            return false;
-        }
-        splat.position = glm::vec3(position);
-        splat.color = glm::vec3(value);
-        splat.extinction = value.w;
-        return true;
+    const bool cullsBehindEye = view.isPerspective() && !isInFrontOfEye(grid, view);
+    // Whether a voxel makes a splat: not empty, not behind the eye.
+    const auto isDrawn = [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
+        return grid.storedVoxel(stored) != glm::vec4(0.0f) &&
+               !(cullsBehindEye && view.depth(grid.toWorld(glm::dvec3(voxel))) <= 0.0);
     };
     // Slices in parallel: count each one's splats, lay the slices end to end, then write each
     // slice's splats at its offset. The list is exactly as long as its splats (no growth by
@@ -124,9 +131,8 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
     std::vector<std::size_t> offsets(slices + 1, 0);
     tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
         std::size_t count = 0;
-        Splat splat;
         order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
-            count += splatOf(voxel, stored, splat) ? 1 : 0;
+            count += isDrawn(voxel, stored) ? 1 : 0;
         });
         offsets[slice + 1] = count;
     });
@@ -136,12 +142,15 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
     SplatVector* const outVectors = splats.writableVectors();
     tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
         std::size_t next = offsets[slice];
-        Splat splat;
         order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
-            if (!splatOf(voxel, stored, splat)) {
+            if (!isDrawn(voxel, stored)) {
                 return;
             }
-            out[next] = splat;
+            const glm::vec4 value = grid.storedVoxel(stored);
+            Splat& splat = out[next];
+            splat.position = glm::vec3(grid.toWorld(glm::dvec3(voxel)));
+            splat.color = glm::vec3(value);
+            splat.extinction = value.w;
             if (vectors) {
                 outVectors[next] = vectorSplat(*vectors, splat.position, grid.storedVector(stored),
                                                grid.index(voxel));
