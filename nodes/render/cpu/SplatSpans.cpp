@@ -148,7 +148,8 @@ public:
         const auto coefficient = [&](std::size_t k) {
             V value = hn::TableLookupLanes(mCoefficients[k][0], lanes);
             for (std::size_t part = 1; part < kParts; ++part) {
-                const auto inPart = hn::Gt(nearest, hn::Set(d, static_cast<float>(part * kLanes) - 0.5f));
+                const auto inPart =
+                    hn::Gt(nearest, hn::Set(d, static_cast<float>(part * kLanes) - 0.5f));
                 value = hn::IfThenElse(inPart, hn::TableLookupLanes(mCoefficients[k][part], lanes),
                                        value);
             }
@@ -179,15 +180,13 @@ template <class D> struct Batch {
     const FootprintSampler* sampler;
     const MarkSampler* marks;
     ColorPlanes& planes;
-    int rowBegin;
-    int rowEnd;
     bool depthTest;
     bool squareTest; // the square's edges cut the footprint (else its reach lies inside)
     std::optional<PieceLookup<D>> pieces;
 };
 
-// Composites one splat's rows of [batch.rowBegin, batch.rowEnd); with kClamp, every sum is
-// clamped to FLT_MAX (kUnclampedColour says when that is not needed).
+// Composites rows [first, last) of one splat; with kClamp, every sum is clamped to FLT_MAX
+// (kUnclampedColour says when that is not needed).
 template <Kind kKind, bool kClamp, class D>
 HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, int first,
                                int last) {
@@ -383,9 +382,8 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
     // Up to 16 lanes (AVX-512): 1.1× eight on 7–9-pixel-wide splats (CpuRasterizerBenchmark).
     using D = hn::CappedTag<float, 16>;
     const D d;
-    Batch<D> batch{d,      sampler,           marks,
-                   planes, rowBegin,          rowEnd,
-                   planes.hasDepth(), sampler == nullptr || sampler->reach > 1.0f, std::nullopt};
+    const bool squareTest = sampler == nullptr || sampler->reach > 1.0f;
+    Batch<D> batch{d, sampler, marks, planes, planes.hasDepth(), squareTest, std::nullopt};
     if constexpr (kKind == Kind::RadialPieces) {
         batch.pieces.emplace(d, *sampler);
     }
