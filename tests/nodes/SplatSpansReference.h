@@ -43,7 +43,12 @@ inline float sampleFootprint(const render::cpu::FootprintSampler& sampler, float
             std::min(std::sqrt(rho) * sampler.piecesPerRadius,
                      render::cpu::FootprintSampler::kPieces - 1.0f);
         const float nearest = std::nearbyint(position); // halves to even, as the SIMD loop
-        return sampler.piece(static_cast<int>(nearest), position - nearest);
+        // Horner's rule without fused operations (std::fma is a library call without -mfma):
+        // within an ulp of FootprintSampler::piece(), and a fair scalar baseline.
+        const auto i = static_cast<std::size_t>(nearest);
+        const float v = position - nearest;
+        const auto& c = sampler.pieces;
+        return ((c[3][i] * v + c[2][i]) * v + c[1][i]) * v + c[0][i];
     }
     if (sampler.isRadial) {
         constexpr float kSamples =
