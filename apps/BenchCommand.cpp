@@ -179,6 +179,7 @@ CheckedBench checkBenchOptions(const BenchArguments& arguments) {
         }
         options.datasets = withOption(
             "--dataset", [&] { return bench::BenchDataset::parseList(arguments.datasets); });
+        options.camera = parseFramingCamera(framing.camera);
         options.methods =
             withOption("--method", [&] { return bench::BenchMethod::parseList(arguments.methods); });
     }
@@ -248,8 +249,12 @@ void runBench(const BenchArguments& arguments, CheckedBench checked) {
                 : runner.run();
 
     const unsigned cores = std::thread::hardware_concurrency();
-    std::printf("texsplat bench: %s, %u CPU threads; median of %d frames after %d warm-up\n",
-                devices.c_str(), cores, arguments.repeat, arguments.warmup);
+    const char* camera =
+        isScene ? "the scene's camera"
+        : options.camera == render::FramingCamera::Orthographic ? "orthographic camera"
+                                                                 : "perspective camera";
+    std::printf("texsplat bench: %s, %u CPU threads, %s; median of %d frames after %d warm-up\n",
+                devices.c_str(), cores, camera, arguments.repeat, arguments.warmup);
     std::printf("%s", bench::benchTable(results).c_str());
     std::printf("frame/c, draw/c: frame and draw time over the fill-rate ceiling (same quads, "
                 "trivial shader, same blending; GL); fragments: GL_SAMPLES_PASSED; errors: RGB "

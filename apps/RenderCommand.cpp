@@ -571,9 +571,6 @@ void addRenderCommand(CLI::App& app, int& exitCode, CommandMode mode) {
                         "one frame number such as out%04d.png (%% for a '%')")
         ->required();
     command->add_option("--size", arguments->size, "Image size WxH")->capture_default_str();
-    command->add_option("--camera", arguments->framing.camera,
-                        "perspective|orthographic: the camera that frames a scene without one "
-                        "(default perspective)");
     addViewOptions(*command, arguments->framing);
     command->add_option("--frames", arguments->frames,
                         "Render N frames of the scene's animation, frame k at scene time k/fps "

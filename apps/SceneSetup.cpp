@@ -213,6 +213,17 @@ ParsedBudget parseBudget(const BudgetOverride& budget) {
 void checkSceneOptions(const Framing& framing, const BudgetOverride& budget) {
     parseBudget(budget);
     parseViewChange(framing);
+    parseFramingCamera(framing.camera);
+}
+
+render::FramingCamera parseFramingCamera(const std::string& camera) {
+    if (camera.empty() || camera == "perspective") {
+        return render::FramingCamera::Perspective;
+    }
+    if (camera == "orthographic") {
+        return render::FramingCamera::Orthographic;
+    }
+    throw DataError("--camera: expected 'perspective' or 'orthographic', got '" + camera + "'");
 }
 
 int applyBudget(sg::Node& scene, const BudgetOverride& budget) {
@@ -246,6 +257,9 @@ sg::Node::Ptr loadScene(const std::string& path) {
 }
 
 void addViewOptions(CLI::App& command, Framing& framing) {
+    command.add_option("--camera", framing.camera,
+                       "perspective|orthographic: the camera that frames a scene without one "
+                       "(default perspective)");
     command.add_option("--direction", framing.direction,
                        "x,y,z: viewing direction, of the camera that frames a scene without one "
                        "or of the scene's own camera (turned about its focal point)");
@@ -269,14 +283,7 @@ sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, flo
         return scene;
     }
     render::Framing frame;
-    if (framing.camera.empty() || framing.camera == "perspective") {
-        frame.camera = render::FramingCamera::Perspective;
-    } else if (framing.camera == "orthographic") {
-        frame.camera = render::FramingCamera::Orthographic;
-    } else {
-        throw DataError("--camera: expected 'perspective' or 'orthographic', got '" +
-                        framing.camera + "'");
-    }
+    frame.camera = parseFramingCamera(framing.camera);
     frame.direction = !framing.direction.empty() ? parseDirection(framing.direction)
                       : framing.sceneName.empty() ? kDefaultSceneDirection
                                                   : glm::vec3(0.0f, 0.0f, -1.0f);

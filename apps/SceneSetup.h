@@ -1,5 +1,6 @@
 #pragma once
 
+#include "nodes/render/SceneFraming.h"
 #include "scenegraph/Node.h"
 
 #include <glm/vec2.hpp>
@@ -61,7 +62,12 @@ struct Framing {
 /// would) before any work: every option is checked before the scene is read.
 void checkSceneOptions(const Framing& framing, const BudgetOverride& budget);
 
-/// @brief Adds --direction, --azimuth, --elevation and --zoom to `command`, filling `framing`.
+/// @brief The camera `--camera` names: "perspective" (or empty) or "orthographic".
+/// @throws DataError for anything else.
+render::FramingCamera parseFramingCamera(const std::string& camera);
+
+/// @brief Adds --camera, --direction, --azimuth, --elevation and --zoom to `command`, filling
+/// `framing`.
 void addViewOptions(CLI::App& command, Framing& framing);
 
 /// @brief The scene as drawn: `scene` itself when it has a camera (then `framing` must not ask

@@ -32,9 +32,6 @@ void addViewCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     command->add_option("scene", options.scene,
                         "Inventor scene file (.iv); none: the built-in tornado with fibers");
     command->add_option("--size", arguments->size, "Window size WxH")->capture_default_str();
-    command->add_option("--camera", options.framing.camera,
-                        "perspective|orthographic: the camera that frames a scene without one "
-                        "(default perspective)");
     addViewOptions(*command, options.framing);
     command->add_option("--interactive-splats", options.interactiveBudget,
                         "Splat budget per splat node while the view moves")

@@ -1,5 +1,6 @@
 #include "nodes/bench/BenchDataset.h"
 
+#include "nodes/OrthographicCamera.h"
 #include "nodes/PerspectiveCamera.h"
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
@@ -127,12 +128,16 @@ glm::vec3 BenchDataset::viewDirection() const {
                                       : glm::vec3(0.35f, 0.5f, -1.0f);
 }
 
-sg::Separator::Ptr BenchDataset::scene(const sg::Node::Ptr& splatNode, float aspect) const {
+sg::Separator::Ptr BenchDataset::scene(const sg::Node::Ptr& splatNode, float aspect,
+                                       render::FramingCamera kind) const {
     nodes::VolumeData::Ptr volume = nodes::VolumeData::create();
     volume->setName(name());
     volume->source.setValue(volumeSource(mSource));
     volume->resolution.setValue(glm::vec3(static_cast<float>(mResolution)));
-    nodes::PerspectiveCamera::Ptr camera = nodes::PerspectiveCamera::create();
+    const std::shared_ptr<nodes::Camera> camera =
+        kind == render::FramingCamera::Orthographic
+            ? std::shared_ptr<nodes::Camera>(nodes::OrthographicCamera::create())
+            : std::shared_ptr<nodes::Camera>(nodes::PerspectiveCamera::create());
     camera->orientation.setValue(render::rotationLookingAlong(viewDirection()));
     camera->viewAll(volume->bounds(), aspect);
     sg::Separator::Ptr root = sg::Separator::create();

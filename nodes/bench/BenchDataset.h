@@ -1,5 +1,6 @@
 #pragma once
 
+#include "nodes/render/SceneFraming.h"
 #include "scenegraph/Separator.h"
 
 #include <glm/vec3.hpp>
@@ -44,10 +45,11 @@ public:
     /// @brief The direction the camera looks along (root space).
     glm::vec3 viewDirection() const;
 
-    /// @brief A scene of a PerspectiveCamera framing the volume for an image of `aspect`
+    /// @brief A scene of a camera of kind `camera` framing the volume for an image of `aspect`
     /// (width / height), the dataset's TransferFunction and VolumeData, then `splatNode`:
     /// the separator holds them in that order.
-    sg::Separator::Ptr scene(const sg::Node::Ptr& splatNode, float aspect) const;
+    sg::Separator::Ptr scene(const sg::Node::Ptr& splatNode, float aspect,
+                             render::FramingCamera camera = render::FramingCamera::Perspective) const;
 
 private:
     BenchDataset(Source source, int resolution) : mSource(source), mResolution(resolution) {}

@@ -223,7 +223,8 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     report(where + ": load and classify", 0.0);
     // The reference ray casts the scene with the full-quality node; each method replaces it.
-    const sg::Separator::Ptr root = dataset.scene(BenchMethod().makeNode(0), aspect);
+    const sg::Separator::Ptr root =
+        dataset.scene(BenchMethod().makeNode(0), aspect, mOptions.camera);
     const auto& camera = static_cast<const nodes::Camera&>(*root->child(0));
     const auto& transfer = static_cast<const nodes::TransferFunction&>(*root->child(1));
     const auto& volume = static_cast<const nodes::VolumeData&>(*root->child(2));

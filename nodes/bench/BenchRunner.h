@@ -32,6 +32,8 @@ struct BenchOptions {
     /// @brief Backends measured, each method on each in this order; GL needs a current context.
     std::vector<render::Backend> backends{render::Backend::Gl};
     int cpuThreads = 0; ///< CPU backend threads (0: all cores)
+    /// @brief The datasets' camera (a SCENE keeps its own or is framed by the caller).
+    render::FramingCamera camera = render::FramingCamera::Perspective;
 };
 
 /// @brief Runs `texsplat bench`: for every dataset and image size, renders the RayCastAction

@@ -183,6 +183,39 @@ TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError, "texsplat: error: --size: expected WxH with whole numbers "
                                     "from 1 to 16384, got '16by16'\n");
+    output = runTexsplat("bench --dataset ml8 --camera fisheye");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_EQ(output.standardError, "texsplat: error: --camera: expected 'perspective' or "
+                                    "'orthographic', got 'fisheye'\n");
+}
+
+TEST_F(BenchCommandTest, theDatasetsCanBeSeenThroughAnOrthographicCamera) {
+    // As VTK's ray caster is compared (issue 11): the same data through either camera. The
+    // orthographic view of the same volume draws the same splats, and its error against its
+    // own ray-cast reference stays small.
+    const auto perspective = runTexsplat(
+        "bench --dataset ml16 --size 48x48 --repeat 1 --backend cpu --method texture --csv " +
+        path("perspective.csv"));
+    const auto orthographic = runTexsplat(
+        "bench --dataset ml16 --size 48x48 --repeat 1 --backend cpu --method texture "
+        "--camera orthographic --csv " +
+        path("orthographic.csv"));
+    ASSERT_EQ(perspective.exitCode, 0) << perspective.standardError;
+    ASSERT_EQ(orthographic.exitCode, 0) << orthographic.standardError;
+    EXPECT_NE(perspective.standardOutput.find(", perspective camera;"), std::string::npos)
+        << perspective.standardOutput;
+    EXPECT_NE(orthographic.standardOutput.find(", orthographic camera;"), std::string::npos)
+        << orthographic.standardOutput;
+    const auto row = [&](const std::string& file) {
+        const std::vector<std::string> lines = split(read(path(file)), '\n');
+        EXPECT_EQ(lines.size(), 2u);
+        return lines.size() == 2u ? split(lines[1], ',') : std::vector<std::string>(25);
+    };
+    const std::vector<std::string> fromPerspective = row("perspective.csv");
+    const std::vector<std::string> fromOrthographic = row("orthographic.csv");
+    EXPECT_EQ(fromOrthographic[5], fromPerspective[5]) << "splats";
+    EXPECT_GT(std::stod(fromOrthographic[19]), 30.0) << "PSNR against the ray-cast reference";
+    EXPECT_NE(fromOrthographic[18], fromPerspective[18]) << "another view, another error";
 }
 
 TEST_F(BenchCommandTest, plotMustBeSvgAndIsCheckedBeforeTheRun) {

@@ -5,11 +5,9 @@
 // micro-benchmark (tests/benchmarks/CpuRasterizerBenchmark.cpp) times the SIMD path against it.
 
 #include "nodes/NodeTypes.h"
-#include "nodes/OrthographicCamera.h"
 #include "nodes/VolumeData.h"
 #include "nodes/bench/BenchDataset.h"
 #include "nodes/bench/BenchMethod.h"
-#include "nodes/render/CameraView.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/ColorPlanes.h"
 #include "nodes/render/cpu/SplatRaster.h"
@@ -172,14 +170,11 @@ inline CompositeWorkload compositeWorkload(const std::string& dataset, const std
     nodes::registerNodeTypes();
     const bench::BenchDataset source = bench::BenchDataset::fromName(dataset);
     const sg::Separator::Ptr root =
-        source.scene(bench::BenchMethod::fromName(method).makeNode(0), 1.0f);
+        source.scene(bench::BenchMethod::fromName(method).makeNode(0), 1.0f,
+                     camera == WorkloadCamera::Orthographic ? render::FramingCamera::Orthographic
+                                                            : render::FramingCamera::Perspective);
     const auto& volume = static_cast<const nodes::VolumeData&>(*root->child(2));
-    if (camera == WorkloadCamera::Orthographic) {
-        nodes::OrthographicCamera::Ptr orthographic = nodes::OrthographicCamera::create();
-        orthographic->orientation.setValue(render::rotationLookingAlong(source.viewDirection()));
-        orthographic->viewAll(volume.bounds(), 1.0f);
-        root->replaceChild(0, orthographic);
-    } else if (camera == WorkloadCamera::Inside) {
+    if (camera == WorkloadCamera::Inside) {
         auto& perspective = static_cast<nodes::Camera&>(*root->child(0));
         perspective.position.setValue(volume.bounds().center());
         perspective.nearDistance.setValue(0.1f * glm::length(volume.bounds().size()));
