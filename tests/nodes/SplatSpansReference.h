@@ -149,6 +149,7 @@ enum class WorkloadCamera {
 struct CompositeWorkload {
     std::vector<render::cpu::SplatRaster> splats; ///< back to front, those covering a pixel
     std::vector<render::cpu::RowSpan> rows;       ///< the rows of each of `splats`
+    std::vector<std::size_t> sources;             ///< each one's index in the frame's list
     std::shared_ptr<const render::cpu::FootprintSampler> sampler; ///< the batch's footprint
     int width = 0;                                                ///< image columns
     int height = 0;                                               ///< image rows
@@ -164,9 +165,11 @@ inline std::vector<render::cpu::SplatRaster> setUpSplats(const render::cpu::Spla
 
 /// @brief The splats `texsplat bench` draws for `dataset` ("blob64") with `method` ("texture",
 /// "polygon"; full resolution) in a `size` x `size` image, through `camera`, collected by
-/// FrameAction and set up by SplatSetup as CpuRenderer sets them up.
+/// FrameAction and set up by SplatSetup as CpuRenderer sets them up (a radial footprint's pixel
+/// boxes bounding its disc; without `discRadius`, the square's boxes).
 inline CompositeWorkload compositeWorkload(const std::string& dataset, const std::string& method,
-                                           WorkloadCamera camera, int size) {
+                                           WorkloadCamera camera, int size,
+                                           bool discRadius = true) {
     nodes::registerNodeTypes();
     const bench::BenchDataset source = bench::BenchDataset::fromName(dataset);
     const sg::Separator::Ptr root =
@@ -181,16 +184,20 @@ inline CompositeWorkload compositeWorkload(const std::string& dataset, const std
     }
     render::FrameAction action(size, size);
     const render::FrameSplats& batch = action.collect(*root).splats.front();
-    const render::cpu::SplatSetup setup(batch.view, static_cast<float>(batch.footprint->extent),
-                                        size, size);
     CompositeWorkload workload;
     workload.sampler = std::make_shared<const render::cpu::FootprintSampler>(*batch.footprint);
     workload.width = size;
     workload.height = size;
-    for (const render::cpu::SplatRaster& raster : setUpSplats(setup, batch.splats->splats())) {
-        if (!raster.isEmpty()) {
-            workload.splats.push_back(raster);
-            workload.rows.push_back(render::cpu::rowSpanOf(raster));
+    // As CpuRenderer sets them up: a radial footprint's boxes bound its disc.
+    const render::cpu::SplatSetup setup(
+        batch.view, static_cast<float>(batch.footprint->extent), size, size, std::nullopt,
+        discRadius && workload.sampler->isRadial ? std::sqrt(workload.sampler->reach) : 0.0f);
+    const std::vector<render::cpu::SplatRaster> rasters = setUpSplats(setup, batch.splats->splats());
+    for (std::size_t i = 0; i < rasters.size(); ++i) {
+        if (!rasters[i].isEmpty()) {
+            workload.splats.push_back(rasters[i]);
+            workload.rows.push_back(render::cpu::rowSpanOf(rasters[i]));
+            workload.sources.push_back(i);
         }
     }
     return workload;

@@ -13,6 +13,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <functional>
 #include <string>
 #include <vector>
@@ -222,6 +223,69 @@ TEST(SplatSpans, matchesScalarReferenceOnEveryInstructionSet) {
     }
     hwy::SetSupportedTargetsForTest(0);
     EXPECT_GT(targets.size(), 1u) << "only " << compositeTarget() << " was tried";
+}
+
+TEST(SplatSetup, theDiscsPixelBoxHoldsEveryPixelTheFootprintReaches) {
+    // A radial footprint's pixel box bounds the ellipse its disc projects to (the dual conic in
+    // perspective), much tighter than the square's box of an oblique view; no pixel whose
+    // centre lies within the reach may fall outside it, and the image is the square boxes' one.
+    for (const WorkloadCamera camera :
+         {WorkloadCamera::Orthographic, WorkloadCamera::Perspective, WorkloadCamera::Inside}) {
+        SCOPED_TRACE(static_cast<int>(camera));
+        const CompositeWorkload square = test::compositeWorkload("blob32", "texture", camera, 128,
+                                                                 false);
+        const CompositeWorkload disc = test::compositeWorkload("blob32", "texture", camera, 128);
+        ASSERT_LE(disc.splats.size(), square.splats.size());
+        std::uint64_t squarePixels = 0;
+        std::uint64_t discPixels = 0;
+        std::uint64_t lost = 0;
+        std::size_t next = 0; // the disc's raster of the same splat (or none: its box is empty)
+        for (std::size_t i = 0; i < square.splats.size(); ++i) {
+            const SplatRaster& wide = square.splats[i];
+            while (next < disc.splats.size() && disc.sources[next] < square.sources[i]) {
+                ++next;
+            }
+            const SplatRaster tight = next < disc.splats.size() &&
+                                              disc.sources[next] == square.sources[i]
+                                          ? disc.splats[next]
+                                          : SplatRaster{};
+            squarePixels += std::uint64_t(wide.rowEnd - wide.rowBegin) *
+                            std::uint64_t(wide.columnEnd - wide.columnBegin);
+            discPixels += std::uint64_t(tight.rowEnd - tight.rowBegin) *
+                          std::uint64_t(tight.columnEnd - tight.columnBegin);
+            const float* q = wide.square;
+            for (int row = wide.rowBegin; row < wide.rowEnd; ++row) {
+                for (int column = wide.columnBegin; column < wide.columnEnd; ++column) {
+                    const auto x = static_cast<float>(column);
+                    const auto y = static_cast<float>(row);
+                    const float w = q[6] * x + q[7] * y + q[8];
+                    const float a = (q[0] * x + q[1] * y + q[2]) / w;
+                    const float b = (q[3] * x + q[4] * y + q[5]) / w;
+                    const bool reached = w > 0.0f && a * a + b * b <= square.sampler->reach;
+                    const bool inBox = row >= tight.rowBegin && row < tight.rowEnd &&
+                                       column >= tight.columnBegin && column < tight.columnEnd;
+                    lost += reached && !inBox ? 1 : 0;
+                }
+            }
+        }
+        EXPECT_EQ(lost, 0u);
+        if (camera != WorkloadCamera::Inside) {
+            EXPECT_LT(discPixels, squarePixels * 7 / 10) << "the disc's boxes are tighter";
+        }
+        const glm::vec4 background(0.0f);
+        ColorPlanes fromSquare(square.width, square.height, background, false);
+        ColorPlanes fromDisc(disc.width, disc.height, background, false);
+        compositeSplats(square.splats.data(), square.rows.data(), square.splats.size(),
+                        square.sampler.get(), nullptr, fromSquare, 0, square.height);
+        compositeSplats(disc.splats.data(), disc.rows.data(), disc.splats.size(),
+                        disc.sampler.get(), nullptr, fromDisc, 0, disc.height);
+        for (int row = 0; row < square.height; ++row) {
+            ASSERT_EQ(std::memcmp(fromSquare.alpha(row), fromDisc.alpha(row),
+                                  sizeof(float) * static_cast<std::size_t>(square.width)),
+                      0)
+                << "row " << row;
+        }
+    }
 }
 
 TEST(FootprintSampler, cubicPiecesFollowThePapersKernelAsCloselyAsTheProfile) {

@@ -17,6 +17,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <memory>
 #include <thread>
 
@@ -73,11 +74,16 @@ std::vector<PreparedBatch> prepareBatches(const Frame& frame, detail::SamplerCac
             marks->footprintExtent =
                 footprint.texture ? static_cast<float>(footprint.texture->extent()) : 1.0f;
         }
-        batch.setup = std::make_unique<const SplatSetup>(
-            splats.view, static_cast<float>(footprint.extent), frame.width, frame.height, marks);
         if (footprint.texture) {
             batch.sampler = cache.footprint(splats.footprint);
         }
+        // A radial footprint is 0 beyond its reach: the pixel boxes bound that disc.
+        const float discRadius = batch.sampler && batch.sampler->isRadial && !footprint.table
+                                     ? std::sqrt(batch.sampler->reach)
+                                     : 0.0f;
+        batch.setup = std::make_unique<const SplatSetup>(
+            splats.view, static_cast<float>(footprint.extent), frame.width, frame.height, marks,
+            discRadius);
         batches.push_back(std::move(batch));
     }
     return batches;

@@ -190,10 +190,11 @@ MarkPlanes::MarkPlanes(const kernel::VectorSplatTable& table)
 }
 
 SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int height,
-                       std::optional<MarkSetup> marks)
+                       std::optional<MarkSetup> marks, float discRadius)
     : mView(view), mMarks(marks) {
     const glm::mat4& m = view.localToClip;
     mRows.extent = extent;
+    mRows.discRadius = discRadius;
     mRows.width = width;
     mRows.height = height;
     mRows.isPerspective = view.isPerspective;
@@ -238,8 +239,14 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
     mSquareFromPixel[0][1] = -p01 / determinant;
     mSquareFromPixel[1][0] = -p10 / determinant;
     mSquareFromPixel[1][1] = p00 / determinant;
+    // The square's box, or the box of the ellipse the footprint's disc projects to where that
+    // is smaller (ProjectiveRows::discRadius).
     mHalfExtent[0] = std::abs(p00) + std::abs(p01);
     mHalfExtent[1] = std::abs(p10) + std::abs(p11);
+    if (discRadius > 0.0f) {
+        mHalfExtent[0] = std::min(mHalfExtent[0], discRadius * std::hypot(p00, p01));
+        mHalfExtent[1] = std::min(mHalfExtent[1], discRadius * std::hypot(p10, p11));
+    }
     for (int axis = 0; axis < 2; ++axis) {
         mDepthGradient[axis] =
             cu.z * mSquareFromPixel[0][axis] + cv.z * mSquareFromPixel[1][axis];

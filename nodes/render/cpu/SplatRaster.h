@@ -136,6 +136,10 @@ struct ProjectiveRows {
     float direction[3]{};         ///< unit viewing direction, local space
     float inverseSpacing[3]{};    ///< 1 / voxel spacing
     float extent = 1.6f;          ///< square half-width in voxels at size 1
+    /// @brief Radius in square half-widths beyond which the footprint is 0 (a radial footprint's
+    /// √reach): the pixel box bounds that disc's image where it is tighter than the square's;
+    /// 0: the square's box.
+    float discRadius = 0.0f;
     int width = 1;                ///< image columns
     int height = 1;               ///< image rows
     bool isPerspective = false;   ///< splats face the eye (else `direction`)
@@ -172,9 +176,11 @@ class SplatSetup {
 public:
     /// @brief The setup for splats seen through `view`, squares `extent` voxels from the centre
     /// at size 1, in an image of `width` x `height` pixels; with `marks`, vector or combined
-    /// splats (always set up as projective).
+    /// splats (always set up as projective). With `discRadius` > 0 the footprint is 0 beyond
+    /// that radius (in square half-widths, ProjectiveRows::discRadius), and the pixel boxes
+    /// bound the disc.
     SplatSetup(const SplatView& view, float extent, int width, int height,
-               std::optional<MarkSetup> marks = std::nullopt);
+               std::optional<MarkSetup> marks = std::nullopt, float discRadius = 0.0f);
 
     /// @brief Sets up `count` splats into `out`: an empty raster for a splat that covers no
     /// pixel or lies wholly outside the near/far planes. `vectors` (parallel to `splats`) is

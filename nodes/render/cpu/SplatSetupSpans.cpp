@@ -219,6 +219,32 @@ void SetUpLanes(D d, const ProjectiveRows& rows, const octree::Splat* splats,
             high[1] = hn::IfThenElse(front, hn::Max(high[1], y), high[1]);
         }
     }
+    // A footprint that is 0 beyond a disc of radius R (in the square's half-widths) inside the
+    // square: the box of the ellipse the disc projects to, where that is tighter (an oblique
+    // square's box is up to √2 wider, and its corners hold nothing). With H = [hu hv h0], the
+    // ellipse's dual conic is C* = H·diag(1, 1, −1/R²)·Hᵀ; the vertical line x = k touches it
+    // where C*00 − 2k·C*02 + k²·C*22 = 0, and likewise for y.
+    if (rows.discRadius > 0.0f) {
+        const V inverseR2 = hn::Set(d, -1.0f / (rows.discRadius * rows.discRadius));
+        const auto dual = [&](int i, int j) {
+            return hn::MulAdd(hu[i], hu[j], hn::MulAdd(hv[i], hv[j],
+                                                       hn::Mul(hn::Mul(h0[i], h0[j]), inverseR2)));
+        };
+        const V dualWW = dual(2, 2);
+        for (int axis = 0; axis < 2; ++axis) {
+            const V dualAW = dual(axis, 2);
+            const V root =
+                hn::Sqrt(hn::NegMulAdd(dual(axis, axis), dualWW, hn::Mul(dualAW, dualAW)));
+            const V inverseWW = hn::Div(one, dualWW);
+            const V first = hn::Mul(hn::Sub(dualAW, root), inverseWW);
+            const V second = hn::Mul(hn::Add(dualAW, root), inverseWW);
+            // NaN (no real tangent) compares false and keeps the square's bound.
+            const V discLow = hn::Min(first, second);
+            const V discHigh = hn::Max(first, second);
+            low[axis] = hn::IfThenElse(hn::Gt(discLow, low[axis]), discLow, low[axis]);
+            high[axis] = hn::IfThenElse(hn::Lt(discHigh, high[axis]), discHigh, high[axis]);
+        }
+    }
     // Part of the square behind the eye: its visible part may reach any pixel.
     low[0] = hn::IfThenElse(behindEye, zero, low[0]);
     low[1] = hn::IfThenElse(behindEye, zero, low[1]);
