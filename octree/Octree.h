@@ -115,6 +115,7 @@ private:
     }
 
     Statistics build(int level, glm::u64vec3 coord);
+    Statistics buildBlock(glm::u64vec3 block);
     Statistics voxelStatistics(glm::u64vec3 voxel) const;
 
     std::shared_ptr<const ClassifiedGrid> mGrid;
