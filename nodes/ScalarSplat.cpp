@@ -120,6 +120,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
         return estimate;
     });
     const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
+    const render::detail::ClassificationCache::Builds before = mCache->builds();
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
         timed(statistics, sg::RenderPhase::Classify, [&] {
             return detail::withNodeContext(*this, [&] {
@@ -178,11 +179,15 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
             withMemoryStage("emitting splats", memory.splats, detail::kSplatMemoryAdvice, emit);
         });
     });
+    const render::detail::ClassificationCache::Builds& after = mCache->builds();
+    statistics.builds.valueRanges += after.valueRanges - before.valueRanges;
+    statistics.builds.classifications += after.classifications - before.classifications;
+    statistics.builds.octrees += after.octrees - before.octrees;
     statistics.splats += splats->size();
     sg::FrameMemory& bytes = statistics.memory;
     const volume::VectorGridPtr vectorGrid = vectors ? volume.vectorGrid() : nullptr;
     bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
-    bytes.classified += classified->memoryBytes();
+    bytes.classified += classified->memoryBytes() + mCache->valueRangeBytes();
     bytes.octree += fullResolution ? 0 : mCache->octree().memoryBytes();
     bytes.splats += splats->memoryBytes();
     result.splats = std::move(splats);

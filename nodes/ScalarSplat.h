@@ -40,7 +40,9 @@ namespace texsplat::nodes {
 ///
 /// Per frame: the scalar grid of the VolumeData (loaded on first use), classified into emission
 /// C and extinction τ per unit length (cached with its octree until the volume's grid or the
-/// transfer function changes; voxels that classify to zero make no splat), ordered for the view
+/// transfer function changes; voxels that classify to zero make no splat; the grid's block value
+/// ranges, octree::ValueRanges, are made once per grid and let a transfer-function edit skip
+/// the blocks it hides without a new data hierarchy), ordered for the view
 /// (see below), and drawn facing the eye: by RenderAction as instanced GL quads
 /// (render::SplatBatch), by FrameAction's frame on the CPU backend (render::cpu::CpuRenderer).
 /// Optical properties are per unit length of the volume's local space; a Transform above the

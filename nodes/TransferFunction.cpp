@@ -6,6 +6,7 @@
 #include "nodes/detail/NodeContext.h"
 #include "nodes/detail/TransferTable.h"
 #include "nodes/elements/TransferFunctionElement.h"
+#include "octree/ValueRanges.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/Action.h"
 #include "scenegraph/fields/ValueFormat.h"
@@ -186,13 +187,19 @@ DataScale fixedScale(const detail::TransferTable& table) {
 }
 
 // The scale `checked` gives `grid`'s values: one table throughout, so a change of the node
-// between two lookups cannot mix two tables.
+// between two lookups cannot mix two tables. With `ranges` (the grid's block value ranges), a
+// DATA range is their union instead of a scan of the grid: the same finite values.
 template <class T>
-DataScale scaleOf(const detail::TransferTable& checked, const volume::Grid<T>& grid) {
+DataScale scaleOf(const detail::TransferTable& checked, const volume::Grid<T>& grid,
+                  const octree::ValueRanges* ranges = nullptr) {
     DataScale scale = fixedScale(checked);
     switch (static_cast<RangeMode>(checked.rangeMode)) {
     case RangeMode::Data:
-        scale.range = glm::vec2(detail::valueRange(grid));
+        scale.range = glm::vec2(ranges ? ranges->blockCount() == 0
+                                             ? glm::dvec2(0.0, 1.0)
+                                             : detail::widenedRange(ranges->valueRange().x,
+                                                                    ranges->valueRange().y)
+                                       : detail::valueRange(grid));
         break;
     case RangeMode::Percentile:
         scale.range = glm::vec2(
@@ -246,6 +253,61 @@ glm::vec3 TransferFunction::color(float value, const DataScale& scale) const {
 
 glm::vec3 TransferFunction::colorAt(float t) const {
     return table()->colors(std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, 1.0f));
+}
+
+namespace {
+
+// Whether `map` is zero all over [t0, t1]: at both ends and at every control point between (the
+// map is linear between control points, so that is all of it; y >= 0 is not assumed).
+template <class Y> bool isZeroBetween(const detail::PiecewiseLinear<Y>& map, float t0, float t1) {
+    if (map(t0) != Y(0.0f) || map(t1) != Y(0.0f)) {
+        return false;
+    }
+    for (std::size_t i = 0; i < map.x.size(); ++i) {
+        if (map.x[i] >= t0 && map.x[i] <= t1 && map.y[i] != Y(0.0f)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+bool TransferFunction::isTransparentBetween(float minimum, float maximum,
+                                            const DataScale& scale) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    // normalized() does not decrease with the value, so the range's ends bound every t in it.
+    const float t0 = normalized(scale.range, minimum);
+    const float t1 = normalized(scale.range, maximum);
+    if (!(t0 <= t1) || !isZeroBetween(checked->opacities, t0, t1)) {
+        return false;
+    }
+    // With no extinction, classifyWith() gives colour * emission per unit length.
+    return checked->emission / scale.unitDistance == 0.0f ||
+           isZeroBetween(checked->colors, t0, t1);
+}
+
+std::shared_ptr<octree::ClassifiedGrid>
+TransferFunction::classify(const volume::ScalarGrid& grid,
+                           const octree::ValueRanges& ranges) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    const DataScale scale = scaleOf(*checked, grid, &ranges);
+    const std::vector<bool> visible = ranges.visibleBlocks([&](float minimum, float maximum) {
+        return !isTransparentBetween(minimum, maximum, scale);
+    });
+    const volume::GridGeometry& geometry = grid.geometry();
+    auto classified = std::make_shared<octree::ClassifiedGrid>(
+        glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
+    grid.forEachActive([&](const glm::i64vec3& index, float value) {
+        if (!ranges.isVisibleBlock(visible, glm::u64vec3(index))) {
+            return;
+        }
+        const Classification result = classifyWith(*checked, value, scale);
+        if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
+            classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
+        }
+    });
+    return classified;
 }
 
 std::shared_ptr<octree::ClassifiedGrid>

@@ -11,7 +11,8 @@ ClassificationCache::classified(const volume::ScalarGridPtr& grid,
                                 const nodes::TransferFunction& transfer) {
     ClassificationInputs inputs;
     inputs.grids.push_back(grid);
-    return classified(inputs, transfer, [&] { return transfer.classify(*grid); });
+    return classified(inputs, transfer,
+                      [&] { return transfer.classify(*grid, valueRanges(grid)); });
 }
 
 std::shared_ptr<const octree::ClassifiedGrid>
@@ -22,6 +23,7 @@ ClassificationCache::classified(const ClassificationInputs& inputs,
         mClassified.reset();
         observe(&transfer);
         mClassified = classify();
+        ++mBuilds.classifications;
         mInputs = inputs;
         mTransferChanged = false;
     }
@@ -36,8 +38,23 @@ void ClassificationCache::invalidate() {
 const octree::Octree& ClassificationCache::octree() {
     if (!mOctree) {
         mOctree = std::make_unique<octree::Octree>(mClassified);
+        ++mBuilds.octrees;
     }
     return *mOctree;
+}
+
+const octree::ValueRanges& ClassificationCache::valueRanges(const volume::ScalarGridPtr& grid) {
+    if (!mValueRanges || grid != mValueRangesGrid) {
+        mValueRanges.reset();
+        auto ranges = std::make_unique<octree::ValueRanges>(glm::u64vec3(grid->geometry().dims()));
+        grid->forEachActive([&ranges](const glm::i64vec3& index, float value) {
+            ranges->add(glm::u64vec3(index), value);
+        });
+        mValueRanges = std::move(ranges);
+        mValueRangesGrid = grid;
+        ++mBuilds.valueRanges;
+    }
+    return *mValueRanges;
 }
 
 void ClassificationCache::changed(sg::Notifier& /*subject*/, const sg::Field* /*source*/) {

@@ -3,6 +3,7 @@
 #include "nodes/volume/Grid.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/Octree.h"
+#include "octree/ValueRanges.h"
 #include "scenegraph/Observer.h"
 
 #include <glm/mat4x4.hpp>
@@ -32,9 +33,19 @@ struct ClassificationInputs {
 
 /// A splat node's classified grid and octree, kept across frames ("cache classification and
 /// the octree on the node"): rebuilt when the inputs differ from last time, when the transfer
-/// function is replaced or changes (observed), or after invalidate().
+/// function is replaced or changes (observed), or after invalidate(). A scalar grid's block value
+/// ranges (octree::ValueRanges) depend on the data alone: made once per grid, they survive every
+/// transfer-function change and let classification skip what the new function hides.
 class ClassificationCache final : public sg::Observer {
 public:
+    /// How many times each structure was made since the cache was: what a test of "a transfer
+    /// function edit needs no new data hierarchy" counts.
+    struct Builds {
+        std::uint64_t valueRanges = 0;
+        std::uint64_t classifications = 0;
+        std::uint64_t octrees = 0;
+    };
+
     /// Makes the classified grid from the inputs.
     using Classify = std::function<std::shared_ptr<const octree::ClassifiedGrid>()>;
 
@@ -55,6 +66,15 @@ public:
     /// The octree over the last classified() grid, built on first use.
     const octree::Octree& octree();
 
+    /// The block value ranges of `grid`, made on first use and kept while the grid is the same.
+    const octree::ValueRanges& valueRanges(const volume::ScalarGridPtr& grid);
+
+    /// Bytes of the value ranges held (0 before a scalar grid was classified).
+    std::uint64_t valueRangeBytes() const { return mValueRanges ? mValueRanges->memoryBytes() : 0; }
+
+    /// What was made so far.
+    const Builds& builds() const { return mBuilds; }
+
     /// Forgets the classification (the node's own fields that classification reads changed).
     void invalidate();
 
@@ -69,6 +89,9 @@ private:
     bool mTransferChanged = false;
     std::shared_ptr<const octree::ClassifiedGrid> mClassified;
     std::unique_ptr<octree::Octree> mOctree;
+    volume::ScalarGridPtr mValueRangesGrid;
+    std::unique_ptr<octree::ValueRanges> mValueRanges;
+    Builds mBuilds;
 };
 
 } // namespace texsplat::render::detail
