@@ -214,7 +214,7 @@ CheckedBench checkBenchOptions(const BenchArguments& arguments) {
 void runTransferEditBench(const BenchArguments& arguments) {
     const glm::ivec2 size = parseSizes(arguments.sizes).front();
     const std::vector<bench::TransferEditTime> rows = bench::measureTransferEdit(
-        [&arguments] { return sceneToMeasure(arguments); }, size,
+        sceneToMeasure(arguments), size,
         {0, static_cast<std::uint64_t>(arguments.transferEdit)}, arguments.threads);
     std::printf("texsplat bench --transfer-edit: %s, %dx%d, %s; wall time of the frame after "
                 "the edit (loading not counted)\n",
@@ -341,8 +341,8 @@ void addBenchCommand(CLI::App& app, int& exitCode, CommandMode mode) {
         ->add_option("--transfer-edit", arguments->transferEdit,
                      "With a SCENE: time the frame after two edits of its transfer functions "
                      "(opacities halved; the lower 30 % of the range hidden), at full resolution "
-                     "and at this many splats, against the same frame of a fresh copy of the "
-                     "scene (CPU backend)")
+                     "and at this many splats, against re-classifying the whole grid as before "
+                     "value ranges (CPU backend)")
         ->check(CLI::Range(1, 2000000000))
         ->type_name("SPLATS");
     addViewOptions(*command, arguments->framing);

@@ -5,6 +5,8 @@
 #include "nodes/VolumeData.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "octree/ClassifiedGrid.h"
+#include "octree/Octree.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/SearchAction.h"
@@ -68,62 +70,71 @@ Timed timeFrame(sg::Node& root, glm::ivec2 size, const render::cpu::CpuRenderer&
     return timed;
 }
 
-// Sets every splat node's budget and applies `edits` to every transfer function of `root`.
-void prepare(sg::Node& root, std::uint64_t maxSplats, const std::vector<const Edit*>& edits) {
-    const std::vector<nodes::ScalarSplat*> splats = nodesOf<nodes::ScalarSplat>(root);
-    const std::vector<nodes::TransferFunction*> transfers = nodesOf<nodes::TransferFunction>(root);
-    if (splats.empty() || transfers.empty()) {
-        throw DataError("bench --transfer-edit: the scene needs a TransferFunction and a splat "
-                        "node");
-    }
-    for (nodes::ScalarSplat* splat : splats) {
-        splat->maxSplats.setValue(static_cast<int>(maxSplats));
-    }
-    for (const Edit* edit : edits) {
-        for (nodes::TransferFunction* transfer : transfers) {
-            edit->apply(*transfer);
-        }
-    }
+template <class Step> double secondsOf(Step&& step) {
+    const Clock::time_point start = Clock::now();
+    step();
+    return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
-double valueRangeSeconds(sg::Node& root) {
-    const Clock::time_point start = Clock::now();
-    for (const nodes::VolumeData* volume : nodesOf<nodes::VolumeData>(root)) {
-        const volume::ScalarGridPtr grid = volume->scalarGrid();
-        octree::ValueRanges ranges(glm::u64vec3(grid->geometry().dims()));
-        grid->forEachActive([&ranges](const glm::i64vec3& index, float value) {
-            ranges.add(glm::u64vec3(index), value);
-        });
+// The first node of type T in `root`.
+template <class T> T& firstOf(sg::Node& root) {
+    const std::vector<T*> found = nodesOf<T>(root);
+    if (found.empty()) {
+        throw DataError(std::string("bench --transfer-edit: the scene has no ") +
+                        T::classType().name());
     }
-    return std::chrono::duration<double>(Clock::now() - start).count();
+    return *found.front();
 }
 
 } // namespace
 
-std::vector<TransferEditTime> measureTransferEdit(const std::function<sg::Node::Ptr()>& makeScene,
-                                                  glm::ivec2 size,
+std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, glm::ivec2 size,
                                                   const std::vector<std::uint64_t>& maxSplats,
                                                   int threads) {
     const render::cpu::CpuRenderer renderer(threads);
+    const std::vector<nodes::ScalarSplat*> splatNodes = nodesOf<nodes::ScalarSplat>(*scene);
+    nodes::TransferFunction& transfer = firstOf<nodes::TransferFunction>(*scene);
+    const nodes::VolumeData& volume = firstOf<nodes::VolumeData>(*scene);
+    if (splatNodes.empty()) {
+        throw DataError("bench --transfer-edit: the scene has no splat node");
+    }
+    const std::vector<float> opacities = transfer.opacities.values();
+    const glm::vec2 range = transfer.range.value();
+    const int rangeMode = transfer.rangeMode.value();
     std::vector<TransferEditTime> rows;
     for (const std::uint64_t budget : maxSplats) {
         for (const Edit& edit : kEdits) {
-            const sg::Node::Ptr scene = makeScene();
-            prepare(*scene, budget, {});
-            timeFrame(*scene, size, renderer); // loads, classifies, builds what the budget needs
-            prepare(*scene, budget, {&edit});
+            for (nodes::ScalarSplat* splat : splatNodes) {
+                splat->maxSplats.setValue(static_cast<int>(budget));
+            }
+            transfer.opacities.setValue(opacities);
+            transfer.range.setValue(range);
+            transfer.rangeMode.setValue(rangeMode);
+            timeFrame(*scene, size, renderer); // classifies, builds what the budget needs
+            edit.apply(transfer);
             const Timed edited = timeFrame(*scene, size, renderer);
-            // A fresh copy while `scene` holds the grids: they are shared, not loaded again.
-            const sg::Node::Ptr fresh = makeScene();
-            prepare(*fresh, budget, {&edit});
             TransferEditTime row;
             row.edit = edit.name;
             row.maxSplats = budget;
             row.splats = edited.statistics.splats;
             row.editSeconds = edited.seconds;
             row.editValueRanges = edited.statistics.builds.valueRanges;
-            row.valueRangeSeconds = valueRangeSeconds(*fresh);
-            row.rebuildSeconds = timeFrame(*fresh, size, renderer).seconds;
+            const volume::ScalarGridPtr grid = volume.scalarGrid();
+            row.reclassifySeconds =
+                edited.seconds - edited.statistics.time(sg::RenderPhase::Classify) +
+                secondsOf([&] {
+                    const std::shared_ptr<const octree::ClassifiedGrid> classified =
+                        transfer.classify(*grid);
+                    if (budget > 0) {
+                        const octree::Octree octree(classified);
+                    }
+                });
+            row.valueRangeSeconds = secondsOf([&] {
+                octree::ValueRanges ranges(glm::u64vec3(grid->geometry().dims()));
+                grid->forEachActive([&ranges](const glm::i64vec3& index, float value) {
+                    ranges.add(glm::u64vec3(index), value);
+                });
+            });
             rows.push_back(row);
         }
     }
@@ -131,16 +142,17 @@ std::vector<TransferEditTime> measureTransferEdit(const std::function<sg::Node::
 }
 
 std::string transferEditTable(const std::vector<TransferEditTime>& rows) {
-    std::string table = "edit              budget     splats   after edit   fresh nodes "
-                        "(value ranges)   fresh/edit  ranges rebuilt\n";
+    std::string table = "edit              budget     splats   after edit   re-classify all   "
+                        "ratio   value ranges (once)  rebuilt\n";
     for (const TransferEditTime& row : rows) {
         char line[256];
         std::snprintf(line, sizeof line,
-                      "%-16s %7s %10zu   %8.3f s   %8.3f s (%8.3f s)   %8.2f   %zu\n",
+                      "%-16s %7s %10zu   %8.3f s   %13.3f s   %5.2f   %16.3f s   %zu\n",
                       row.edit.c_str(),
                       row.maxSplats == 0 ? "full" : std::to_string(row.maxSplats).c_str(),
-                      row.splats, row.editSeconds, row.rebuildSeconds, row.valueRangeSeconds,
-                      row.rebuildSeconds / row.editSeconds, row.editValueRanges);
+                      row.splats, row.editSeconds, row.reclassifySeconds,
+                      row.reclassifySeconds / row.editSeconds, row.valueRangeSeconds,
+                      row.editValueRanges);
         table += line;
     }
     return table;
