@@ -164,35 +164,44 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
 // the same order, the same sums in the same order, so the same bits) but read straight from the
 // block's storage, with no per-voxel Statistics: most of the build's time is spent here.
 Octree::Statistics Octree::buildBlock(glm::u64vec3 block) {
-    const glm::u64vec3 dims = mGrid->dims();
-    const ClassifiedGrid::StorageIndex first = mGrid->blockStorage(block);
-    const auto inGrid = [&dims](glm::u64vec3 voxel) {
-        return voxel.x < dims.x && voxel.y < dims.y && voxel.z < dims.z;
+    const std::array<glm::vec4, ClassifiedGrid::kBlockVoxels>& voxels =
+        mGrid->storedBlock(mGrid->blockStorage(block));
+    // Voxels of the block inside the grid, per axis (fewer at the grid's far faces).
+    const glm::u64vec3 begin = block * ClassifiedGrid::kBlockSize;
+    const glm::u64vec3 extent =
+        glm::min(mGrid->dims() - begin, glm::u64vec3(ClassifiedGrid::kBlockSize));
+    const auto offset = [](int octant, std::uint64_t scale) {
+        const auto bit = static_cast<unsigned>(octant);
+        return glm::u64vec3(bit & 1u, (bit >> 1) & 1u, (bit >> 2) & 1u) * scale;
+    };
+    const auto isInside = [&extent](glm::u64vec3 voxel) {
+        return voxel.x < extent.x && voxel.y < extent.y && voxel.z < extent.z;
     };
     Statistics statistics;
     std::array<OctreeNode, 8> quarterRecords; // level 2
     int quarterCount = 0;
     for (int quarterOctant = 0; quarterOctant < 8; ++quarterOctant) {
-        const glm::u64vec3 quarter = childCoord(block, quarterOctant);
-        if (!inGrid(quarter << glm::u64vec3(2))) {
+        const glm::u64vec3 quarter = offset(quarterOctant, 4);
+        if (!isInside(quarter)) {
             continue;
         }
         Statistics quarterStatistics;
         std::array<OctreeNode, 8> pairRecords; // level 1
         int pairCount = 0;
         for (int pairOctant = 0; pairOctant < 8; ++pairOctant) {
-            const glm::u64vec3 pair = childCoord(quarter, pairOctant);
-            if (!inGrid(pair << glm::u64vec3(1))) {
+            const glm::u64vec3 pair = quarter + offset(pairOctant, 2);
+            if (!isInside(pair)) {
                 continue;
             }
             Statistics pairStatistics;
             for (int voxelOctant = 0; voxelOctant < 8; ++voxelOctant) {
-                const glm::u64vec3 voxel = childCoord(pair, voxelOctant);
-                if (!inGrid(voxel)) {
+                const glm::u64vec3 voxel = pair + offset(voxelOctant, 1);
+                if (!isInside(voxel)) {
                     continue;
                 }
-                const glm::vec4 value =
-                    mGrid->storedVoxel(first + ClassifiedGrid::offsetInBlock(voxel));
+                const glm::vec4& value = voxels[static_cast<std::size_t>(
+                    voxel.x + ClassifiedGrid::kBlockSize *
+                                  (voxel.y + ClassifiedGrid::kBlockSize * voxel.z))];
                 // Statistics::merge() of voxelStatistics(voxel), spelled out.
                 pairStatistics.minimum =
                     pairStatistics.count == 0 ? value : glm::min(pairStatistics.minimum, value);
