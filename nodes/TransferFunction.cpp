@@ -287,6 +287,31 @@ bool TransferFunction::isTransparentBetween(float minimum, float maximum,
            isZeroBetween(checked->colors, t0, t1);
 }
 
+namespace {
+
+// Classifies the non-empty voxels of `grid` for which `isWanted(ijk, value)` holds.
+template <class IsWanted>
+std::shared_ptr<octree::ClassifiedGrid> classifyVoxels(const detail::TransferTable& checked,
+                                                       const DataScale& scale,
+                                                       const volume::ScalarGrid& grid,
+                                                       IsWanted&& isWanted) {
+    const volume::GridGeometry& geometry = grid.geometry();
+    auto classified = std::make_shared<octree::ClassifiedGrid>(
+        glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
+    grid.forEachActive([&](const glm::i64vec3& index, float value) {
+        if (!isWanted(glm::u64vec3(index), value)) {
+            return;
+        }
+        const Classification result = classifyWith(checked, value, scale);
+        if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
+            classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
+        }
+    });
+    return classified;
+}
+
+} // namespace
+
 std::shared_ptr<octree::ClassifiedGrid>
 TransferFunction::classify(const volume::ScalarGrid& grid,
                            const octree::ValueRanges& ranges) const {
@@ -295,35 +320,27 @@ TransferFunction::classify(const volume::ScalarGrid& grid,
     const std::vector<bool> visible = ranges.visibleBlocks([&](float minimum, float maximum) {
         return !isTransparentBetween(minimum, maximum, scale);
     });
-    const volume::GridGeometry& geometry = grid.geometry();
-    auto classified = std::make_shared<octree::ClassifiedGrid>(
-        glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
-    grid.forEachActive([&](const glm::i64vec3& index, float value) {
-        if (!ranges.isVisibleBlock(visible, glm::u64vec3(index))) {
-            return;
-        }
-        const Classification result = classifyWith(*checked, value, scale);
-        if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
-            classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
-        }
+    return classifyVoxels(*checked, scale, grid, [&](glm::u64vec3 ijk, float) {
+        return ranges.isVisibleBlock(visible, ijk);
     });
-    return classified;
+}
+
+std::shared_ptr<octree::ClassifiedGrid>
+TransferFunction::classifyRecording(const volume::ScalarGrid& grid,
+                                    octree::ValueRanges& ranges) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    return classifyVoxels(*checked, scaleOf(*checked, grid), grid,
+                          [&ranges](glm::u64vec3 ijk, float value) {
+                              ranges.add(ijk, value);
+                              return true;
+                          });
 }
 
 std::shared_ptr<octree::ClassifiedGrid>
 TransferFunction::classify(const volume::ScalarGrid& grid) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
-    const DataScale scale = scaleOf(*checked, grid);
-    const volume::GridGeometry& geometry = grid.geometry();
-    auto classified = std::make_shared<octree::ClassifiedGrid>(
-        glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
-    grid.forEachActive([&](const glm::i64vec3& index, float value) {
-        const Classification result = classifyWith(*checked, value, scale);
-        if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
-            classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
-        }
-    });
-    return classified;
+    return classifyVoxels(*checked, scaleOf(*checked, grid), grid,
+                          [](glm::u64vec3, float) { return true; });
 }
 
 void TransferFunction::doAction(sg::Action& action) {

@@ -187,6 +187,12 @@ public:
     /// @throws DataError when the fields are invalid.
     std::shared_ptr<octree::ClassifiedGrid> classify(const volume::ScalarGrid& grid,
                                                      const octree::ValueRanges& ranges) const;
+    /// @brief classify(grid), adding every non-empty voxel's value to `ranges` (new, for a grid
+    /// of `grid`'s dimensions) in the same pass: how a grid's first classification makes the
+    /// value ranges that later ones read.
+    /// @throws DataError when the fields are invalid.
+    std::shared_ptr<octree::ClassifiedGrid> classifyRecording(const volume::ScalarGrid& grid,
+                                                              octree::ValueRanges& ranges) const;
     /// @brief Whether every value in [`minimum`, `maximum`] classifies over `scale` to no
     /// emission and no extinction. Exact where it answers true (never true for a range holding a
     /// visible value); it may answer false for a range whose values are all transparent only

@@ -82,10 +82,19 @@ TEST_F(TransferFunctionEdit, aRangeIsTransparentOnlyWhereEveryValueInItIs) {
 // steps, glow, and a DATA range (read from the ranges instead of a scan): equal voxel for voxel.
 TEST_F(TransferFunctionEdit, classifyingWithTheValueRangesGivesTheSameGrid) {
     const auto grid = twoBalls();
-    octree::ValueRanges ranges(glm::u64vec3(64));
+    octree::ValueRanges added(glm::u64vec3(64));
     grid->forEachActive([&](const glm::i64vec3& index, float value) {
-        ranges.add(glm::u64vec3(index), value);
+        added.add(glm::u64vec3(index), value);
     });
+    // A grid's first classification records the ranges on the way.
+    octree::ValueRanges ranges(glm::u64vec3(64));
+    const auto first = ramp({0.0f, 1.0f}, {0.0f, 2.0f})->classifyRecording(*grid, ranges);
+    EXPECT_EQ(ranges.blockCount(), added.blockCount());
+    EXPECT_EQ(ranges.valueRange(), added.valueRange());
+    const auto straddles = [](float low, float high) { return low < 0.05f && high > 0.1f; };
+    EXPECT_EQ(ranges.visibleBlocks(straddles), added.visibleBlocks(straddles));
+    EXPECT_EQ(first->nonEmptyVoxelCount(),
+              ramp({0.0f, 1.0f}, {0.0f, 2.0f})->classify(*grid)->nonEmptyVoxelCount());
     std::vector<TransferFunction::Ptr> transfers{
         ramp({0.0f, 1.0f}, {0.0f, 2.0f}),
         ramp({0.0f, 0.25f, 1.0f}, {0.0f, 0.0f, 3.0f}),

@@ -11,8 +11,21 @@ ClassificationCache::classified(const volume::ScalarGridPtr& grid,
                                 const nodes::TransferFunction& transfer) {
     ClassificationInputs inputs;
     inputs.grids.push_back(grid);
-    return classified(inputs, transfer,
-                      [&] { return transfer.classify(*grid, valueRanges(grid)); });
+    return classified(inputs, transfer, [&]() -> std::shared_ptr<const octree::ClassifiedGrid> {
+        if (mValueRanges && grid == mValueRangesGrid) {
+            return transfer.classify(*grid, *mValueRanges);
+        }
+        // The grid's first classification makes its value ranges in the same pass.
+        mValueRanges.reset();
+        auto ranges =
+            std::make_unique<octree::ValueRanges>(glm::u64vec3(grid->geometry().dims()));
+        std::shared_ptr<const octree::ClassifiedGrid> result =
+            transfer.classifyRecording(*grid, *ranges);
+        mValueRanges = std::move(ranges);
+        mValueRangesGrid = grid;
+        ++mBuilds.valueRanges;
+        return result;
+    });
 }
 
 std::shared_ptr<const octree::ClassifiedGrid>
@@ -41,20 +54,6 @@ const octree::Octree& ClassificationCache::octree() {
         ++mBuilds.octrees;
     }
     return *mOctree;
-}
-
-const octree::ValueRanges& ClassificationCache::valueRanges(const volume::ScalarGridPtr& grid) {
-    if (!mValueRanges || grid != mValueRangesGrid) {
-        mValueRanges.reset();
-        auto ranges = std::make_unique<octree::ValueRanges>(glm::u64vec3(grid->geometry().dims()));
-        grid->forEachActive([&ranges](const glm::i64vec3& index, float value) {
-            ranges->add(glm::u64vec3(index), value);
-        });
-        mValueRanges = std::move(ranges);
-        mValueRangesGrid = grid;
-        ++mBuilds.valueRanges;
-    }
-    return *mValueRanges;
 }
 
 void ClassificationCache::changed(sg::Notifier& /*subject*/, const sg::Field* /*source*/) {

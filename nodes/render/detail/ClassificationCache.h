@@ -66,11 +66,10 @@ public:
     /// The octree over the last classified() grid, built on first use.
     const octree::Octree& octree();
 
-    /// The block value ranges of `grid`, made on first use and kept while the grid is the same.
-    const octree::ValueRanges& valueRanges(const volume::ScalarGridPtr& grid);
-
     /// Bytes of the value ranges held (0 before a scalar grid was classified).
-    std::uint64_t valueRangeBytes() const { return mValueRanges ? mValueRanges->memoryBytes() : 0; }
+    std::uint64_t valueRangeBytes() const {
+        return mValueRanges ? mValueRanges->memoryBytes() : 0;
+    }
 
     /// What was made so far.
     const Builds& builds() const { return mBuilds; }
