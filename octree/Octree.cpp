@@ -65,6 +65,17 @@ namespace {
 // Levels above 62 would overflow the 64-bit voxel coordinates of a node's block.
 [[maybe_unused]] constexpr int kMaxLevel = 62; // only asserted
 
+// Nodes of `level` along each axis of a grid of `dims` voxels.
+glm::u64vec3 nodeCounts(glm::u64vec3 dims, int level) {
+    return (dims + ((std::uint64_t{1} << level) - 1)) >> glm::u64vec3(level);
+}
+
+// Linear index of `node` among the nodes of `level`.
+std::size_t nodeIndex(glm::u64vec3 dims, int level, glm::u64vec3 node) {
+    const glm::u64vec3 count = nodeCounts(dims, level);
+    return static_cast<std::size_t>(node.x + count.x * (node.y + count.y * node.z));
+}
+
 } // namespace
 
 Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(grid)) {
@@ -77,7 +88,7 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
         ++mRootLevel;
     }
     TEXSPLAT_ASSERT(mRootLevel <= kMaxLevel, "Octree::Octree(): grid too large for 64 bits");
-    const Statistics root = build(mRootLevel, glm::u64vec3(0));
+    const Statistics root = build(mRootLevel, glm::u64vec3(0), occupancy());
     mIsEmpty = root.record.nonEmptyCount == 0;
     mValueScale = std::max({root.maximum.r, root.maximum.g, root.maximum.b, root.maximum.a});
     if (mRootLevel > 0 && !mIsEmpty) {
@@ -113,18 +124,42 @@ Octree::Statistics Octree::voxelStatistics(glm::u64vec3 voxel) const {
     return statistics;
 }
 
+Octree::Occupancy Octree::occupancy() const {
+    const glm::u64vec3 dims = mGrid->dims();
+    Occupancy occupied(static_cast<std::size_t>(mRootLevel + 1));
+    for (int level = ClassifiedGrid::kBlockLevel + 1; level <= mRootLevel; ++level) {
+        const glm::u64vec3 count = nodeCounts(dims, level);
+        occupied[static_cast<std::size_t>(level)].assign(
+            static_cast<std::size_t>(count.x * count.y * count.z), false);
+    }
+    mGrid->forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex) {
+        for (int level = ClassifiedGrid::kBlockLevel + 1; level <= mRootLevel; ++level) {
+            const glm::u64vec3 node = block >> glm::u64vec3(level - ClassifiedGrid::kBlockLevel);
+            occupied[static_cast<std::size_t>(level)][nodeIndex(dims, level, node)] = true;
+        }
+    });
+    return occupied;
+}
+
 // Depth-first and post-order: a node's children are finished (and their own subtrees stored)
 // before the node appends its non-empty children contiguously, so siblings stay adjacent.
-Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
+Octree::Statistics Octree::build(int level, glm::u64vec3 coord, const Occupancy& occupied) {
     if (level == 0) {
         return voxelStatistics(coord);
     }
     const glm::u64vec3 dims = mGrid->dims();
     Statistics statistics;
-    if (level == ClassifiedGrid::kBlockLevel && !mGrid->hasBlock(coord)) {
-        // An unallocated block: its voxels are empty, and only their number enters the mean.
+    const bool isEmpty =
+        level == ClassifiedGrid::kBlockLevel
+            ? !mGrid->hasBlock(coord)
+            : level > ClassifiedGrid::kBlockLevel &&
+                  !occupied[static_cast<std::size_t>(level)][nodeIndex(dims, level, coord)];
+    if (isEmpty) {
+        // No allocated block below: its voxels are empty, and only their number enters the mean
+        // (what merging its empty children one by one gives: sums and bounds stay 0).
         const glm::u64vec3 begin = coord << glm::u64vec3(level);
-        const glm::u64vec3 extent = glm::min(begin + ClassifiedGrid::kBlockSize, dims) - begin;
+        const glm::u64vec3 end = glm::min((coord + std::uint64_t{1}) << glm::u64vec3(level), dims);
+        const glm::u64vec3 extent = end - begin;
         statistics.count = extent.x * extent.y * extent.z;
         return statistics;
     }
@@ -140,7 +175,7 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
         if (begin.x >= dims.x || begin.y >= dims.y || begin.z >= dims.z) {
             continue;
         }
-        const Statistics childStatistics = build(level - 1, child);
+        const Statistics childStatistics = build(level - 1, child, occupied);
         statistics.merge(childStatistics);
         if (childStatistics.record.nonEmptyCount > 0) {
             statistics.record.childMask |= static_cast<std::uint8_t>(1u << octant);
@@ -215,18 +250,19 @@ Octree::Statistics Octree::buildBlock(glm::u64vec3 block) {
                         static_cast<std::uint8_t>(1u << voxelOctant);
                 }
             }
-            pairStatistics.finish();
             quarterStatistics.merge(pairStatistics);
             if (pairStatistics.record.nonEmptyCount > 0) {
+                // An empty pair gets no record, so its mean and error are never needed.
+                pairStatistics.finish();
                 quarterStatistics.record.childMask |= static_cast<std::uint8_t>(1u << pairOctant);
                 pairRecords[static_cast<std::size_t>(pairCount++)] = pairStatistics.record;
             }
         }
         quarterStatistics.record.firstChild = mNodes.size();
         mNodes.insert(mNodes.end(), pairRecords.begin(), pairRecords.begin() + pairCount);
-        quarterStatistics.finish();
         statistics.merge(quarterStatistics);
         if (quarterStatistics.record.nonEmptyCount > 0) {
+            quarterStatistics.finish();
             statistics.record.childMask |= static_cast<std::uint8_t>(1u << quarterOctant);
             quarterRecords[static_cast<std::size_t>(quarterCount++)] = quarterStatistics.record;
         }

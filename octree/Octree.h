@@ -114,7 +114,10 @@ private:
                glm::u64vec3(bit & 1u, (bit >> 1) & 1u, (bit >> 2) & 1u);
     }
 
-    Statistics build(int level, glm::u64vec3 coord);
+    // Per level above the blocks (index: level), whether each node holds an allocated block.
+    using Occupancy = std::vector<std::vector<bool>>;
+    Occupancy occupancy() const;
+    Statistics build(int level, glm::u64vec3 coord, const Occupancy& occupied);
     Statistics buildBlock(glm::u64vec3 block);
     Statistics voxelStatistics(glm::u64vec3 voxel) const;
 
