@@ -195,11 +195,14 @@ DataScale scaleOf(const detail::TransferTable& checked, const volume::Grid<T>& g
     DataScale scale = fixedScale(checked);
     switch (static_cast<RangeMode>(checked.rangeMode)) {
     case RangeMode::Data:
-        scale.range = glm::vec2(ranges ? ranges->blockCount() == 0
-                                             ? glm::dvec2(0.0, 1.0)
-                                             : detail::widenedRange(ranges->valueRange().x,
-                                                                    ranges->valueRange().y)
-                                       : detail::valueRange(grid));
+        if (!ranges) {
+            scale.range = glm::vec2(detail::valueRange(grid));
+        } else if (ranges->blockCount() == 0) {
+            scale.range = glm::vec2(0.0f, 1.0f);
+        } else {
+            const glm::vec2 values = ranges->valueRange();
+            scale.range = glm::vec2(detail::widenedRange(values.x, values.y));
+        }
         break;
     case RangeMode::Percentile:
         scale.range = glm::vec2(

@@ -3,6 +3,7 @@
 #include "octree/ClassifiedGrid.h"
 #include "scenegraph/Error.h"
 
+#include <algorithm>
 #include <limits>
 #include <string>
 
@@ -17,6 +18,17 @@ ValueRanges::ValueRanges(glm::u64vec3 dims)
                         " blocks exceed the addressable memory");
     }
     mSlots.assign(static_cast<std::size_t>(blocks), kNoBlock);
+}
+
+glm::vec2 ValueRanges::valueRange() const {
+    if (mRanges.empty()) {
+        return glm::vec2(0.0f);
+    }
+    glm::vec2 range = mRanges.front();
+    for (const glm::vec2& block : mRanges) {
+        range = glm::vec2(std::min(range.x, block.x), std::max(range.y, block.y));
+    }
+    return range;
 }
 
 } // namespace texsplat::octree

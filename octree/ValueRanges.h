@@ -32,22 +32,23 @@ public:
     /// finite value of a non-empty voxel.
     void add(glm::u64vec3 ijk, float value) {
         const std::size_t block = blockIndex(ijk);
-        std::uint32_t& slot = mSlots[block];
-        if (slot == kNoBlock) {
-            slot = static_cast<std::uint32_t>(mRanges.size());
-            mRanges.emplace_back(value, value);
+        // Grids are walked block by block: the previous voxel's block is the likely one.
+        if (block != mLastBlock) {
+            std::uint32_t& slot = mSlots[block];
+            if (slot == kNoBlock) {
+                slot = static_cast<std::uint32_t>(mRanges.size());
+                mRanges.emplace_back(value, value);
+            }
+            mLastBlock = block;
+            mLastSlot = slot;
         }
-        glm::vec2& range = mRanges[slot];
+        glm::vec2& range = mRanges[mLastSlot];
         range.x = value < range.x ? value : range.x;
         range.y = value > range.y ? value : range.y;
-        mRange.x = value < mRange.x ? value : mRange.x;
-        mRange.y = value > mRange.y ? value : mRange.y;
     }
 
-    /// @brief The smallest and largest value added (0, 0 when none was).
-    [[nodiscard]] glm::vec2 valueRange() const {
-        return mRanges.empty() ? glm::vec2(0.0f) : mRange;
-    }
+    /// @brief The smallest and largest value added (0, 0 when none was), over all blocks.
+    [[nodiscard]] glm::vec2 valueRange() const;
 
     /// @brief Number of blocks holding a value.
     [[nodiscard]] std::size_t blockCount() const { return mRanges.size(); }
@@ -91,8 +92,8 @@ private:
     glm::u64vec3 mBlockDims;
     std::vector<std::uint32_t> mSlots; // per block of the box: its slot in mRanges, or kNoBlock
     std::vector<glm::vec2> mRanges;    // (minimum, maximum) per block holding a value
-    glm::vec2 mRange{std::numeric_limits<float>::infinity(),
-                     -std::numeric_limits<float>::infinity()}; // over all blocks
+    std::size_t mLastBlock = std::numeric_limits<std::size_t>::max(); // add()'s last block
+    std::uint32_t mLastSlot = kNoBlock;
 };
 
 } // namespace texsplat::octree
