@@ -25,7 +25,8 @@ namespace texsplat::octree {
 /// holding at least one non-empty voxel get a record (about 1/7 of the voxel count for dense
 /// data); voxels are read from the shared grid, and empty subtrees have no nodes at all. The
 /// nodes of level 3 are the grid's 8³ blocks: the build skips the blocks the grid did not
-/// allocate, so its time follows the allocated blocks (plus one step per 512 voxels of the box).
+/// allocate, and the nodes above them that hold none, so its time follows the allocated blocks
+/// (plus an occupancy bit per 4096 voxels of the box).
 class Octree {
 public:
     /// @brief Builds the hierarchy over @p grid in O(voxels) time.

@@ -2,6 +2,7 @@
 
 #include "octree/ClassifiedGrid.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 
 #include <algorithm>
 #include <limits>
@@ -18,6 +19,11 @@ ValueRanges::ValueRanges(glm::u64vec3 dims)
                         " blocks exceed the addressable memory");
     }
     mSlots.assign(static_cast<std::size_t>(blocks), kNoBlock);
+}
+
+std::uint64_t ValueRanges::memoryBytesFor(glm::u64vec3 dims, std::uint64_t blocks) {
+    return byteSum(byteProduct(ClassifiedGrid::boxBlockCount(dims), sizeof(std::uint32_t)),
+                   byteProduct(blocks, sizeof(glm::vec2)));
 }
 
 glm::vec2 ValueRanges::valueRange() const {

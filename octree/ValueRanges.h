@@ -72,6 +72,11 @@ public:
         return slot != kNoBlock && visible[slot];
     }
 
+    /// @brief What the value ranges of a grid of @p dims with @p blocks blocks holding a value
+    /// take (memoryBytes() without the growth reserve), saturating at the largest uint64: for an
+    /// estimate before classifying.
+    [[nodiscard]] static std::uint64_t memoryBytesFor(glm::u64vec3 dims, std::uint64_t blocks);
+
     /// @brief Bytes held.
     [[nodiscard]] std::uint64_t memoryBytes() const {
         return mSlots.capacity() * sizeof(std::uint32_t) + mRanges.capacity() * sizeof(glm::vec2);
