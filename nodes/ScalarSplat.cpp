@@ -99,8 +99,10 @@ ScalarSplat::renderInputs(sg::State& state) const {
     return {*volume, *transfer};
 }
 
-render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::CameraView& camera,
+render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::CameraView& camera,
                                              sg::RenderStatistics& statistics) {
+    sg::State& state = action.state();
+    mCache->setWorkProgress(action.workProgress());
     const auto inputs = renderInputs(state);
     const VolumeData& volume = inputs.first;
     const TransferFunction& transfer = inputs.second;
@@ -205,7 +207,7 @@ std::shared_ptr<const render::SplatFootprint> ScalarSplat::footprint() {
 #ifdef TEXSPLAT_WITH_GL
 void ScalarSplat::render(sg::RenderAction& action) {
     const render::CameraView camera = render::CameraView::current(action, *this);
-    const render::FrameSplats splats = frameSplats(action.state(), camera, action.statistics());
+    const render::FrameSplats splats = frameSplats(action, camera, action.statistics());
     TEXSPLAT_ASSERT(gl::Context::current(), "ScalarSplat::render(): no current GL context");
     const std::uint64_t context = gl::Context::current()->serial();
     if (!mBatch || mBatchContext != context) {
@@ -237,7 +239,7 @@ void ScalarSplat::render(sg::RenderAction& action) {
 void ScalarSplat::collectFrame(render::FrameAction& action) {
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
-    action.frame().splats.push_back(frameSplats(action.state(), camera, action.statistics()));
+    action.frame().splats.push_back(frameSplats(action, camera, action.statistics()));
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {
@@ -253,6 +255,7 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
     const volume::ScalarGridPtr grid = volume.scalarGrid();
+    mCache->setWorkProgress(action.workProgress());
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
         detail::withNodeContext(*this, [&] {
             const detail::SplatMemory memory = detail::estimateSplatMemory(volume, false, false, 0);

@@ -151,8 +151,9 @@ private:
     std::pair<const VolumeData&, const TransferFunction&> renderInputs(sg::State& state) const;
 
     /// @brief This frame's splats for `camera`: classified (cached), ordered and emitted as the
-    /// fields say, the times added to `statistics`. What every backend draws.
-    render::FrameSplats frameSplats(sg::State& state, const render::CameraView& camera,
+    /// fields say, the times added to `statistics`; classification and the octree build report
+    /// to `action`'s work progress, which may cancel them. What every backend draws.
+    render::FrameSplats frameSplats(sg::Action& action, const render::CameraView& camera,
                                     sg::RenderStatistics& statistics);
 
     /// @brief The footprint for the current fields, made once until a shaping field changes.

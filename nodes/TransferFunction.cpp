@@ -292,16 +292,29 @@ bool TransferFunction::isTransparentBetween(float minimum, float maximum,
 
 namespace {
 
-// Classifies the non-empty voxels of `grid` for which `isWanted(ijk, value)` holds.
+constexpr const char* kClassifyStep = "classifying";
+// One progress report per this many voxels walked.
+constexpr std::uint64_t kVoxelsPerReport = std::uint64_t{1} << 20;
+
+// Classifies the non-empty voxels of `grid` for which `isWanted(ijk, value)` holds, telling
+// `progress` the fraction of the grid's stored voxels walked.
 template <class IsWanted>
-std::shared_ptr<octree::ClassifiedGrid> classifyVoxels(const detail::TransferTable& checked,
-                                                       const DataScale& scale,
-                                                       const volume::ScalarGrid& grid,
-                                                       IsWanted&& isWanted) {
+std::shared_ptr<octree::ClassifiedGrid>
+classifyVoxels(const detail::TransferTable& checked, const DataScale& scale,
+               const volume::ScalarGrid& grid, const sg::WorkProgress& progress,
+               IsWanted&& isWanted) {
     const volume::GridGeometry& geometry = grid.geometry();
     auto classified = std::make_shared<octree::ClassifiedGrid>(
         glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
+    const double stored =
+        static_cast<double>(std::max<std::uint64_t>(grid.storedVoxelCount(), 1));
+    std::uint64_t walked = 0;
+    sg::reportWork(progress, kClassifyStep, 0.0);
     grid.forEachActive([&](const glm::i64vec3& index, float value) {
+        if (++walked % kVoxelsPerReport == 0) {
+            sg::reportWork(progress, kClassifyStep,
+                           std::min(static_cast<double>(walked) / stored, 1.0));
+        }
         if (!isWanted(glm::u64vec3(index), value)) {
             return;
         }
@@ -310,29 +323,30 @@ std::shared_ptr<octree::ClassifiedGrid> classifyVoxels(const detail::TransferTab
             classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
         }
     });
+    sg::reportWork(progress, kClassifyStep, 1.0);
     return classified;
 }
 
 } // namespace
 
 std::shared_ptr<octree::ClassifiedGrid>
-TransferFunction::classify(const volume::ScalarGrid& grid,
-                           const octree::ValueRanges& ranges) const {
+TransferFunction::classify(const volume::ScalarGrid& grid, const octree::ValueRanges& ranges,
+                           const sg::WorkProgress& progress) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
     const DataScale scale = scaleOf(*checked, grid, &ranges);
     const std::vector<bool> visible = ranges.visibleBlocks([&](float minimum, float maximum) {
         return !isTransparentBetween(minimum, maximum, scale);
     });
-    return classifyVoxels(*checked, scale, grid, [&](glm::u64vec3 ijk, float) {
+    return classifyVoxels(*checked, scale, grid, progress, [&](glm::u64vec3 ijk, float) {
         return ranges.isVisibleBlock(visible, ijk);
     });
 }
 
 std::shared_ptr<octree::ClassifiedGrid>
-TransferFunction::classifyRecording(const volume::ScalarGrid& grid,
-                                    octree::ValueRanges& ranges) const {
+TransferFunction::classifyRecording(const volume::ScalarGrid& grid, octree::ValueRanges& ranges,
+                                    const sg::WorkProgress& progress) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
-    return classifyVoxels(*checked, scaleOf(*checked, grid), grid,
+    return classifyVoxels(*checked, scaleOf(*checked, grid), grid, progress,
                           [&ranges](glm::u64vec3 ijk, float value) {
                               ranges.add(ijk, value);
                               return true;
@@ -342,7 +356,7 @@ TransferFunction::classifyRecording(const volume::ScalarGrid& grid,
 std::shared_ptr<octree::ClassifiedGrid>
 TransferFunction::classify(const volume::ScalarGrid& grid) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
-    return classifyVoxels(*checked, scaleOf(*checked, grid), grid,
+    return classifyVoxels(*checked, scaleOf(*checked, grid), grid, {},
                           [](glm::u64vec3, float) { return true; });
 }
 

@@ -62,6 +62,10 @@ struct Octree::Statistics {
 
 namespace {
 
+constexpr const char* kBuildStep = "building the octree";
+// Reports are cheap but not free: one per this many allocated blocks (2 M voxels).
+constexpr std::size_t kBlocksPerReport = 4096;
+
 // Levels above 62 would overflow the 64-bit voxel coordinates of a node's block.
 [[maybe_unused]] constexpr int kMaxLevel = 62; // only asserted
 
@@ -78,7 +82,8 @@ std::size_t nodeIndex(glm::u64vec3 dims, int level, glm::u64vec3 node) {
 
 } // namespace
 
-Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(grid)) {
+Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid, const sg::WorkProgress& progress)
+    : mGrid(std::move(grid)) {
     if (!mGrid) {
         throw DataError("Octree: no grid to build from");
     }
@@ -88,7 +93,9 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
         ++mRootLevel;
     }
     TEXSPLAT_ASSERT(mRootLevel <= kMaxLevel, "Octree::Octree(): grid too large for 64 bits");
-    const Statistics root = build(mRootLevel, glm::u64vec3(0), occupancy());
+    BuildProgress built{progress, mGrid->blockCount()};
+    sg::reportWork(progress, kBuildStep, 0.0);
+    const Statistics root = build(mRootLevel, glm::u64vec3(0), occupancy(), built);
     mIsEmpty = root.record.nonEmptyCount == 0;
     mValueScale = std::max({root.maximum.r, root.maximum.g, root.maximum.b, root.maximum.a});
     if (mRootLevel > 0 && !mIsEmpty) {
@@ -99,6 +106,7 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
     }
     mNodes.shrink_to_fit();
     mMeanVectors.shrink_to_fit();
+    sg::reportWork(progress, kBuildStep, 1.0);
 }
 
 Octree::Statistics Octree::voxelStatistics(glm::u64vec3 voxel) const {
@@ -143,7 +151,8 @@ Octree::Occupancy Octree::occupancy() const {
 
 // Depth-first and post-order: a node's children are finished (and their own subtrees stored)
 // before the node appends its non-empty children contiguously, so siblings stay adjacent.
-Octree::Statistics Octree::build(int level, glm::u64vec3 coord, const Occupancy& occupied) {
+Octree::Statistics Octree::build(int level, glm::u64vec3 coord, const Occupancy& occupied,
+                                 BuildProgress& progress) {
     if (level == 0) {
         return voxelStatistics(coord);
     }
@@ -163,6 +172,11 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord, const Occupancy&
         statistics.count = extent.x * extent.y * extent.z;
         return statistics;
     }
+    if (level == ClassifiedGrid::kBlockLevel &&
+        ++progress.done % kBlocksPerReport == 0) {
+        sg::reportWork(progress.progress, kBuildStep,
+                       static_cast<double>(progress.done) / static_cast<double>(progress.blocks));
+    }
     if (level == ClassifiedGrid::kBlockLevel && !mGrid->hasVectors()) {
         return buildBlock(coord);
     }
@@ -175,7 +189,7 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord, const Occupancy&
         if (begin.x >= dims.x || begin.y >= dims.y || begin.z >= dims.z) {
             continue;
         }
-        const Statistics childStatistics = build(level - 1, child, occupied);
+        const Statistics childStatistics = build(level - 1, child, occupied, progress);
         statistics.merge(childStatistics);
         if (childStatistics.record.nonEmptyCount > 0) {
             statistics.record.childMask |= static_cast<std::uint8_t>(1u << octant);

@@ -3,6 +3,7 @@
 #include "octree/ClassifiedGrid.h"
 #include "octree/NodeRef.h"
 #include "octree/OctreeNode.h"
+#include "scenegraph/WorkProgress.h"
 
 #include <glm/ext/vector_double3.hpp>
 #include <glm/ext/vector_uint3_sized.hpp>
@@ -29,9 +30,12 @@ namespace texsplat::octree {
 /// (plus an occupancy bit per 4096 voxels of the box).
 class Octree {
 public:
-    /// @brief Builds the hierarchy over @p grid in O(voxels) time.
-    /// @throws DataError when @p grid is null.
-    explicit Octree(std::shared_ptr<const ClassifiedGrid> grid);
+    /// @brief Builds the hierarchy over @p grid in O(voxels) time, telling @p progress (when
+    /// set) how far the build got: "building the octree" and the fraction of allocated blocks
+    /// done.
+    /// @throws DataError when @p grid is null; sg::Cancelled when @p progress cancels.
+    explicit Octree(std::shared_ptr<const ClassifiedGrid> grid,
+                    const sg::WorkProgress& progress = {});
 
     /// @brief The grid the leaves reference.
     [[nodiscard]] const ClassifiedGrid& grid() const { return *mGrid; }
@@ -118,7 +122,14 @@ private:
     // Per level above the blocks (index: level), whether each node holds an allocated block.
     using Occupancy = std::vector<std::vector<bool>>;
     Occupancy occupancy() const;
-    Statistics build(int level, glm::u64vec3 coord, const Occupancy& occupied);
+    // What build() tells the progress callback: allocated blocks done, of how many.
+    struct BuildProgress {
+        const sg::WorkProgress& progress;
+        std::size_t blocks;
+        std::size_t done = 0;
+    };
+    Statistics build(int level, glm::u64vec3 coord, const Occupancy& occupied,
+                     BuildProgress& progress);
     Statistics buildBlock(glm::u64vec3 block);
     Statistics voxelStatistics(glm::u64vec3 voxel) const;
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <string_view>
 #include <vector>
 
 using texsplat::octree::ClassifiedGrid;
@@ -136,6 +137,25 @@ TEST(Octree, readsScalarBlocksLikeTheGeneralBuild) {
             ASSERT_EQ(a.firstChild, b.firstChild) << i;
             ASSERT_EQ(a.nonEmptyCount, b.nonEmptyCount) << i;
         }
+    }
+}
+
+TEST(Octree, reportsItsBuildAndStopsWhenCancelled) {
+    const auto grid = randomGrid({40, 40, 40}, 3);
+    std::vector<double> fractions;
+    const Octree octree(grid, [&fractions](std::string_view step, double fraction) {
+        EXPECT_EQ(step, "building the octree");
+        fractions.push_back(fraction);
+        return true;
+    });
+    ASSERT_GE(fractions.size(), 2u);
+    EXPECT_EQ(fractions.front(), 0.0);
+    EXPECT_EQ(fractions.back(), 1.0);
+    try {
+        const Octree cancelled(grid, [](std::string_view, double) { return false; });
+        ADD_FAILURE() << "not cancelled";
+    } catch (const texsplat::sg::Cancelled& error) {
+        EXPECT_STREQ(error.what(), "building the octree: cancelled");
     }
 }
 

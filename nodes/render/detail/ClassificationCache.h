@@ -5,6 +5,7 @@
 #include "octree/Octree.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Observer.h"
+#include "scenegraph/WorkProgress.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -54,7 +55,8 @@ public:
     ClassificationCache& operator=(const ClassificationCache&) = delete;
     ~ClassificationCache() override;
 
-    /// The scalar `grid` classified by `transfer`, from the cache when still valid.
+    /// The scalar `grid` classified by `transfer`, from the cache when still valid; a new
+    /// classification tells the work progress how it goes (and may be cancelled by it).
     std::shared_ptr<const octree::ClassifiedGrid> classified(const volume::ScalarGridPtr& grid,
                                                              const nodes::TransferFunction& transfer);
 
@@ -63,8 +65,13 @@ public:
                                                              const nodes::TransferFunction& transfer,
                                                              const Classify& classify);
 
-    /// The octree over the last classified() grid, built on first use.
+    /// The octree over the last classified() grid, built on first use (telling the work
+    /// progress).
     const octree::Octree& octree();
+
+    /// Where the scalar classification and the octree build made from now on report, and may be
+    /// cancelled (the action's, set by the splat node each frame).
+    void setWorkProgress(sg::WorkProgress progress) { mProgress = std::move(progress); }
 
     /// Bytes of the value ranges held (0 before a scalar grid was classified).
     std::uint64_t valueRangeBytes() const {
@@ -91,6 +98,7 @@ private:
     volume::ScalarGridPtr mValueRangesGrid;
     std::unique_ptr<octree::ValueRanges> mValueRanges;
     Builds mBuilds;
+    sg::WorkProgress mProgress;
 };
 
 } // namespace texsplat::render::detail
