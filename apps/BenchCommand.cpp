@@ -7,6 +7,7 @@
 
 #include "nodes/bench/BenchReport.h"
 #include "nodes/bench/BenchRunner.h"
+#include "nodes/bench/TransferEditBench.h"
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "scenegraph/AtomicFile.h"
@@ -54,6 +55,7 @@ struct BenchArguments {
     bool backendGiven = false;
     bool budgetsGiven = false;
     std::string budgets = "1,0.5,0.2,0.1,0.05,0.02";
+    int transferEdit = 0; // splats of the budgeted frame after an edit; 0: not asked
     Framing framing;
 };
 
@@ -170,6 +172,8 @@ CheckedBench checkBenchOptions(const BenchArguments& arguments) {
         }
         budgets = parseBudgets(arguments.budgets);
         checkSceneOptions(arguments.framing, BudgetOverride{});
+    } else if (arguments.transferEdit > 0) {
+        throw DataError("--transfer-edit: only with a SCENE (its transfer functions are edited)");
     } else {
         const Framing& framing = arguments.framing;
         if (arguments.budgetsGiven || !framing.direction.empty() || !framing.azimuth.empty() ||
@@ -208,9 +212,26 @@ CheckedBench checkBenchOptions(const BenchArguments& arguments) {
     return {options, budgets, memoryLimitOf(arguments.memoryLimit)};
 }
 
+// `bench SCENE --transfer-edit N`: the frames after transfer-function edits, on the CPU.
+void runTransferEditBench(const BenchArguments& arguments) {
+    const glm::ivec2 size = parseSizes(arguments.sizes).front();
+    const std::vector<bench::TransferEditTime> rows = bench::measureTransferEdit(
+        sceneToMeasure(arguments), size,
+        {0, static_cast<std::uint64_t>(arguments.transferEdit)}, arguments.threads);
+    std::printf("texsplat bench --transfer-edit: %s, %dx%d, %s; wall time of the frame after "
+                "the edit (loading not counted)\n",
+                arguments.scene.c_str(), size.x, size.y,
+                render::cpu::CpuRenderer(arguments.threads).description().c_str());
+    std::printf("%s", bench::transferEditTable(rows).c_str());
+}
+
 void runBench(const BenchArguments& arguments, CheckedBench checked) {
     setMemoryLimit(checked.memoryLimit);
     const ThreadLimit threadLimit(arguments.threads);
+    if (arguments.transferEdit > 0) {
+        runTransferEditBench(arguments);
+        return;
+    }
     const bool isScene = !arguments.scene.empty();
     bench::BenchOptions& options = checked.options;
     const std::vector<double>& budgets = checked.budgets;
@@ -323,6 +344,14 @@ void addBenchCommand(CLI::App& app, int& exitCode, CommandMode mode) {
                      "With a SCENE: comma-separated fractions in (0, 1] of each splat node's "
                      "full-resolution splats, set as its maxSplats (1: full resolution)")
         ->capture_default_str();
+    command
+        ->add_option("--transfer-edit", arguments->transferEdit,
+                     "With a SCENE: time the frame after two edits of its transfer functions "
+                     "(opacities halved; the lower 30 % of the range hidden), at full resolution "
+                     "and at this many splats, against re-classifying the whole grid as before "
+                     "value ranges (CPU backend)")
+        ->check(CLI::Range(1, 2000000000))
+        ->type_name("SPLATS");
     addViewOptions(*command, arguments->framing);
     command->callback([arguments, command, mode, &exitCode] {
         arguments->datasetGiven = command->count("--dataset") > 0;

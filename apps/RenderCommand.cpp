@@ -35,6 +35,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <thread>
 
 #include <sys/resource.h>
@@ -377,6 +378,39 @@ private:
     int mLastPercent = -1;
 };
 
+// Progress of a frame's long steps (classifying, building the octree) on stderr: one updating
+// line on a terminal once a step has run half a second (quick steps stay quiet); otherwise, once
+// it has run for a few seconds, a line every 10 %.
+class WorkProgressPrinter {
+public:
+    WorkProgressPrinter() : mTerminal(isatty(STDERR_FILENO) == 1) {}
+
+    bool operator()(std::string_view step, double fraction) {
+        if (step != mStep) {
+            mStep = std::string(step);
+            mStart = Clock::now();
+            mLastPercent = -1;
+        }
+        const int percent = static_cast<int>(fraction * 100.0);
+        if (mTerminal) {
+            if (percent != mLastPercent && secondsSince(mStart) > 0.5) {
+                std::fprintf(stderr, "\r%s: %3d%%%s", mStep.c_str(), percent,
+                             fraction >= 1.0 ? "\n" : "");
+            }
+        } else if (secondsSince(mStart) > 2.0 && percent / 10 != mLastPercent / 10) {
+            std::fprintf(stderr, "%s: %d%%\n", mStep.c_str(), percent / 10 * 10);
+        }
+        mLastPercent = percent;
+        return true;
+    }
+
+private:
+    bool mTerminal;
+    std::string mStep;
+    Clock::time_point mStart;
+    int mLastPercent = -1;
+};
+
 // The reference images of --raycast: no GL context; the same camera, size and background as
 // the GL render, so the two images compare pixel by pixel.
 void runRayCast(const RenderArguments& arguments, const Animation& animation, sg::Node& root,
@@ -385,6 +419,7 @@ void runRayCast(const RenderArguments& arguments, const Animation& animation, sg
     sg::RayCastAction action(size.x, size.y);
     action.setBackground(background);
     action.setStepSize(arguments.rayCastStep);
+    action.setWorkProgress(WorkProgressPrinter());
     FrameClock clock(animation, root);
     double integrate = setup.frame;
     double write = 0.0;
@@ -518,6 +553,7 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     if (backend.backend == render::Backend::Cpu) {
         cpu.emplace(arguments.threads);
         render::FrameAction action(size.x, size.y, background);
+        action.setWorkProgress(WorkProgressPrinter());
         for (int frame = 0; frame < animation.frames; ++frame) {
             clock.moveTo(frame);
             const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
@@ -531,6 +567,7 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     if (backend.backend == render::Backend::Gl) {
         sg::RenderAction action(size.x, size.y);
         action.setBackground(background);
+        action.setWorkProgress(WorkProgressPrinter());
         for (int frame = 0; frame < animation.frames; ++frame) {
             clock.moveTo(frame);
             const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {

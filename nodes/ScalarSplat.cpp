@@ -99,8 +99,10 @@ ScalarSplat::renderInputs(sg::State& state) const {
     return {*volume, *transfer};
 }
 
-render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::CameraView& camera,
+render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::CameraView& camera,
                                              sg::RenderStatistics& statistics) {
+    sg::State& state = action.state();
+    mCache->setWorkProgress(action.workProgress());
     const auto inputs = renderInputs(state);
     const VolumeData& volume = inputs.first;
     const TransferFunction& transfer = inputs.second;
@@ -120,6 +122,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
         return estimate;
     });
     const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
+    const render::detail::ClassificationCache::Builds before = mCache->builds();
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
         timed(statistics, sg::RenderPhase::Classify, [&] {
             return detail::withNodeContext(*this, [&] {
@@ -178,11 +181,15 @@ render::FrameSplats ScalarSplat::frameSplats(sg::State& state, const render::Cam
             withMemoryStage("emitting splats", memory.splats, detail::kSplatMemoryAdvice, emit);
         });
     });
+    const render::detail::ClassificationCache::Builds& after = mCache->builds();
+    statistics.builds.valueRanges += after.valueRanges - before.valueRanges;
+    statistics.builds.classifications += after.classifications - before.classifications;
+    statistics.builds.octrees += after.octrees - before.octrees;
     statistics.splats += splats->size();
     sg::FrameMemory& bytes = statistics.memory;
     const volume::VectorGridPtr vectorGrid = vectors ? volume.vectorGrid() : nullptr;
     bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
-    bytes.classified += classified->memoryBytes();
+    bytes.classified += classified->memoryBytes() + mCache->valueRangeBytes();
     bytes.octree += fullResolution ? 0 : mCache->octree().memoryBytes();
     bytes.splats += splats->memoryBytes();
     result.splats = std::move(splats);
@@ -200,7 +207,7 @@ std::shared_ptr<const render::SplatFootprint> ScalarSplat::footprint() {
 #ifdef TEXSPLAT_WITH_GL
 void ScalarSplat::render(sg::RenderAction& action) {
     const render::CameraView camera = render::CameraView::current(action, *this);
-    const render::FrameSplats splats = frameSplats(action.state(), camera, action.statistics());
+    const render::FrameSplats splats = frameSplats(action, camera, action.statistics());
     TEXSPLAT_ASSERT(gl::Context::current(), "ScalarSplat::render(): no current GL context");
     const std::uint64_t context = gl::Context::current()->serial();
     if (!mBatch || mBatchContext != context) {
@@ -232,7 +239,7 @@ void ScalarSplat::render(sg::RenderAction& action) {
 void ScalarSplat::collectFrame(render::FrameAction& action) {
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
-    action.frame().splats.push_back(frameSplats(action.state(), camera, action.statistics()));
+    action.frame().splats.push_back(frameSplats(action, camera, action.statistics()));
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {
@@ -248,6 +255,7 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
     const volume::ScalarGridPtr grid = volume.scalarGrid();
+    mCache->setWorkProgress(action.workProgress());
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
         detail::withNodeContext(*this, [&] {
             const detail::SplatMemory memory = detail::estimateSplatMemory(volume, false, false, 0);

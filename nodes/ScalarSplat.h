@@ -40,7 +40,9 @@ namespace texsplat::nodes {
 ///
 /// Per frame: the scalar grid of the VolumeData (loaded on first use), classified into emission
 /// C and extinction τ per unit length (cached with its octree until the volume's grid or the
-/// transfer function changes; voxels that classify to zero make no splat), ordered for the view
+/// transfer function changes; voxels that classify to zero make no splat; the grid's block value
+/// ranges, octree::ValueRanges, are made once per grid and let a transfer-function edit skip
+/// the blocks it hides without a new data hierarchy), ordered for the view
 /// (see below), and drawn facing the eye: by RenderAction as instanced GL quads
 /// (render::SplatBatch), by FrameAction's frame on the CPU backend (render::cpu::CpuRenderer).
 /// Optical properties are per unit length of the volume's local space; a Transform above the
@@ -149,8 +151,9 @@ private:
     std::pair<const VolumeData&, const TransferFunction&> renderInputs(sg::State& state) const;
 
     /// @brief This frame's splats for `camera`: classified (cached), ordered and emitted as the
-    /// fields say, the times added to `statistics`. What every backend draws.
-    render::FrameSplats frameSplats(sg::State& state, const render::CameraView& camera,
+    /// fields say, the times added to `statistics`; classification and the octree build report
+    /// to `action`'s work progress, which may cancel them. What every backend draws.
+    render::FrameSplats frameSplats(sg::Action& action, const render::CameraView& camera,
                                     sg::RenderStatistics& statistics);
 
     /// @brief The footprint for the current fields, made once until a shaping field changes.

@@ -6,6 +6,7 @@
 #include "nodes/detail/NodeContext.h"
 #include "nodes/detail/TransferTable.h"
 #include "nodes/elements/TransferFunctionElement.h"
+#include "octree/ValueRanges.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/Action.h"
 #include "scenegraph/fields/ValueFormat.h"
@@ -186,13 +187,22 @@ DataScale fixedScale(const detail::TransferTable& table) {
 }
 
 // The scale `checked` gives `grid`'s values: one table throughout, so a change of the node
-// between two lookups cannot mix two tables.
+// between two lookups cannot mix two tables. With `ranges` (the grid's block value ranges), a
+// DATA range is their union instead of a scan of the grid: the same finite values.
 template <class T>
-DataScale scaleOf(const detail::TransferTable& checked, const volume::Grid<T>& grid) {
+DataScale scaleOf(const detail::TransferTable& checked, const volume::Grid<T>& grid,
+                  const octree::ValueRanges* ranges = nullptr) {
     DataScale scale = fixedScale(checked);
     switch (static_cast<RangeMode>(checked.rangeMode)) {
     case RangeMode::Data:
-        scale.range = glm::vec2(detail::valueRange(grid));
+        if (!ranges) {
+            scale.range = glm::vec2(detail::valueRange(grid));
+        } else if (ranges->blockCount() == 0) {
+            scale.range = glm::vec2(0.0f, 1.0f);
+        } else {
+            const glm::vec2 values = ranges->valueRange();
+            scale.range = glm::vec2(detail::widenedRange(values.x, values.y));
+        }
         break;
     case RangeMode::Percentile:
         scale.range = glm::vec2(
@@ -248,20 +258,106 @@ glm::vec3 TransferFunction::colorAt(float t) const {
     return table()->colors(std::isnan(t) ? 0.0f : std::clamp(t, 0.0f, 1.0f));
 }
 
-std::shared_ptr<octree::ClassifiedGrid>
-TransferFunction::classify(const volume::ScalarGrid& grid) const {
+namespace {
+
+// Whether `map` is zero all over [t0, t1]: at both ends and at every control point between (the
+// map is linear between control points, so that is all of it; y >= 0 is not assumed).
+template <class Y> bool isZeroBetween(const detail::PiecewiseLinear<Y>& map, float t0, float t1) {
+    if (map(t0) != Y(0.0f) || map(t1) != Y(0.0f)) {
+        return false;
+    }
+    for (std::size_t i = 0; i < map.x.size(); ++i) {
+        if (map.x[i] >= t0 && map.x[i] <= t1 && map.y[i] != Y(0.0f)) {
+            return false;
+        }
+    }
+    return true;
+}
+
+} // namespace
+
+bool TransferFunction::isTransparentBetween(float minimum, float maximum,
+                                            const DataScale& scale) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
-    const DataScale scale = scaleOf(*checked, grid);
+    // normalized() does not decrease with the value, so the range's ends bound every t in it.
+    const float t0 = normalized(scale.range, minimum);
+    const float t1 = normalized(scale.range, maximum);
+    if (!(t0 <= t1) || !isZeroBetween(checked->opacities, t0, t1)) {
+        return false;
+    }
+    // With no extinction, classifyWith() gives colour * emission per unit length.
+    return checked->emission / scale.unitDistance == 0.0f ||
+           isZeroBetween(checked->colors, t0, t1);
+}
+
+namespace {
+
+constexpr const char* kClassifyStep = "classifying";
+// One progress report per this many voxels walked.
+constexpr std::uint64_t kVoxelsPerReport = std::uint64_t{1} << 20;
+
+// Classifies the non-empty voxels of `grid` for which `isWanted(ijk, value)` holds, telling
+// `progress` the fraction of the grid's stored voxels walked.
+template <class IsWanted>
+std::shared_ptr<octree::ClassifiedGrid>
+classifyVoxels(const detail::TransferTable& checked, const DataScale& scale,
+               const volume::ScalarGrid& grid, const sg::WorkProgress& progress,
+               IsWanted&& isWanted) {
     const volume::GridGeometry& geometry = grid.geometry();
     auto classified = std::make_shared<octree::ClassifiedGrid>(
         glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
+    const double stored =
+        static_cast<double>(std::max<std::uint64_t>(grid.storedVoxelCount(), 1));
+    std::uint64_t walked = 0;
+    sg::reportWork(progress, kClassifyStep, 0.0);
     grid.forEachActive([&](const glm::i64vec3& index, float value) {
-        const Classification result = classifyWith(*checked, value, scale);
+        if (++walked % kVoxelsPerReport == 0) {
+            sg::reportWork(progress, kClassifyStep,
+                           std::min(static_cast<double>(walked) / stored, 1.0));
+        }
+        if (!isWanted(glm::u64vec3(index), value)) {
+            return;
+        }
+        const Classification result = classifyWith(checked, value, scale);
         if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
             classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
         }
     });
+    sg::reportWork(progress, kClassifyStep, 1.0);
     return classified;
+}
+
+} // namespace
+
+std::shared_ptr<octree::ClassifiedGrid>
+TransferFunction::classify(const volume::ScalarGrid& grid, const octree::ValueRanges& ranges,
+                           const sg::WorkProgress& progress) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    const DataScale scale = scaleOf(*checked, grid, &ranges);
+    const std::vector<bool> visible = ranges.visibleBlocks([&](float minimum, float maximum) {
+        return !isTransparentBetween(minimum, maximum, scale);
+    });
+    return classifyVoxels(*checked, scale, grid, progress, [&](glm::u64vec3 ijk, float) {
+        return ranges.isVisibleBlock(visible, ijk);
+    });
+}
+
+std::shared_ptr<octree::ClassifiedGrid>
+TransferFunction::classifyRecording(const volume::ScalarGrid& grid, octree::ValueRanges& ranges,
+                                    const sg::WorkProgress& progress) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    return classifyVoxels(*checked, scaleOf(*checked, grid), grid, progress,
+                          [&ranges](glm::u64vec3 ijk, float value) {
+                              ranges.add(ijk, value);
+                              return true;
+                          });
+}
+
+std::shared_ptr<octree::ClassifiedGrid>
+TransferFunction::classify(const volume::ScalarGrid& grid) const {
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    return classifyVoxels(*checked, scaleOf(*checked, grid), grid, {},
+                          [](glm::u64vec3, float) { return true; });
 }
 
 void TransferFunction::doAction(sg::Action& action) {

@@ -2,9 +2,11 @@
 
 #include "nodes/volume/Grid.h"
 #include "octree/ClassifiedGrid.h"
+#include "octree/Fwd.h"
 #include "scenegraph/Declare.h"
 #include "scenegraph/EnumNames.h"
 #include "scenegraph/Node.h"
+#include "scenegraph/WorkProgress.h"
 #include "scenegraph/fields/Fields.h"
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/io/RelativeFileNames.h"
@@ -179,6 +181,27 @@ public:
     /// produce no splats.
     /// @throws DataError when the fields are invalid.
     std::shared_ptr<octree::ClassifiedGrid> classify(const volume::ScalarGrid& grid) const;
+    /// @brief classify(grid), the same grid bit for bit, but with `ranges` (the value range of
+    /// each block of `grid`, made once for the grid): a block whose range classifies to nothing
+    /// (isTransparentBetween()) is skipped, and a DATA range is read from `ranges` instead of
+    /// scanning the grid. What a transfer-function edit costs follows the blocks it shows.
+    /// `progress` (when set) hears "classifying" and the fraction of the grid walked.
+    /// @throws DataError when the fields are invalid; sg::Cancelled when `progress` cancels.
+    std::shared_ptr<octree::ClassifiedGrid> classify(const volume::ScalarGrid& grid,
+                                                     const octree::ValueRanges& ranges,
+                                                     const sg::WorkProgress& progress = {}) const;
+    /// @brief classify(grid), adding every non-empty voxel's value to `ranges` (new, for a grid
+    /// of `grid`'s dimensions) in the same pass: how a grid's first classification makes the
+    /// value ranges that later ones read. `progress` as for classify(grid, ranges).
+    /// @throws DataError when the fields are invalid; sg::Cancelled when `progress` cancels.
+    std::shared_ptr<octree::ClassifiedGrid>
+    classifyRecording(const volume::ScalarGrid& grid, octree::ValueRanges& ranges,
+                      const sg::WorkProgress& progress = {}) const;
+    /// @brief Whether every value in [`minimum`, `maximum`] classifies over `scale` to no
+    /// emission and no extinction. Exact where it answers true (never true for a range holding a
+    /// visible value); it may answer false for a range whose values are all transparent only
+    /// through float underflow or a step exactly at an end.
+    bool isTransparentBetween(float minimum, float maximum, const DataScale& scale) const;
 
     /// @brief Puts this node into TransferFunctionElement.
     void doAction(sg::Action& action) override;

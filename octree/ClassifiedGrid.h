@@ -80,6 +80,13 @@ public:
             ->voxels[static_cast<std::size_t>(storage % kBlockVoxels)];
     }
 
+    /// @brief The 512 colours and extinctions of the allocated block whose voxel (0, 0, 0) is
+    /// stored at @p first (from blockStorage() or forEachBlock()), x fastest: for a pass over
+    /// whole blocks.
+    [[nodiscard]] const std::array<glm::vec4, kBlockVoxels>& storedBlock(StorageIndex first) const {
+        return mBlocks[static_cast<std::size_t>(first / kBlockVoxels)]->voxels;
+    }
+
     /// @brief The vector of voxel @p ijk (hasVectors() must hold; zero outside allocated blocks).
     [[nodiscard]] glm::vec3 vector(glm::u64vec3 ijk) const {
         TEXSPLAT_ASSERT(mHasVectors, "ClassifiedGrid::vector(): no vectors");

@@ -62,12 +62,28 @@ struct Octree::Statistics {
 
 namespace {
 
+constexpr const char* kBuildStep = "building the octree";
+// Reports are cheap but not free: one per this many allocated blocks (2 M voxels).
+constexpr std::size_t kBlocksPerReport = 4096;
+
 // Levels above 62 would overflow the 64-bit voxel coordinates of a node's block.
 [[maybe_unused]] constexpr int kMaxLevel = 62; // only asserted
 
+// Nodes of `level` along each axis of a grid of `dims` voxels.
+glm::u64vec3 nodeCounts(glm::u64vec3 dims, int level) {
+    return (dims + ((std::uint64_t{1} << level) - 1)) >> glm::u64vec3(level);
+}
+
+// Linear index of `node` among the nodes of `level`.
+std::size_t nodeIndex(glm::u64vec3 dims, int level, glm::u64vec3 node) {
+    const glm::u64vec3 count = nodeCounts(dims, level);
+    return static_cast<std::size_t>(node.x + count.x * (node.y + count.y * node.z));
+}
+
 } // namespace
 
-Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(grid)) {
+Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid, const sg::WorkProgress& progress)
+    : mGrid(std::move(grid)) {
     if (!mGrid) {
         throw DataError("Octree: no grid to build from");
     }
@@ -77,7 +93,9 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
         ++mRootLevel;
     }
     TEXSPLAT_ASSERT(mRootLevel <= kMaxLevel, "Octree::Octree(): grid too large for 64 bits");
-    const Statistics root = build(mRootLevel, glm::u64vec3(0));
+    BuildProgress built{progress, mGrid->blockCount()};
+    sg::reportWork(progress, kBuildStep, 0.0);
+    const Statistics root = build(mRootLevel, glm::u64vec3(0), occupancy(), built);
     mIsEmpty = root.record.nonEmptyCount == 0;
     mValueScale = std::max({root.maximum.r, root.maximum.g, root.maximum.b, root.maximum.a});
     if (mRootLevel > 0 && !mIsEmpty) {
@@ -88,6 +106,7 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(gri
     }
     mNodes.shrink_to_fit();
     mMeanVectors.shrink_to_fit();
+    sg::reportWork(progress, kBuildStep, 1.0);
 }
 
 Octree::Statistics Octree::voxelStatistics(glm::u64vec3 voxel) const {
@@ -113,20 +132,53 @@ Octree::Statistics Octree::voxelStatistics(glm::u64vec3 voxel) const {
     return statistics;
 }
 
+Octree::Occupancy Octree::occupancy() const {
+    const glm::u64vec3 dims = mGrid->dims();
+    Occupancy occupied(static_cast<std::size_t>(mRootLevel + 1));
+    for (int level = ClassifiedGrid::kBlockLevel + 1; level <= mRootLevel; ++level) {
+        const glm::u64vec3 count = nodeCounts(dims, level);
+        occupied[static_cast<std::size_t>(level)].assign(
+            static_cast<std::size_t>(count.x * count.y * count.z), false);
+    }
+    mGrid->forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex) {
+        for (int level = ClassifiedGrid::kBlockLevel + 1; level <= mRootLevel; ++level) {
+            const glm::u64vec3 node = block >> glm::u64vec3(level - ClassifiedGrid::kBlockLevel);
+            occupied[static_cast<std::size_t>(level)][nodeIndex(dims, level, node)] = true;
+        }
+    });
+    return occupied;
+}
+
 // Depth-first and post-order: a node's children are finished (and their own subtrees stored)
 // before the node appends its non-empty children contiguously, so siblings stay adjacent.
-Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
+Octree::Statistics Octree::build(int level, glm::u64vec3 coord, const Occupancy& occupied,
+                                 BuildProgress& progress) {
     if (level == 0) {
         return voxelStatistics(coord);
     }
     const glm::u64vec3 dims = mGrid->dims();
     Statistics statistics;
-    if (level == ClassifiedGrid::kBlockLevel && !mGrid->hasBlock(coord)) {
-        // An unallocated block: its voxels are empty, and only their number enters the mean.
+    const bool isEmpty =
+        level == ClassifiedGrid::kBlockLevel
+            ? !mGrid->hasBlock(coord)
+            : level > ClassifiedGrid::kBlockLevel &&
+                  !occupied[static_cast<std::size_t>(level)][nodeIndex(dims, level, coord)];
+    if (isEmpty) {
+        // No allocated block below: its voxels are empty, and only their number enters the mean
+        // (what merging its empty children one by one gives: sums and bounds stay 0).
         const glm::u64vec3 begin = coord << glm::u64vec3(level);
-        const glm::u64vec3 extent = glm::min(begin + ClassifiedGrid::kBlockSize, dims) - begin;
+        const glm::u64vec3 end = glm::min((coord + std::uint64_t{1}) << glm::u64vec3(level), dims);
+        const glm::u64vec3 extent = end - begin;
         statistics.count = extent.x * extent.y * extent.z;
         return statistics;
+    }
+    if (level == ClassifiedGrid::kBlockLevel &&
+        ++progress.done % kBlocksPerReport == 0) {
+        sg::reportWork(progress.progress, kBuildStep,
+                       static_cast<double>(progress.done) / static_cast<double>(progress.blocks));
+    }
+    if (level == ClassifiedGrid::kBlockLevel && !mGrid->hasVectors()) {
+        return buildBlock(coord);
     }
     std::array<OctreeNode, 8> childRecords;
     std::array<glm::vec3, 8> childVectors;
@@ -137,7 +189,7 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
         if (begin.x >= dims.x || begin.y >= dims.y || begin.z >= dims.z) {
             continue;
         }
-        const Statistics childStatistics = build(level - 1, child);
+        const Statistics childStatistics = build(level - 1, child, occupied, progress);
         statistics.merge(childStatistics);
         if (childStatistics.record.nonEmptyCount > 0) {
             statistics.record.childMask |= static_cast<std::uint8_t>(1u << octant);
@@ -153,6 +205,84 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord) {
                                 childVectors.begin() + childCount);
         }
     }
+    statistics.finish();
+    return statistics;
+}
+
+// The subtree of an allocated block of a scalar grid, as build() makes it (the same records in
+// the same order, the same sums in the same order, so the same bits) but read straight from the
+// block's storage, with no per-voxel Statistics: most of the build's time is spent here.
+Octree::Statistics Octree::buildBlock(glm::u64vec3 block) {
+    const std::array<glm::vec4, ClassifiedGrid::kBlockVoxels>& voxels =
+        mGrid->storedBlock(mGrid->blockStorage(block));
+    // Voxels of the block inside the grid, per axis (fewer at the grid's far faces).
+    const glm::u64vec3 begin = block * ClassifiedGrid::kBlockSize;
+    const glm::u64vec3 extent =
+        glm::min(mGrid->dims() - begin, glm::u64vec3(ClassifiedGrid::kBlockSize));
+    const auto offset = [](int octant, std::uint64_t scale) {
+        const auto bit = static_cast<unsigned>(octant);
+        return glm::u64vec3(bit & 1u, (bit >> 1) & 1u, (bit >> 2) & 1u) * scale;
+    };
+    const auto isInside = [&extent](glm::u64vec3 voxel) {
+        return voxel.x < extent.x && voxel.y < extent.y && voxel.z < extent.z;
+    };
+    Statistics statistics;
+    std::array<OctreeNode, 8> quarterRecords; // level 2
+    int quarterCount = 0;
+    for (int quarterOctant = 0; quarterOctant < 8; ++quarterOctant) {
+        const glm::u64vec3 quarter = offset(quarterOctant, 4);
+        if (!isInside(quarter)) {
+            continue;
+        }
+        Statistics quarterStatistics;
+        std::array<OctreeNode, 8> pairRecords; // level 1
+        int pairCount = 0;
+        for (int pairOctant = 0; pairOctant < 8; ++pairOctant) {
+            const glm::u64vec3 pair = quarter + offset(pairOctant, 2);
+            if (!isInside(pair)) {
+                continue;
+            }
+            Statistics pairStatistics;
+            for (int voxelOctant = 0; voxelOctant < 8; ++voxelOctant) {
+                const glm::u64vec3 voxel = pair + offset(voxelOctant, 1);
+                if (!isInside(voxel)) {
+                    continue;
+                }
+                const glm::vec4& value = voxels[static_cast<std::size_t>(
+                    voxel.x + ClassifiedGrid::kBlockSize *
+                                  (voxel.y + ClassifiedGrid::kBlockSize * voxel.z))];
+                // Statistics::merge() of voxelStatistics(voxel), spelled out.
+                pairStatistics.minimum =
+                    pairStatistics.count == 0 ? value : glm::min(pairStatistics.minimum, value);
+                pairStatistics.maximum =
+                    pairStatistics.count == 0 ? value : glm::max(pairStatistics.maximum, value);
+                pairStatistics.sum += glm::dvec4(value);
+                ++pairStatistics.count;
+                if (value != glm::vec4(0.0f)) {
+                    ++pairStatistics.record.nonEmptyCount;
+                    pairStatistics.record.childMask |=
+                        static_cast<std::uint8_t>(1u << voxelOctant);
+                }
+            }
+            quarterStatistics.merge(pairStatistics);
+            if (pairStatistics.record.nonEmptyCount > 0) {
+                // An empty pair gets no record, so its mean and error are never needed.
+                pairStatistics.finish();
+                quarterStatistics.record.childMask |= static_cast<std::uint8_t>(1u << pairOctant);
+                pairRecords[static_cast<std::size_t>(pairCount++)] = pairStatistics.record;
+            }
+        }
+        quarterStatistics.record.firstChild = mNodes.size();
+        mNodes.insert(mNodes.end(), pairRecords.begin(), pairRecords.begin() + pairCount);
+        statistics.merge(quarterStatistics);
+        if (quarterStatistics.record.nonEmptyCount > 0) {
+            quarterStatistics.finish();
+            statistics.record.childMask |= static_cast<std::uint8_t>(1u << quarterOctant);
+            quarterRecords[static_cast<std::size_t>(quarterCount++)] = quarterStatistics.record;
+        }
+    }
+    statistics.record.firstChild = mNodes.size();
+    mNodes.insert(mNodes.end(), quarterRecords.begin(), quarterRecords.begin() + quarterCount);
     statistics.finish();
     return statistics;
 }

@@ -3,6 +3,7 @@
 #include "octree/ClassifiedGrid.h"
 #include "octree/NodeRef.h"
 #include "octree/OctreeNode.h"
+#include "scenegraph/WorkProgress.h"
 
 #include <glm/ext/vector_double3.hpp>
 #include <glm/ext/vector_uint3_sized.hpp>
@@ -25,12 +26,16 @@ namespace texsplat::octree {
 /// holding at least one non-empty voxel get a record (about 1/7 of the voxel count for dense
 /// data); voxels are read from the shared grid, and empty subtrees have no nodes at all. The
 /// nodes of level 3 are the grid's 8³ blocks: the build skips the blocks the grid did not
-/// allocate, so its time follows the allocated blocks (plus one step per 512 voxels of the box).
+/// allocate, and the nodes above them that hold none, so its time follows the allocated blocks
+/// (plus an occupancy bit per 4096 voxels of the box).
 class Octree {
 public:
-    /// @brief Builds the hierarchy over @p grid in O(voxels) time.
-    /// @throws DataError when @p grid is null.
-    explicit Octree(std::shared_ptr<const ClassifiedGrid> grid);
+    /// @brief Builds the hierarchy over @p grid in O(voxels) time, telling @p progress (when
+    /// set) how far the build got: "building the octree" and the fraction of allocated blocks
+    /// done.
+    /// @throws DataError when @p grid is null; sg::Cancelled when @p progress cancels.
+    explicit Octree(std::shared_ptr<const ClassifiedGrid> grid,
+                    const sg::WorkProgress& progress = {});
 
     /// @brief The grid the leaves reference.
     [[nodiscard]] const ClassifiedGrid& grid() const { return *mGrid; }
@@ -114,7 +119,18 @@ private:
                glm::u64vec3(bit & 1u, (bit >> 1) & 1u, (bit >> 2) & 1u);
     }
 
-    Statistics build(int level, glm::u64vec3 coord);
+    // Per level above the blocks (index: level), whether each node holds an allocated block.
+    using Occupancy = std::vector<std::vector<bool>>;
+    Occupancy occupancy() const;
+    // What build() tells the progress callback: allocated blocks done, of how many.
+    struct BuildProgress {
+        const sg::WorkProgress& progress;
+        std::size_t blocks;
+        std::size_t done = 0;
+    };
+    Statistics build(int level, glm::u64vec3 coord, const Occupancy& occupied,
+                     BuildProgress& progress);
+    Statistics buildBlock(glm::u64vec3 block);
     Statistics voxelStatistics(glm::u64vec3 voxel) const;
 
     std::shared_ptr<const ClassifiedGrid> mGrid;

@@ -10,6 +10,7 @@
 #include "nodes/image/ImageIo.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/WorkProgress.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/engines/AnimationSpeed.h"
@@ -29,6 +30,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <string_view>
 
 namespace texsplat::apps {
 namespace {
@@ -129,6 +131,13 @@ void Viewer::run() {
     ViewerPanel panel(window.handle());
     ViewerFrames frames(mOptions.backend, window.info().summary(), mOptions.background,
                         mOptions.threads);
+    // A long classification or octree build keeps the window's events flowing, and Esc or q
+    // cancels it (and quits, as it does between frames).
+    frames.setWorkProgress([handle = window.handle()](std::string_view, double) {
+        glfwPollEvents();
+        return glfwGetKey(handle, GLFW_KEY_ESCAPE) != GLFW_PRESS &&
+               glfwGetKey(handle, GLFW_KEY_Q) != GLFW_PRESS;
+    });
     PanelReport report;
     report.renderer = frames.description();
 
@@ -210,7 +219,15 @@ void Viewer::run() {
         if (needsRender) {
             needsRender = false;
             const Clock::time_point start = Clock::now();
-            const sg::RenderStatistics& statistics = frames.render(root);
+            const sg::RenderStatistics* rendered = nullptr;
+            try {
+                rendered = &frames.render(root);
+            } catch (const sg::Cancelled& error) {
+                std::fprintf(stderr, "texsplat view: %s\n", error.what());
+                window.requestClose();
+                continue;
+            }
+            const sg::RenderStatistics& statistics = *rendered;
             report.frameSeconds = std::chrono::duration<double>(Clock::now() - start).count();
             report.renderer = frames.description();
             lastSplats = statistics.splats;

@@ -2,6 +2,7 @@
 
 
 #include <cstring>
+#include <utility>
 
 namespace texsplat::apps {
 
@@ -24,12 +25,24 @@ bool ViewerFrames::resize(const glm::ivec2& size) {
     mHasFrame = false;
     if (mCpu) {
         mFrameAction = std::make_unique<render::FrameAction>(size.x, size.y, mBackground);
+        mFrameAction->setWorkProgress(mProgress);
         mTexture = std::make_unique<gl::Texture2D>(size.x, size.y, gl::TextureFormat::RGBA32F);
     } else {
         mAction = std::make_unique<sg::RenderAction>(size.x, size.y);
         mAction->setBackground(mBackground);
+        mAction->setWorkProgress(mProgress);
     }
     return true;
+}
+
+void ViewerFrames::setWorkProgress(sg::WorkProgress progress) {
+    mProgress = std::move(progress);
+    if (mFrameAction) {
+        mFrameAction->setWorkProgress(mProgress);
+    }
+    if (mAction) {
+        mAction->setWorkProgress(mProgress);
+    }
 }
 
 const sg::RenderStatistics& ViewerFrames::render(sg::Node& root) {

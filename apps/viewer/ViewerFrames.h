@@ -4,6 +4,7 @@
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "scenegraph/WorkProgress.h"
 #include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/gl/Texture2D.h"
 
@@ -34,7 +35,12 @@ public:
     /// scene must be drawn again).
     bool resize(const glm::ivec2& size);
 
+    /// @brief Where the frames' long steps (classification, the octree build) report, and may
+    /// be cancelled (then render() throws sg::Cancelled and the next frame starts them again).
+    void setWorkProgress(sg::WorkProgress progress);
+
     /// @brief Draws `root` into the target; answers the frame's statistics.
+    /// @throws sg::Cancelled when the work progress cancelled a step.
     const sg::RenderStatistics& render(sg::Node& root);
 
     /// @brief Whether a frame was drawn since the last resize().
@@ -52,6 +58,7 @@ private:
     glm::vec4 mBackground;
     glm::ivec2 mSize{0, 0};
     bool mHasFrame = false;
+    sg::WorkProgress mProgress;
     // GL backend.
     std::unique_ptr<sg::RenderAction> mAction;
     // CPU backend.

@@ -14,18 +14,18 @@ double scalarOf(float value) { return value; }
 // In double: a huge vector's squared length overflows float.
 double scalarOf(const glm::vec3& value) { return glm::length(glm::dvec3(value)); }
 
-glm::dvec2 widened(double low, double high) {
+} // namespace
+
+glm::dvec2 widenedRange(double low, double high) {
     return low < high ? glm::dvec2(low, high) : glm::dvec2(low - 0.5, low + 0.5);
 }
-
-} // namespace
 
 template <class T> glm::dvec2 valueRange(const volume::Grid<T>& grid) {
     const volume::GridStatistics statistics = grid.statistics();
     if (statistics.finiteCount == 0) {
         return {0.0, 1.0};
     }
-    return widened(statistics.minimum, statistics.maximum);
+    return widenedRange(statistics.minimum, statistics.maximum);
 }
 
 template <class T>
@@ -37,7 +37,7 @@ glm::dvec2 percentileRange(const volume::Grid<T>& grid, double low, double high)
     const double minimum = statistics.minimum;
     const double span = statistics.maximum - minimum;
     if (!(span > 0.0)) {
-        return widened(minimum, minimum);
+        return widenedRange(minimum, minimum);
     }
     constexpr std::size_t kBins = 65536;
     std::vector<std::uint64_t> counts(kBins, 0);
@@ -59,7 +59,7 @@ glm::dvec2 percentileRange(const volume::Grid<T>& grid, double low, double high)
         }
         return statistics.maximum;
     };
-    return widened(std::max(minimum, percentile(low)),
+    return widenedRange(std::max(minimum, percentile(low)),
                    std::min(statistics.maximum, percentile(high)));
 }
 

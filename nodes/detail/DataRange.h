@@ -11,6 +11,9 @@ namespace texsplat::nodes::detail {
 /// function can normalize over.
 template <class T> glm::dvec2 valueRange(const volume::Grid<T>& grid);
 
+/// @brief [`low`, `high`] as valueRange() widens it: [v - 0.5, v + 0.5] when both are v.
+glm::dvec2 widenedRange(double low, double high);
+
 /// @brief The `low` and `high` percentiles (in [0, 100], low < high) of the finite values of
 /// `grid` (for vectors: magnitudes), within 1 / 65536 of the value range (a histogram of that
 /// many bins, so that memory stays small for huge grids); widened as valueRange() when they

@@ -3,6 +3,7 @@
 #include "nodes/volume/Progress.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FieldContainer.h"
+#include "scenegraph/WorkProgress.h"
 
 #include <string>
 
@@ -32,6 +33,8 @@ template <class Load> auto withNodeContext(const sg::FieldContainer& node, Load&
         throw GlError(nodeContext(node) + ": " + error.what());
     } catch (const volume::LoadCancelled& error) {
         throw volume::LoadCancelled(nodeContext(node) + ": " + error.what());
+    } catch (const sg::Cancelled& error) {
+        throw sg::Cancelled(nodeContext(node) + ": " + error.what());
     } catch (const Error& error) {
         throw Error(nodeContext(node) + ": " + error.what());
     }

@@ -4,6 +4,7 @@
 #include "octree/ClassifiedGrid.h"
 #include "octree/OctreeNode.h"
 #include "octree/Splat.h"
+#include "octree/ValueRanges.h"
 #include "scenegraph/MemoryLimit.h"
 
 #include <glm/vec3.hpp>
@@ -54,6 +55,11 @@ SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool
     // not stored classifies to nothing.
     memory.classified = octree::ClassifiedGrid::memoryBytesFor(
         dims, std::min(boxBlocks, stored), withVectors);
+    if (!withVectors) {
+        // Scalar classification also keeps the grid's value ranges (docs/octree.md).
+        memory.classified = byteSum(memory.classified, octree::ValueRanges::memoryBytesFor(
+                                                           dims, std::min(boxBlocks, stored)));
+    }
     // Records exist for non-empty nodes of level >= 1: at most one per 7 non-empty voxels
     // (1/8 + 1/64 + ...), with a mean vector each for vector grids.
     memory.octree =

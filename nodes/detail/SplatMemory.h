@@ -17,7 +17,8 @@ namespace texsplat::nodes::detail {
 /// transparent voxels make no splat but classifying is what finds them.
 struct SplatMemory {
     glm::i64vec3 dims{0};         ///< voxels per axis of the grid classified
-    std::uint64_t classified = 0; ///< the classified grid: colour and extinction (and vector)
+    std::uint64_t classified = 0; ///< the classified grid: colour and extinction (and vector);
+                                  ///< for scalar splats also the grid's value ranges
     std::uint64_t octree = 0;     ///< the octree's records, when a cut is asked for
     std::uint64_t splats = 0;     ///< the splat list and its depth ordering
 

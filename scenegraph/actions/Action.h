@@ -2,10 +2,12 @@
 
 #include "scenegraph/actions/MethodTable.h"
 #include "scenegraph/actions/Path.h"
+#include "scenegraph/WorkProgress.h"
 #include "scenegraph/actions/State.h"
 
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace texsplat::sg {
@@ -57,6 +59,13 @@ public:
     /// @brief Ends the traversal early (e.g. SearchAction found its first match).
     void setTerminated() { mHasTerminated = true; }
 
+    /// @brief Where the long steps of this action's traversals (classification, the octree
+    /// build) report how they go, and may be cancelled; none by default.
+    void setWorkProgress(WorkProgress progress) { mWorkProgress = std::move(progress); }
+
+    /// @brief What setWorkProgress() set (empty when nothing).
+    const WorkProgress& workProgress() const { return mWorkProgress; }
+
 protected:
     /// @brief An action dispatching through `methods` (usually the subclass's static table).
     explicit Action(const MethodTable& methods) : mMethods(&methods) {}
@@ -73,6 +82,7 @@ private:
     State mState;
     std::vector<Node*> mPath;
     bool mHasTerminated = false;
+    WorkProgress mWorkProgress;
 };
 
 } // namespace texsplat::sg

@@ -27,6 +27,14 @@ RenderStatistics& RenderStatistics::operator+=(const RenderStatistics& other) {
     splats += other.splats;
     triangles += other.triangles;
     memory.keepLarger(other.memory);
+    builds += other.builds;
+    return *this;
+}
+
+FrameBuilds& FrameBuilds::operator+=(const FrameBuilds& other) {
+    valueRanges += other.valueRanges;
+    classifications += other.classifications;
+    octrees += other.octrees;
     return *this;
 }
 

@@ -38,12 +38,25 @@ struct FrameMemory {
     void keepLarger(const FrameMemory& other);
 };
 
+/// @brief What the splat nodes made during a frame rather than kept from an earlier one: a
+/// transfer-function edit classifies again (and builds a new octree for a cut) but makes no new
+/// value ranges, which follow the data alone.
+struct FrameBuilds {
+    std::size_t valueRanges = 0;     ///< block value ranges of a grid (octree::ValueRanges)
+    std::size_t classifications = 0; ///< classified grids
+    std::size_t octrees = 0;         ///< octrees over a classified grid
+
+    /// @brief Adds another frame's counts.
+    FrameBuilds& operator+=(const FrameBuilds& other);
+};
+
 /// @brief Where one frame's time went and how much it drew.
 struct RenderStatistics {
     std::array<double, kRenderPhaseCount> seconds{}; ///< wall seconds per RenderPhase
     std::size_t splats = 0;    ///< splats drawn (instances)
     std::size_t triangles = 0; ///< opaque triangles drawn (splat quads not counted)
     FrameMemory memory;        ///< bytes the frame's drawing keeps
+    FrameBuilds builds;        ///< what the frame made rather than kept
 
     /// @brief Seconds spent in `phase`.
     double time(RenderPhase phase) const { return seconds[static_cast<std::size_t>(phase)]; }

@@ -271,6 +271,29 @@ TEST_F(BenchCommandTest, measuresAScenesOwnSplatNodesAtEachBudget) {
     EXPECT_GT(std::stod(rows[1][20]), 0.0);
 }
 
+TEST_F(BenchCommandTest, timesTheFrameAfterATransferFunctionEditAgainstAFreshScene) {
+    const std::string scene = writeSmallScene(path("small.iv"));
+    const auto output =
+        runTexsplat("bench " + scene + " --size 32x32 --transfer-edit 200 --threads 1");
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    const std::vector<std::string> lines = split(output.standardOutput, '\n');
+    ASSERT_EQ(lines.size(), 6u) << output.standardOutput;
+    EXPECT_EQ(lines[0].rfind("texsplat bench --transfer-edit: " + scene + ", 32x32, CPU (", 0),
+              0u)
+        << lines[0];
+    // Full resolution and 200 splats, each after both edits; no edit rebuilds the value ranges.
+    const std::vector<std::string> starts{"opacities x 0.5     full", "range from 30 %     full",
+                                          "opacities x 0.5      200", "range from 30 %      200"};
+    for (std::size_t row = 0; row < starts.size(); ++row) {
+        EXPECT_EQ(lines[row + 2].rfind(starts[row], 0), 0u) << lines[row + 2];
+        EXPECT_EQ(lines[row + 2].back(), '0') << lines[row + 2];
+    }
+    auto noEdit = runTexsplat("bench --transfer-edit 200");
+    EXPECT_EQ(noEdit.exitCode, 1);
+    EXPECT_EQ(noEdit.standardError, "texsplat: error: --transfer-edit: only with a SCENE (its "
+                                    "transfer functions are edited)\n");
+}
+
 TEST_F(BenchCommandTest, reportsBadSceneOptionsByTheirExactMessage) {
     const std::string scene = writeSmallScene(path("small.iv"));
     auto output = runTexsplat("bench " + scene + " --budgets 1,0");

@@ -41,8 +41,8 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
     const std::string scene = writeZeroVolumeScene();
     expectError(scene + " --memory-limit 8M",
                 scene + ":5:1: TextureSplat: classifying and splatting 64x64x64 voxels would "
-                        "need 26236928 bytes (25 MiB), more than the memory limit of 8388608 "
-                        "bytes (8 MiB); the classified grid takes 4.02 MiB, the octree 0 KiB, the "
+                        "need 26243072 bytes (25 MiB), more than the memory limit of 8388608 "
+                        "bytes (8 MiB); the classified grid takes 4.03 MiB, the octree 0 KiB, the "
                         "splats 21 MiB; use a volume of lower resolution, a splat budget "
                         "(maxSplats, or --max-splats) to bound the splats, or a larger "
                         "--memory-limit");
@@ -55,7 +55,7 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
     // The ray-cast reference classifies too, but makes no splats.
     expectError(scene + " --raycast --memory-limit 2M",
                 scene + ":5:1: TextureSplat: classifying 64x64x64 voxels for the ray-cast "
-                        "reference would need 4216832 bytes (4.02 MiB), more than the memory limit "
+                        "reference would need 4222976 bytes (4.03 MiB), more than the memory limit "
                         "of 2097152 bytes (2 MiB); use a volume of lower resolution or a larger "
                         "--memory-limit");
     // A splat budget bounds the splats: the same frame fits.
@@ -105,7 +105,7 @@ TEST_F(HostileInputTest, runningOutOfMemoryNamesTheStageNotAnInternalError) {
         << result.standardError;
     EXPECT_NE(result.standardError.find(
                   scene + ":5:1: TextureSplat: classifying: out of memory (this stage was "
-                          "estimated at 269877248 bytes (257 MiB)); the memory limit is "
+                          "estimated at 270270464 bytes (258 MiB)); the memory limit is "
                           "1099511627776 bytes (1 TiB); use a volume of lower resolution"),
               std::string::npos)
         << result.standardError;

@@ -11,7 +11,21 @@ ClassificationCache::classified(const volume::ScalarGridPtr& grid,
                                 const nodes::TransferFunction& transfer) {
     ClassificationInputs inputs;
     inputs.grids.push_back(grid);
-    return classified(inputs, transfer, [&] { return transfer.classify(*grid); });
+    return classified(inputs, transfer, [&]() -> std::shared_ptr<const octree::ClassifiedGrid> {
+        if (mValueRanges && grid == mValueRangesGrid) {
+            return transfer.classify(*grid, *mValueRanges, mProgress);
+        }
+        // The grid's first classification makes its value ranges in the same pass.
+        mValueRanges.reset();
+        auto ranges =
+            std::make_unique<octree::ValueRanges>(glm::u64vec3(grid->geometry().dims()));
+        std::shared_ptr<const octree::ClassifiedGrid> result =
+            transfer.classifyRecording(*grid, *ranges, mProgress);
+        mValueRanges = std::move(ranges);
+        mValueRangesGrid = grid;
+        ++mBuilds.valueRanges;
+        return result;
+    });
 }
 
 std::shared_ptr<const octree::ClassifiedGrid>
@@ -22,6 +36,7 @@ ClassificationCache::classified(const ClassificationInputs& inputs,
         mClassified.reset();
         observe(&transfer);
         mClassified = classify();
+        ++mBuilds.classifications;
         mInputs = inputs;
         mTransferChanged = false;
     }
@@ -35,7 +50,8 @@ void ClassificationCache::invalidate() {
 
 const octree::Octree& ClassificationCache::octree() {
     if (!mOctree) {
-        mOctree = std::make_unique<octree::Octree>(mClassified);
+        mOctree = std::make_unique<octree::Octree>(mClassified, mProgress);
+        ++mBuilds.octrees;
     }
     return *mOctree;
 }

@@ -3,7 +3,9 @@
 #include "nodes/volume/Grid.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/Octree.h"
+#include "octree/ValueRanges.h"
 #include "scenegraph/Observer.h"
+#include "scenegraph/WorkProgress.h"
 
 #include <glm/mat4x4.hpp>
 
@@ -32,9 +34,19 @@ struct ClassificationInputs {
 
 /// A splat node's classified grid and octree, kept across frames ("cache classification and
 /// the octree on the node"): rebuilt when the inputs differ from last time, when the transfer
-/// function is replaced or changes (observed), or after invalidate().
+/// function is replaced or changes (observed), or after invalidate(). A scalar grid's block value
+/// ranges (octree::ValueRanges) depend on the data alone: made once per grid, they survive every
+/// transfer-function change and let classification skip what the new function hides.
 class ClassificationCache final : public sg::Observer {
 public:
+    /// How many times each structure was made since the cache was: what a test of "a transfer
+    /// function edit needs no new data hierarchy" counts.
+    struct Builds {
+        std::uint64_t valueRanges = 0;
+        std::uint64_t classifications = 0;
+        std::uint64_t octrees = 0;
+    };
+
     /// Makes the classified grid from the inputs.
     using Classify = std::function<std::shared_ptr<const octree::ClassifiedGrid>()>;
 
@@ -43,7 +55,8 @@ public:
     ClassificationCache& operator=(const ClassificationCache&) = delete;
     ~ClassificationCache() override;
 
-    /// The scalar `grid` classified by `transfer`, from the cache when still valid.
+    /// The scalar `grid` classified by `transfer`, from the cache when still valid; a new
+    /// classification tells the work progress how it goes (and may be cancelled by it).
     std::shared_ptr<const octree::ClassifiedGrid> classified(const volume::ScalarGridPtr& grid,
                                                              const nodes::TransferFunction& transfer);
 
@@ -52,8 +65,21 @@ public:
                                                              const nodes::TransferFunction& transfer,
                                                              const Classify& classify);
 
-    /// The octree over the last classified() grid, built on first use.
+    /// The octree over the last classified() grid, built on first use (telling the work
+    /// progress).
     const octree::Octree& octree();
+
+    /// Where the scalar classification and the octree build made from now on report, and may be
+    /// cancelled (the action's, set by the splat node each frame).
+    void setWorkProgress(sg::WorkProgress progress) { mProgress = std::move(progress); }
+
+    /// Bytes of the value ranges held (0 before a scalar grid was classified).
+    std::uint64_t valueRangeBytes() const {
+        return mValueRanges ? mValueRanges->memoryBytes() : 0;
+    }
+
+    /// What was made so far.
+    const Builds& builds() const { return mBuilds; }
 
     /// Forgets the classification (the node's own fields that classification reads changed).
     void invalidate();
@@ -69,6 +95,10 @@ private:
     bool mTransferChanged = false;
     std::shared_ptr<const octree::ClassifiedGrid> mClassified;
     std::unique_ptr<octree::Octree> mOctree;
+    volume::ScalarGridPtr mValueRangesGrid;
+    std::unique_ptr<octree::ValueRanges> mValueRanges;
+    Builds mBuilds;
+    sg::WorkProgress mProgress;
 };
 
 } // namespace texsplat::render::detail

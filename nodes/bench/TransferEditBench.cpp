@@ -1,0 +1,161 @@
+#include "nodes/bench/TransferEditBench.h"
+
+#include "nodes/ScalarSplat.h"
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "nodes/render/FrameAction.h"
+#include "nodes/render/cpu/CpuRenderer.h"
+#include "octree/ClassifiedGrid.h"
+#include "octree/Octree.h"
+#include "octree/ValueRanges.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/actions/SearchAction.h"
+
+#include <chrono>
+#include <cstdio>
+
+namespace texsplat::bench {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+template <class T> std::vector<T*> nodesOf(sg::Node& root) {
+    sg::SearchAction search;
+    search.setType(T::classType());
+    search.setInterest(sg::SearchAction::Interest::All);
+    search.apply(root);
+    std::vector<T*> found;
+    for (const sg::Path& path : search.paths()) {
+        found.push_back(&static_cast<T&>(*path.tail()));
+    }
+    return found;
+}
+
+struct Edit {
+    const char* name;
+    void (*apply)(nodes::TransferFunction&);
+};
+
+void halveOpacities(nodes::TransferFunction& transfer) {
+    std::vector<float> opacities = transfer.opacities.values();
+    for (float& opacity : opacities) {
+        opacity *= 0.5f;
+    }
+    transfer.opacities.setValue(std::move(opacities));
+}
+
+void raiseRangeMinimum(nodes::TransferFunction& transfer) {
+    const glm::vec2 range = transfer.range.value();
+    transfer.rangeMode.setValue(nodes::RangeMode::Fixed);
+    transfer.range.setValue(glm::vec2(range.x + 0.3f * (range.y - range.x), range.y));
+}
+
+constexpr Edit kEdits[] = {{"opacities x 0.5", halveOpacities},
+                           {"range from 30 %", raiseRangeMinimum}};
+
+// A CPU frame of `root`: its wall time less loading, and its statistics.
+struct Timed {
+    double seconds = 0.0;
+    sg::RenderStatistics statistics;
+};
+
+Timed timeFrame(sg::Node& root, glm::ivec2 size, const render::cpu::CpuRenderer& renderer) {
+    render::FrameAction action(size.x, size.y);
+    const Clock::time_point start = Clock::now();
+    renderer.draw(action.collect(root), action.statistics(), false);
+    Timed timed;
+    timed.seconds = std::chrono::duration<double>(Clock::now() - start).count() -
+                    action.statistics().time(sg::RenderPhase::Load);
+    timed.statistics = action.statistics();
+    return timed;
+}
+
+template <class Step> double secondsOf(Step&& step) {
+    const Clock::time_point start = Clock::now();
+    step();
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The first node of type T in `root`.
+template <class T> T& firstOf(sg::Node& root) {
+    const std::vector<T*> found = nodesOf<T>(root);
+    if (found.empty()) {
+        throw DataError(std::string("bench --transfer-edit: the scene has no ") +
+                        T::classType().name());
+    }
+    return *found.front();
+}
+
+} // namespace
+
+std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, glm::ivec2 size,
+                                                  const std::vector<std::uint64_t>& maxSplats,
+                                                  int threads) {
+    const render::cpu::CpuRenderer renderer(threads);
+    const std::vector<nodes::ScalarSplat*> splatNodes = nodesOf<nodes::ScalarSplat>(*scene);
+    nodes::TransferFunction& transfer = firstOf<nodes::TransferFunction>(*scene);
+    const nodes::VolumeData& volume = firstOf<nodes::VolumeData>(*scene);
+    if (splatNodes.empty()) {
+        throw DataError("bench --transfer-edit: the scene has no splat node");
+    }
+    const std::vector<float> opacities = transfer.opacities.values();
+    const glm::vec2 range = transfer.range.value();
+    const int rangeMode = transfer.rangeMode.value();
+    std::vector<TransferEditTime> rows;
+    for (const std::uint64_t budget : maxSplats) {
+        for (const Edit& edit : kEdits) {
+            for (nodes::ScalarSplat* splat : splatNodes) {
+                splat->maxSplats.setValue(static_cast<int>(budget));
+            }
+            transfer.opacities.setValue(opacities);
+            transfer.range.setValue(range);
+            transfer.rangeMode.setValue(rangeMode);
+            timeFrame(*scene, size, renderer); // classifies, builds what the budget needs
+            edit.apply(transfer);
+            const Timed edited = timeFrame(*scene, size, renderer);
+            TransferEditTime row;
+            row.edit = edit.name;
+            row.maxSplats = budget;
+            row.splats = edited.statistics.splats;
+            row.editSeconds = edited.seconds;
+            row.editValueRanges = edited.statistics.builds.valueRanges;
+            const volume::ScalarGridPtr grid = volume.scalarGrid();
+            row.reclassifySeconds =
+                edited.seconds - edited.statistics.time(sg::RenderPhase::Classify) +
+                secondsOf([&] {
+                    const std::shared_ptr<const octree::ClassifiedGrid> classified =
+                        transfer.classify(*grid);
+                    if (budget > 0) {
+                        const octree::Octree octree(classified);
+                    }
+                });
+            row.valueRangeSeconds = secondsOf([&] {
+                octree::ValueRanges ranges(glm::u64vec3(grid->geometry().dims()));
+                grid->forEachActive([&ranges](const glm::i64vec3& index, float value) {
+                    ranges.add(glm::u64vec3(index), value);
+                });
+            });
+            rows.push_back(row);
+        }
+    }
+    return rows;
+}
+
+std::string transferEditTable(const std::vector<TransferEditTime>& rows) {
+    std::string table = "edit              budget     splats   after edit   re-classify all   "
+                        "ratio   value ranges (once)  rebuilt\n";
+    for (const TransferEditTime& row : rows) {
+        char line[256];
+        std::snprintf(line, sizeof line,
+                      "%-16s %7s %10zu   %8.3f s   %13.3f s   %5.2f   %16.3f s   %zu\n",
+                      row.edit.c_str(),
+                      row.maxSplats == 0 ? "full" : std::to_string(row.maxSplats).c_str(),
+                      row.splats, row.editSeconds, row.reclassifySeconds,
+                      row.reclassifySeconds / row.editSeconds, row.valueRangeSeconds,
+                      row.editValueRanges);
+        table += line;
+    }
+    return table;
+}
+
+} // namespace texsplat::bench

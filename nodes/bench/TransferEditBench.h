@@ -1,0 +1,44 @@
+#pragma once
+
+#include "scenegraph/Node.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace texsplat::bench {
+
+/// @brief One row of measureTransferEdit(): a transfer-function edit and the frame after it.
+struct TransferEditTime {
+    std::string edit;            ///< what was changed, in words
+    std::uint64_t maxSplats = 0; ///< the splat nodes' budget (0: full resolution)
+    std::size_t splats = 0;      ///< splats drawn by the frame after the edit
+    double editSeconds = 0.0;    ///< that frame, on the scene that drew the frame before
+    /// @brief The same frame as the path before value ranges took it: the frame's ordering and
+    /// drawing, plus classifying every voxel of the grid with the edited function (no block
+    /// skipped, a DATA range scanned) and, with a budget, building the octree over that.
+    double reclassifySeconds = 0.0;
+    double valueRangeSeconds = 0.0;  ///< making the grid's value ranges once (the first frame)
+    std::size_t editValueRanges = 0; ///< value ranges the edited frame made (0: none rebuilt)
+};
+
+/// @brief Times what a transfer-function edit costs (docs/results/big-volumes.md): for each
+/// budget of `maxSplats` (0: full resolution) and each of two edits of the scene's transfer
+/// functions — "opacities x 0.5" (what is visible stays so) and "range from 30 %" (the lower 30 %
+/// of `range` becomes transparent; the range becomes FIXED) — the wall time of the next CPU frame
+/// after the edit on a scene that already drew a frame (loading not counted), against the same
+/// frame with the classification (and octree) made as before value ranges existed: every voxel
+/// of the first VolumeData's grid classified by the first TransferFunction.
+/// @throws DataError when the scene has no TransferFunction, VolumeData or splat node; what
+/// rendering throws.
+std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, glm::ivec2 size,
+                                                  const std::vector<std::uint64_t>& maxSplats,
+                                                  int threads);
+
+/// @brief measureTransferEdit()'s rows as a text table.
+std::string transferEditTable(const std::vector<TransferEditTime>& rows);
+
+} // namespace texsplat::bench
