@@ -179,17 +179,24 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
                         (infos.empty() ? "the file has no grids" : "the file has: " + available));
     }
     const std::string where = path + ": grid '" + gridName + "'";
+    const auto cannotRead = [&](const std::string& reason) {
+        return where + " cannot be read (" + reason + ")";
+    };
+    // The type first, from the grid's metadata: the tree of a grid of another type (bool, mask,
+    // points) is not one that the header walk checked, and is not read.
+    const std::string valueType = callOpenVdb(
+        [&] { return file->readGridMetadata(gridName)->valueType(); }, cannotRead);
+    if (valueType != "float" && valueType != "vec3s")
+        throw DataError(where + " holds " + valueType + " values; expected float or vec3s");
     // OpenVDB reads and decompresses the whole grid in this one call, often the longest step.
     reportProgress(progress, path, 0.0, "reading grid '" + gridName + "'");
-    const openvdb::GridBase::Ptr base = callOpenVdb(
-        [&] { return file->readGrid(gridName); },
-        [&](const std::string& reason) { return where + " cannot be read (" + reason + ")"; });
+    const openvdb::GridBase::Ptr base =
+        callOpenVdb([&] { return file->readGrid(gridName); }, cannotRead);
     if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
         return ScalarGridPtr(convert(*scalar, path, gridName, progress));
     if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))
         return VectorGridPtr(convert(*vector, path, gridName, progress));
-    throw DataError(where + " holds " + base->valueType() +
-                    " values; expected float or vec3s");
+    throw DataError(where + " holds " + base->valueType() + " values; expected float or vec3s");
 }
 
 #else
