@@ -6,11 +6,13 @@
 #include "nodes/VolumeData.h"
 #include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
 #include <string>
 
@@ -225,6 +227,32 @@ TEST(NetCdfVolume, aVariableOfAnUnknownTypeIsRefusedBeforeLibNetCdfDividesByItsS
     EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
               path + ": truncated or corrupt NetCDF file: a variable's type is 12, expected 1 "
                      "to 6");
+}
+
+TEST(NetCdfVolume, chunksLargerThanTheMemoryLimitAreRefusedBeforeHdf5ReadsOne) {
+    // A NetCDF-4 file declares its chunks' size, up to 4 GiB each along an unlimited dimension
+    // whatever the variable holds; HDF5 allocated and filled one (80 MB here) to read 8 values.
+    REQUIRE_NCGEN();
+    const std::string path = generate("chunks", R"(netcdf chunks {
+dimensions:
+    time = UNLIMITED ; z = 2 ; y = 2 ; x = 2 ;
+variables:
+    float v(time, z, y, x) ;
+        v:_ChunkSizes = 2500000, 2, 2, 2 ;
+data:
+    v = 1, 2, 3, 4, 5, 6, 7, 8 ;
+}
+)", "nc4");
+    const std::uint64_t limit = std::uint64_t{16} << 20;
+    const std::uint64_t previous = setMemoryLimit(limit);
+    const std::string error = errorOf<ResourceError>([&] { readNetCdfVariable(path, "v"); });
+    setMemoryLimit(previous);
+    EXPECT_EQ(error, path + ": variable 'v': its chunks of 2500000 x 2 x 2 x 2 values of 4 bytes "
+                            "(HDF5 reads a chunk whole) would need " +
+                         bytesText(80000000) + ", more than the memory limit of " +
+                         bytesText(limit) +
+                         "; use a volume of lower resolution, or a larger --memory-limit");
+    EXPECT_NO_THROW(readNetCdfVariable(path, "v")); // under the limit of this machine
 }
 
 TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {
