@@ -229,6 +229,27 @@ TEST(NetCdfVolume, aVariableOfAnUnknownTypeIsRefusedBeforeLibNetCdfDividesByItsS
                      "to 6");
 }
 
+TEST(NetCdfVolume, valuesDeclaredBeyondTheEndOfAClassicFileAreRefused) {
+    // Found by fuzz_netcdf_reader (scripts/fuzz-long.sh, seed 1126): a header of 404 bytes
+    // declared a variable of 100 MB, which libnetcdf read as fill values and texsplat converted
+    // for longer than the fuzzer's 10 s.
+    const std::string path = testPath("beyond.nc");
+    const std::string header("CDF\x01"
+                             "\0\0\0\0"                          // no records
+                             "\0\0\0\x0a\0\0\0\x01"              // one dimension:
+                             "\0\0\0\x01x\0\0\0\x05\xf5\xe1\0"      // x, of 100000000
+                             "\0\0\0\0\0\0\0\0"                  // no global attributes
+                             "\0\0\0\x0b\0\0\0\x01"              // one variable:
+                             "\0\0\0\x01v\0\0\0\0\0\0\x01\0\0\0\0" // v(x)
+                             "\0\0\0\0\0\0\0\0"                  // no attributes
+                             "\0\0\0\x05\x17\xd7\x84\0\0\0\0\x50",   // float, size, offset
+                             80);
+    std::ofstream(path, std::ios::binary) << header;
+    EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
+              path + ": truncated or corrupt NetCDF file: variable 'v' declares 400000000 bytes "
+                     "of values from byte 80, but the file ends at byte 80");
+}
+
 TEST(NetCdfVolume, chunksLargerThanTheMemoryLimitAreRefusedBeforeHdf5ReadsOne) {
     // A NetCDF-4 file declares its chunks' size, up to 4 GiB each along an unlimited dimension
     // whatever the variable holds; HDF5 allocated and filled one (80 MB here) to read 8 values.
