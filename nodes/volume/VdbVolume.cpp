@@ -89,9 +89,12 @@ GridGeometry geometryOf(const openvdb::GridBase& grid, const openvdb::CoordBBox&
         throw DataError(where + " has a rotated, sheared, mirrored or non-linear transform; "
                                 "only axis-aligned scale and translation are supported");
     const openvdb::Vec3d origin = transform.indexToWorld(box.min());
-    const openvdb::Coord dims = box.dim();
+    // In 64 bits: a box from -2^31 to 2^31 - 1 has more voxels a side than an int holds.
+    const glm::i64vec3 dims = glm::i64vec3(box.max().x(), box.max().y(), box.max().z()) -
+                              glm::i64vec3(box.min().x(), box.min().y(), box.min().z()) +
+                              std::int64_t{1};
     try {
-        return GridGeometry(glm::i64vec3(dims.x(), dims.y(), dims.z()),
+        return GridGeometry(dims,
                             glm::dvec3(origin.x(), origin.y(), origin.z()),
                             glm::dvec3(matrix(0, 0), matrix(1, 1), matrix(2, 2)));
     } catch (const DataError& error) {
@@ -133,11 +136,17 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
         openvdb::CoordBBox voxels;
         value.getBoundingBox(voxels); // one voxel, or the extent of an active tile
         const Value stored = toGlm(*value);
-        for (auto coord = voxels.begin(); coord; ++coord) {
-            grid->setValue(glm::i64vec3((*coord).x(), (*coord).y(), (*coord).z()) - low, stored);
-            if (++copied % kProgressInterval == 0)
-                reportProgress(progress, path, double(copied) / total, message);
-        }
+        // In 64 bits: OpenVDB's box iterator steps past the largest int to the smallest, and
+        // goes on, for a voxel at index 2^31 - 1.
+        const glm::i64vec3 first(voxels.min().x(), voxels.min().y(), voxels.min().z());
+        const glm::i64vec3 last(voxels.max().x(), voxels.max().y(), voxels.max().z());
+        for (std::int64_t x = first.x; x <= last.x; ++x)
+            for (std::int64_t y = first.y; y <= last.y; ++y)
+                for (std::int64_t z = first.z; z <= last.z; ++z) {
+                    grid->setValue(glm::i64vec3(x, y, z) - low, stored);
+                    if (++copied % kProgressInterval == 0)
+                        reportProgress(progress, path, double(copied) / total, message);
+                }
     }
     reportProgress(progress, path, 1.0, message);
     detail::checkFiniteVoxels(where, grid->statistics());

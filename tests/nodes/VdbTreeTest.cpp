@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <string>
 
 namespace texsplat::volume {
@@ -240,6 +241,39 @@ TEST(VdbTree, aTileCountBeyondTheFileIsRefused) {
                      "at byte " + std::to_string(at + 12) +
                   " declares 3806520034 items of at least 8205 bytes, but the file ends at byte " +
                   std::to_string(bytes.size()));
+}
+
+TEST(VdbTree, aRootChildOriginOpenVdbDoesNotWriteIsRefused) {
+    // Found by fuzz_vdb_reader: origins near the ends of the int range overflowed the index
+    // arithmetic of OpenVDB's bounding boxes (UndefinedBehaviorSanitizer); OpenVDB writes the
+    // root's tiles and children at multiples of 4096.
+    constexpr float kBackground = 1.2345678e-7f;
+    std::string bytes = contents(writeFile("origin.vdb", {denseLeaf(kBackground)},
+                                           openvdb::io::COMPRESS_ZIP));
+    const std::string background(reinterpret_cast<const char*>(&kBackground), 4);
+    const std::size_t at = bytes.find(background);
+    ASSERT_NE(at, std::string::npos);
+    ASSERT_EQ(bytes.substr(at + 4, 20), std::string("\0\0\0\0\x01\0\0\0\0\0\0\0\0\0\0\0\0\0\0\0", 20));
+    bytes.replace(at + 12, 4, "\xff\xff\xff\x7f"); // the child's x: 2^31 - 1
+    const std::string path = save("origin.vdb", bytes);
+    EXPECT_EQ(readEveryGrid(path),
+              path + ": truncated or corrupt VDB file: grid 'density': a child node's origin at "
+                     "byte " + std::to_string(at + 12) +
+                  " is (2147483647, 0, 0), not a multiple of 4096");
+}
+
+TEST(VdbTree, aGridAsWideAsTheIndexRangeIsRead) {
+    // Its box has 2^32 voxels a side, more than OpenVDB's int Coord::dim() holds (it overflowed).
+    openvdb::initialize();
+    auto wide = openvdb::FloatGrid::create(0.0f);
+    wide->setName("wide");
+    wide->tree().setValue({std::numeric_limits<std::int32_t>::min(), 0, 0}, 1.0f);
+    wide->tree().setValue({std::numeric_limits<std::int32_t>::max(), 0, 0}, 2.0f);
+    const std::string path = writeFile("wide.vdb", {wide}, openvdb::io::COMPRESS_ZIP);
+    const ScalarGridPtr grid = std::get<ScalarGridPtr>(readVdbGrid(path, "wide"));
+    EXPECT_EQ(grid->geometry().dims(), glm::i64vec3(std::int64_t{1} << 32, 1, 1));
+    EXPECT_EQ(grid->value({0, 0, 0}), 1.0f);
+    EXPECT_EQ(grid->value({(std::int64_t{1} << 32) - 1, 0, 0}), 2.0f);
 }
 
 TEST(VdbTree, aGridPlacedOutsideTheFileIsRefused) {

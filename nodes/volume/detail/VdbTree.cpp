@@ -54,8 +54,11 @@ public:
         const std::uint64_t tiles = mFile.littleEndian(4, "the root's tile count");
         const std::uint64_t children = mFile.littleEndian(4, "the root's child count");
         // A tile: its origin, its value and whether it is active.
-        mFile.skip(mFile.sized(tiles, kCoordBytes + mValues.full + 1, "the root's tiles"),
-                   "the root's tiles");
+        mFile.sized(tiles, kCoordBytes + mValues.full + 1, "the root's tiles");
+        for (std::uint64_t i = 0; i < tiles; ++i) {
+            origin("a root tile's origin");
+            mFile.skip(mValues.full + 1, "a root tile's value");
+        }
         mFile.sized(children, kCoordBytes + 2 * maskBytes(kUpperLog2Dim) + 1,
                     "the root's child nodes");
         // OpenVDB keeps the root's children in a map by origin (a repeated origin replaces the
@@ -63,12 +66,10 @@ public:
         // count of each leaf, per child, says how many values its block holds.
         std::map<Coord, std::vector<std::uint16_t>> leaves;
         for (std::uint64_t i = 0; i < children; ++i) {
-            Coord origin;
-            for (std::int32_t& axis : origin)
-                axis = static_cast<std::int32_t>(mFile.littleEndian(4, "a child node's origin"));
+            const Coord childOrigin = origin("a child node's origin");
             std::vector<std::uint16_t> activeVoxels;
             internalTopology(kUpperLog2Dim, activeVoxels);
-            leaves[origin] = std::move(activeVoxels);
+            leaves[childOrigin] = std::move(activeVoxels);
         }
         for (const auto& child : leaves)
             for (const std::uint16_t active : child.second) {
@@ -78,6 +79,24 @@ public:
     }
 
 private:
+    // The origin of a root tile or child: OpenVDB writes multiples of the root's child size
+    // (4096), so that origin + 4095 is an index; other values overflow its index arithmetic.
+    Coord origin(const char* what) {
+        const std::uint64_t at = mFile.offset();
+        Coord origin;
+        for (std::int32_t& axis : origin)
+            axis = static_cast<std::int32_t>(mFile.littleEndian(4, what));
+        constexpr std::int32_t kRootChildSize = std::int32_t{1} << (kUpperLog2Dim + kLowerLog2Dim +
+                                                                    kLeafLog2Dim);
+        for (const std::int32_t axis : origin)
+            if (axis % kRootChildSize != 0)
+                mFile.corrupt(std::string(what) + " at byte " + std::to_string(at) + " is (" +
+                              std::to_string(origin[0]) + ", " + std::to_string(origin[1]) + ", " +
+                              std::to_string(origin[2]) + "), not a multiple of " +
+                              std::to_string(kRootChildSize));
+        return origin;
+    }
+
     // An internal node: its child mask, its value mask, its values, then its children.
     void internalTopology(int log2Dim, std::vector<std::uint16_t>& leafActiveVoxels) {
         const std::uint64_t children =
