@@ -50,12 +50,13 @@ std::string corrupt(const std::string& path, const std::string& reason) {
 }
 
 // Opens with OpenVDB after checking the path ourselves, so a missing file gets the same message
-// as from the raw reader instead of OpenVDB's wording, and the sizes its header declares
-// against the file before OpenVDB allocates for them.
+// as from the raw reader instead of OpenVDB's wording, and every size and count the file
+// declares (header, metadata, transforms, trees) against the file before OpenVDB allocates or
+// loops for them.
 std::unique_ptr<openvdb::io::File> openVdb(const std::string& path) {
     openvdb::initialize();
     detail::openForReading(path);
-    detail::checkVdbHeaderSizes(path);
+    detail::checkVdbDeclaredSizes(path);
     auto file = std::make_unique<openvdb::io::File>(path);
     callOpenVdb([&] { return file->open(false); },
                 [&](const std::string& reason) {

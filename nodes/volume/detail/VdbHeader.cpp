@@ -224,7 +224,7 @@ private:
 
 } // namespace
 
-void checkVdbHeaderSizes(const std::string& path) {
+void checkVdbDeclaredSizes(const std::string& path) {
     DeclaredSizes file(path, "truncated or corrupt VDB file");
     if (file.startsWith(std::string(" BDV\0\0\0\0", 8)))
         VdbWalk(file, path).walk();
