@@ -68,7 +68,8 @@ std::vector<float> interleave(const nodes::TriangleMesh& mesh) {
 } // namespace
 
 MeshBatch::MeshBatch(const nodes::TriangleMesh& mesh)
-    : mProgram("mesh", kMeshVertexShader, gl::withLightScale(kMeshFragmentShader)), mIndexCount(mesh.indices.size()) {
+    : mProgram("mesh", kMeshVertexShader, gl::withLightScale(kMeshFragmentShader)),
+      mIndexCount(mesh.indices.size()) {
     TEXSPLAT_ASSERT(mIndexCount <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
                     "MeshBatch::MeshBatch(): more indices than one draw can take");
     mVertices.setData(interleave(mesh));
