@@ -80,7 +80,12 @@ std::vector<VdbGridInfo> gridInfos(openvdb::io::File& file, const std::string& p
 GridGeometry geometryOf(const openvdb::GridBase& grid, const openvdb::CoordBBox& box,
                         const std::string& where) {
     const openvdb::math::Transform& transform = grid.transform();
-    const openvdb::Mat4d matrix = transform.baseMap()->getAffineMap()->getMat4();
+    // A damaged scale (0, NaN) makes OpenVDB throw while it makes the affine map.
+    const openvdb::Mat4d matrix = callOpenVdb(
+        [&] { return transform.baseMap()->getAffineMap()->getMat4(); },
+        [&](const std::string& reason) {
+            return where + " has a transform OpenVDB cannot use (" + reason + ")";
+        });
     bool axisAligned = transform.isLinear();
     for (int row = 0; row < 3; ++row)
         for (int column = 0; column < 3; ++column)

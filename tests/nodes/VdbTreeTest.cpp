@@ -279,6 +279,29 @@ TEST(VdbTree, aGridAsWideAsTheIndexRangeIsRead) {
     EXPECT_EQ(grid->value({(std::int64_t{1} << 32) - 1, 0, 0}), 2.0f);
 }
 
+TEST(VdbTree, aSingularTransformIsReportedWithTheGrid) {
+    // Found by fuzz_vdb_reader (scripts/fuzz-long.sh, seed 2026): a damaged scale of 0 made
+    // OpenVDB throw ArithmeticError while texsplat asked for the grid's affine map, outside the
+    // wrapper of OpenVDB's calls (std::terminate in the fuzzer, an internal error in texsplat).
+    openvdb::FloatGrid::Ptr grid = denseLeaf();
+    grid->setTransform(openvdb::math::Transform::createLinearTransform(0.375));
+    std::string bytes = contents(writeFile("scale.vdb", {grid}, openvdb::io::COMPRESS_ZIP));
+    const double scale = 0.375;
+    const std::string three(3 * sizeof scale, '\0');
+    std::string pattern;
+    for (int i = 0; i < 3; ++i)
+        pattern.append(reinterpret_cast<const char*>(&scale), sizeof scale);
+    const std::size_t at = bytes.find(pattern); // the map's scale, its first vector
+    ASSERT_NE(at, std::string::npos);
+    bytes.replace(at, pattern.size(), three);
+    const std::string path = save("scale.vdb", bytes);
+    const std::string error = readEveryGrid(path);
+    EXPECT_EQ(error.rfind(path + ": grid 'density' has a transform OpenVDB cannot use "
+                                 "(ArithmeticError: ", 0),
+              0u)
+        << error;
+}
+
 TEST(VdbTree, aGridPlacedOutsideTheFileIsRefused) {
     std::string bytes = contents(writeFile("grid.vdb", {denseLeaf()}, openvdb::io::COMPRESS_ZIP));
     // The header (65 bytes, as in VdbVolumeTest), the name "density", the type
