@@ -16,7 +16,7 @@ build=${1:?usage: scripts/fuzz.sh <fuzz build dir> --ci}
 source "$(dirname "$0")/fuzz-targets.sh"
 # Runs per target in CI; 500000 for any target not named.
 declare -A ci_runs=(
-    [fuzz_vdb_reader]=30 [fuzz_netcdf_reader]=200 [fuzz_gltf_reader]=4000
+    [fuzz_vdb_reader]=3000 [fuzz_netcdf_reader]=200 [fuzz_gltf_reader]=4000
     [fuzz_png_reader]=3000 [fuzz_exr_reader]=80 [fuzz_command_line]=1000
 )
 failed=0

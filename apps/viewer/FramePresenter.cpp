@@ -1,6 +1,7 @@
 #include "apps/viewer/FramePresenter.h"
 
 #include "scenegraph/gl/Framebuffer.h"
+#include "scenegraph/gl/LightScale.h"
 
 #include <epoxy/gl.h>
 
@@ -27,6 +28,7 @@ constexpr const char* kFragmentShader = R"(#version 330 core
 in vec2 uv;
 uniform sampler2D frame;
 uniform vec3 background;
+uniform float lightScale; // the factor by which the frame holds its light (gl/LightScale.h)
 out vec4 color;
 vec3 encodeSrgb(vec3 linear) {
     vec3 c = clamp(linear, 0.0, 1.0);
@@ -34,7 +36,8 @@ vec3 encodeSrgb(vec3 linear) {
 }
 void main() {
     vec4 premultiplied = texture(frame, uv);
-    color = vec4(encodeSrgb(premultiplied.rgb + (1.0 - premultiplied.a) * background), 1.0);
+    vec3 light = premultiplied.rgb / lightScale;
+    color = vec4(encodeSrgb(light + (1.0 - premultiplied.a) * background), 1.0);
 }
 )";
 
@@ -55,11 +58,16 @@ FramePresenter::FramePresenter() : mProgram("viewer present", kVertexShader, kFr
 
 void FramePresenter::present(const gl::Framebuffer& frame, const glm::vec3& background,
                              const glm::ivec2& windowSize) {
-    present(frame.colorTexture(), background, windowSize);
+    draw(frame.colorTexture(), background, windowSize, gl::kLightScale);
 }
 
 void FramePresenter::present(const gl::Texture2D& color, const glm::vec3& background,
                              const glm::ivec2& windowSize) {
+    draw(color, background, windowSize, 1.0f);
+}
+
+void FramePresenter::draw(const gl::Texture2D& color, const glm::vec3& background,
+                          const glm::ivec2& windowSize, float lightScale) {
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, windowSize.x, windowSize.y);
     glDisable(GL_DEPTH_TEST);
@@ -68,6 +76,7 @@ void FramePresenter::present(const gl::Texture2D& color, const glm::vec3& backgr
     color.bind(0);
     mProgram.setUniform("frame", 0);
     mProgram.setUniform("background", background);
+    mProgram.setUniform("lightScale", lightScale);
     mEmpty.bind();
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

@@ -23,8 +23,9 @@ class FramePresenter {
 public:
     FramePresenter();
 
-    /// @brief Draws `frame` over `background` (linear RGB) into the default framebuffer of size
-    /// `windowSize`, scaled to fill it.
+    /// @brief Draws `frame` (a RenderAction's, whose light GL draws scaled: gl/LightScale.h) over
+    /// `background` (linear RGB) into the default framebuffer of size `windowSize`, scaled to
+    /// fill it.
     void present(const gl::Framebuffer& frame, const glm::vec3& background,
                  const glm::ivec2& windowSize);
 
@@ -39,6 +40,10 @@ public:
     static image::Image readBack(const glm::ivec2& windowSize);
 
 private:
+    // `lightScale`: the factor by which `color` holds the light.
+    void draw(const gl::Texture2D& color, const glm::vec3& background,
+              const glm::ivec2& windowSize, float lightScale);
+
     gl::Program mProgram;
     gl::VertexArray mEmpty; // core profiles draw only with a bound vertex array
 };

@@ -3,6 +3,7 @@
 #include "nodes/TriangleMesh.h"
 #include "nodes/elements/LightElement.h"
 #include "scenegraph/Assert.h"
+#include "scenegraph/gl/LightScale.h"
 
 #include <glm/gtc/matrix_inverse.hpp>
 
@@ -44,7 +45,8 @@ void main() {
     for (int i = 0; i < lightCount; ++i) {
         lit += vertexColor * lightColors[i] * abs(dot(n, lightDirections[i]));
     }
-    fragColor = vec4(lit, 1.0);
+    // Light is drawn scaled (gl/LightScale.h), beyond FLT_MAX as FLT_MAX.
+    fragColor = vec4(min(lit, vec3(3.4028235e38)) * lightScale, 1.0);
 }
 )";
 
@@ -66,7 +68,8 @@ std::vector<float> interleave(const nodes::TriangleMesh& mesh) {
 } // namespace
 
 MeshBatch::MeshBatch(const nodes::TriangleMesh& mesh)
-    : mProgram("mesh", kMeshVertexShader, kMeshFragmentShader), mIndexCount(mesh.indices.size()) {
+    : mProgram("mesh", kMeshVertexShader, gl::withLightScale(kMeshFragmentShader)),
+      mIndexCount(mesh.indices.size()) {
     TEXSPLAT_ASSERT(mIndexCount <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
                     "MeshBatch::MeshBatch(): more indices than one draw can take");
     mVertices.setData(interleave(mesh));

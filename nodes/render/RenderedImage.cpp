@@ -10,8 +10,8 @@ image::Image renderedImage(sg::RenderAction& action, DepthReadback depth) {
     const gl::Framebuffer& framebuffer = action.framebuffer();
     image::Image result(framebuffer.width(), framebuffer.height());
     std::vector<float> rgba = action.readColor();
-    // GL's float blending overflows to ±Inf where light near FLT_MAX adds up; clamp as the CPU
-    // backend and the ray caster do.
+    // Light beyond FLT_MAX (+Inf once scaled back from what GL drew) is FLT_MAX, as on the CPU
+    // backend and in the ray caster.
     for (float& value : rgba) {
         value = std::clamp(value, -std::numeric_limits<float>::max(),
                            std::numeric_limits<float>::max());

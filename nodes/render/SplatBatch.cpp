@@ -8,6 +8,7 @@
 #include "octree/Splat.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/gl/LightScale.h"
 
 #include <glm/gtc/constants.hpp>
 
@@ -18,13 +19,15 @@
 namespace texsplat::render {
 namespace {
 
-// The shading function first (every stage calls it; it opens with the #version line), then
-// `defines`, then the splat frame for a vertex stage, then the stage.
+// The shading function first (every stage calls it; it opens with the #version line, after
+// which the light scale is declared), then `defines`, then the splat frame for a vertex stage,
+// then the stage.
 std::string fragmentSource(const char* stage, const char* defines = "") {
-    return std::string(detail::kSplatShading) + defines + stage;
+    return gl::withLightScale((std::string(detail::kSplatShading) + defines + stage).c_str());
 }
 std::string vertexSource(const char* stage, const char* defines = "") {
-    return std::string(detail::kSplatShading) + defines + detail::kSplatFrame + stage;
+    return gl::withLightScale(
+        (std::string(detail::kSplatShading) + defines + detail::kSplatFrame + stage).c_str());
 }
 
 gl::Program makeProgram(SplatShape shape) {

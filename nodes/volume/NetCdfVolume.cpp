@@ -5,6 +5,7 @@
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
+#include "scenegraph/MemoryLimit.h"
 
 #include <algorithm>
 #include <cmath>
@@ -238,19 +239,31 @@ void checkShape(const NetCdfVariableInfo& info, const std::string& where, std::i
                         "'" + (steps > 0 ? " (0 to " + std::to_string(steps - 1) + ")" : ""));
 }
 
+GridGeometry geometryOf(const glm::i64vec3& dims, const glm::dvec3& origin,
+                        const glm::dvec3& spacing, const std::string& where) {
+    try {
+        return GridGeometry(dims, origin, spacing);
+    } catch (const DataError& error) {
+        throw DataError(where + ": " + error.what());
+    }
+}
+
 // Dims from the last three dimensions (x the last); origin and spacing from their coordinate
 // variables where those are evenly spaced and increasing.
 GridGeometry variableGeometry(const NetCdfFile& file, const NetCdfVariableInfo& info,
                               const std::string& where) {
     const std::size_t first = info.dimensions.size() - 3;
     glm::i64vec3 dims;
+    for (int axis = 0; axis < 3; ++axis)
+        dims[axis] = info.dimensions[first + std::size_t(2 - axis)].length;
+    // The grid is checked against the memory limit before its coordinates are read: they are as
+    // long as its sides, which a NetCDF-4 file may declare of any length.
+    detail::checkGridFitsInMemory(where, geometryOf(dims, glm::dvec3(0.0), glm::dvec3(1.0), where),
+                                  1);
     glm::dvec3 origin(0.0);
     glm::dvec3 spacing(1.0);
     for (int axis = 0; axis < 3; ++axis) {
         const NetCdfDimension& dimension = info.dimensions[first + std::size_t(2 - axis)];
-        dims[axis] = dimension.length;
-        if (dimension.length == 0)
-            continue; // GridGeometry refuses it below
         if (const auto coordinates = coordinateAxis(file, dimension)) {
             origin[axis] = coordinates->first;
             spacing[axis] = coordinates->second;
@@ -261,11 +274,35 @@ GridGeometry variableGeometry(const NetCdfFile& file, const NetCdfVariableInfo& 
                                        "xyz"[axis] + ") is indexed 0, 1, 2, ...");
         }
     }
-    try {
-        return GridGeometry(dims, origin, spacing);
-    } catch (const DataError& error) {
-        throw DataError(where + ": " + error.what());
+    return geometryOf(dims, origin, spacing, where);
+}
+
+// A NetCDF-4 variable stored in chunks is read a chunk at a time, which HDF5 allocates and
+// decompresses whole: the file declares the chunks' size (up to 4 GiB each, along an unlimited
+// dimension beyond the variable), checked before reading.
+void checkChunksFitInMemory(const NetCdfFile& file, int variable, const std::string& where) {
+    int axes = 0;
+    nc_type type = NC_NAT;
+    std::size_t typeBytes = 0;
+    check(nc_inq_varndims(file.id(), variable, &axes), where, "cannot read the dimensions");
+    check(nc_inq_vartype(file.id(), variable, &type), where, "cannot read the type");
+    check(nc_inq_type(file.id(), type, nullptr, &typeBytes), where, "cannot read the type");
+    int storage = NC_CONTIGUOUS;
+    std::vector<std::size_t> chunk(static_cast<std::size_t>(axes));
+    check(nc_inq_var_chunking(file.id(), variable, &storage, chunk.data()), where,
+          "cannot read the chunking");
+    if (storage != NC_CHUNKED)
+        return;
+    std::uint64_t bytes = typeBytes;
+    std::string shape;
+    for (const std::size_t length : chunk) {
+        bytes = byteProduct(bytes, length);
+        shape += (shape.empty() ? "" : " x ") + std::to_string(length);
     }
+    detail::checkFitsInMemory(where + ": its chunks of " + shape + " values of " +
+                                  std::to_string(typeBytes) +
+                                  " bytes (HDF5 reads a chunk whole)",
+                              bytes);
 }
 
 // Stored values to voxel values, by the CF conventions' attributes of the variable.
@@ -320,7 +357,7 @@ AnyGrid readNetCdfVariable(const std::string& path, const std::string& variable,
     checkShape(info, where, timeStep);
     const bool hasTime = info.dimensions.size() == 4;
     const GridGeometry geometry = variableGeometry(file, info, where);
-    detail::checkGridFitsInMemory(where, geometry, 1);
+    checkChunksFitInMemory(file, id, where);
     const ValueMapping mapping = valueMapping(file, id, where);
 
     auto grid = std::make_shared<DenseScalarGrid>(geometry);

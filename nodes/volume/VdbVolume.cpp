@@ -50,12 +50,13 @@ std::string corrupt(const std::string& path, const std::string& reason) {
 }
 
 // Opens with OpenVDB after checking the path ourselves, so a missing file gets the same message
-// as from the raw reader instead of OpenVDB's wording, and the sizes its header declares
-// against the file before OpenVDB allocates for them.
+// as from the raw reader instead of OpenVDB's wording, and every size and count the file
+// declares (header, metadata, transforms, trees) against the file before OpenVDB allocates or
+// loops for them.
 std::unique_ptr<openvdb::io::File> openVdb(const std::string& path) {
     openvdb::initialize();
     detail::openForReading(path);
-    detail::checkVdbHeaderSizes(path);
+    detail::checkVdbDeclaredSizes(path);
     auto file = std::make_unique<openvdb::io::File>(path);
     callOpenVdb([&] { return file->open(false); },
                 [&](const std::string& reason) {
@@ -79,7 +80,12 @@ std::vector<VdbGridInfo> gridInfos(openvdb::io::File& file, const std::string& p
 GridGeometry geometryOf(const openvdb::GridBase& grid, const openvdb::CoordBBox& box,
                         const std::string& where) {
     const openvdb::math::Transform& transform = grid.transform();
-    const openvdb::Mat4d matrix = transform.baseMap()->getAffineMap()->getMat4();
+    // A damaged scale (0, NaN) makes OpenVDB throw while it makes the affine map.
+    const openvdb::Mat4d matrix = callOpenVdb(
+        [&] { return transform.baseMap()->getAffineMap()->getMat4(); },
+        [&](const std::string& reason) {
+            return where + " has a transform OpenVDB cannot use (" + reason + ")";
+        });
     bool axisAligned = transform.isLinear();
     for (int row = 0; row < 3; ++row)
         for (int column = 0; column < 3; ++column)
@@ -89,9 +95,12 @@ GridGeometry geometryOf(const openvdb::GridBase& grid, const openvdb::CoordBBox&
         throw DataError(where + " has a rotated, sheared, mirrored or non-linear transform; "
                                 "only axis-aligned scale and translation are supported");
     const openvdb::Vec3d origin = transform.indexToWorld(box.min());
-    const openvdb::Coord dims = box.dim();
+    // In 64 bits: a box from -2^31 to 2^31 - 1 has more voxels a side than an int holds.
+    const glm::i64vec3 dims = glm::i64vec3(box.max().x(), box.max().y(), box.max().z()) -
+                              glm::i64vec3(box.min().x(), box.min().y(), box.min().z()) +
+                              std::int64_t{1};
     try {
-        return GridGeometry(glm::i64vec3(dims.x(), dims.y(), dims.z()),
+        return GridGeometry(dims,
                             glm::dvec3(origin.x(), origin.y(), origin.z()),
                             glm::dvec3(matrix(0, 0), matrix(1, 1), matrix(2, 2)));
     } catch (const DataError& error) {
@@ -133,11 +142,17 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
         openvdb::CoordBBox voxels;
         value.getBoundingBox(voxels); // one voxel, or the extent of an active tile
         const Value stored = toGlm(*value);
-        for (auto coord = voxels.begin(); coord; ++coord) {
-            grid->setValue(glm::i64vec3((*coord).x(), (*coord).y(), (*coord).z()) - low, stored);
-            if (++copied % kProgressInterval == 0)
-                reportProgress(progress, path, double(copied) / total, message);
-        }
+        // In 64 bits: OpenVDB's box iterator steps past the largest int to the smallest, and
+        // goes on, for a voxel at index 2^31 - 1.
+        const glm::i64vec3 first(voxels.min().x(), voxels.min().y(), voxels.min().z());
+        const glm::i64vec3 last(voxels.max().x(), voxels.max().y(), voxels.max().z());
+        for (std::int64_t x = first.x; x <= last.x; ++x)
+            for (std::int64_t y = first.y; y <= last.y; ++y)
+                for (std::int64_t z = first.z; z <= last.z; ++z) {
+                    grid->setValue(glm::i64vec3(x, y, z) - low, stored);
+                    if (++copied % kProgressInterval == 0)
+                        reportProgress(progress, path, double(copied) / total, message);
+                }
     }
     reportProgress(progress, path, 1.0, message);
     detail::checkFiniteVoxels(where, grid->statistics());
@@ -179,17 +194,24 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
                         (infos.empty() ? "the file has no grids" : "the file has: " + available));
     }
     const std::string where = path + ": grid '" + gridName + "'";
+    const auto cannotRead = [&](const std::string& reason) {
+        return where + " cannot be read (" + reason + ")";
+    };
+    // The type first, from the grid's metadata: the tree of a grid of another type (bool, mask,
+    // points) is not one that the header walk checked, and is not read.
+    const std::string valueType = callOpenVdb(
+        [&] { return file->readGridMetadata(gridName)->valueType(); }, cannotRead);
+    if (valueType != "float" && valueType != "vec3s")
+        throw DataError(where + " holds " + valueType + " values; expected float or vec3s");
     // OpenVDB reads and decompresses the whole grid in this one call, often the longest step.
     reportProgress(progress, path, 0.0, "reading grid '" + gridName + "'");
-    const openvdb::GridBase::Ptr base = callOpenVdb(
-        [&] { return file->readGrid(gridName); },
-        [&](const std::string& reason) { return where + " cannot be read (" + reason + ")"; });
+    const openvdb::GridBase::Ptr base =
+        callOpenVdb([&] { return file->readGrid(gridName); }, cannotRead);
     if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
         return ScalarGridPtr(convert(*scalar, path, gridName, progress));
     if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))
         return VectorGridPtr(convert(*vector, path, gridName, progress));
-    throw DataError(where + " holds " + base->valueType() +
-                    " values; expected float or vec3s");
+    throw DataError(where + " holds " + base->valueType() + " values; expected float or vec3s");
 }
 
 #else

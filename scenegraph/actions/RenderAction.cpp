@@ -2,6 +2,7 @@
 
 #include "scenegraph/actions/detail/DepthOrderedRuns.h"
 #include "scenegraph/gl/CheckGlError.h"
+#include "scenegraph/gl/LightScale.h"
 
 #include <epoxy/gl.h>
 
@@ -94,7 +95,10 @@ void RenderAction::drawPasses() {
     // batches by depth counts as Order; Draw is the rest.
     const double uploadBefore = mStatistics.time(RenderPhase::Upload);
     const double orderBefore = mStatistics.time(RenderPhase::Order);
-    mFramebuffer.clear(mBackground, 1.0f);
+    // Light is drawn scaled (gl/LightScale.h), the background too.
+    glm::vec4 background = mBackground * gl::kLightScale;
+    background.a = mBackground.a;
+    mFramebuffer.clear(background, 1.0f);
     {
         const PassState passState;
         glDisable(GL_BLEND);
@@ -131,6 +135,12 @@ void RenderAction::addTime(RenderPhase phase, double seconds) {
 std::vector<float> RenderAction::readColor() {
     const Clock::time_point start = Clock::now();
     std::vector<float> rgba = mFramebuffer.readColor(gl::RowOrder::TopDown);
+    // The frame holds light scaled by kLightScale (a power of two: exact); beyond FLT_MAX it
+    // becomes +Inf, which callers clamp.
+    for (std::size_t i = 0; i < rgba.size(); i += 4) {
+        for (std::size_t channel = 0; channel < 3; ++channel)
+            rgba[i + channel] /= gl::kLightScale;
+    }
     addTime(RenderPhase::ReadBack, secondsSince(start));
     return rgba;
 }

@@ -96,8 +96,9 @@ public:
     /// @brief Adds `seconds` to `phase` of the current frame's statistics.
     void addTime(RenderPhase phase, double seconds);
 
-    /// @brief The color of the last frame, premultiplied RGBA floats, top row first; the time
-    /// counts as RenderPhase::ReadBack.
+    /// @brief The color of the last frame, premultiplied RGBA floats, top row first, its light
+    /// scaled back from what GL drew (gl/LightScale.h; +Inf beyond FLT_MAX); the time counts as
+    /// RenderPhase::ReadBack. The framebuffer() itself holds the light scaled.
     std::vector<float> readColor();
 
     /// @brief Window-space depth in [0, 1] of the last frame (1: nothing opaque), top row

@@ -7,6 +7,7 @@
 #include "nodes/kernel/KernelOptimizer.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/gl/CheckGlError.h"
+#include "scenegraph/gl/LightScale.h"
 
 #include <gtest/gtest.h>
 
@@ -101,8 +102,9 @@ TEST(SplatBatch, figure2InAnEightBitFramebufferDeviatesByQuantization) {
     test::sharedContext();
     const kernel::CubicKernel cubic = kernel::CubicKernel::paper();
     SplatBatch batch = SplatBatch::textured(kernel::FootprintTexture(cubic, 64));
-    // Emission 0.5 keeps the sum in the middle of the 8-bit range.
-    batch.upload(glowingLayer(0.5f));
+    // Emission 0.5 keeps the sum in the middle of the 8-bit range. GL draws light scaled by
+    // gl::kLightScale (a RenderAction's read-back scales it back): the layer glows as much more.
+    batch.upload(glowingLayer(0.5f / gl::kLightScale));
     gl::Texture2D color(kImageSize, kImageSize, gl::TextureFormat::RGBA8,
                         {gl::TextureFilter::Nearest, gl::TextureWrap::ClampToEdge, false});
     GLuint framebuffer = 0;

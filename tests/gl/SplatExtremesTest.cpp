@@ -259,6 +259,23 @@ std::uint32_t bitsOf(float value) {
 // NaN (quiet, signalling, negative) and ±Inf voxels mixed into a slab of 1: the reader makes
 // them empty with one warning, and the image is exactly that of the slab with 0 (which this
 // transfer function leaves empty) in their place, for every renderer and for stiff media.
+// Many layers of light near the float limit (emission 3e38): GL's float blending added them up
+// to +Inf, and an opaque layer in front multiplied that by 0 (NaN pixels; the read-back's clamp
+// leaves NaN). GL draws light scaled by 2^-64 and the read-back scales it back, so the sum stays
+// finite, and the opaque front layer hides what is behind it.
+TEST(SplatExtremes, manyLayersOfLightNearTheFloatLimitBehindAnOpaqueOneStayFinite) {
+    test::sharedContext();
+    const std::string path =
+        slabFile("bright", [](int, int, int k) { return k == kSlab - 1 ? 1.0f : 0.0f; });
+    for (const RendererCase& renderer : kRenderers) {
+        SCOPED_TRACE(renderer.name);
+        const test::RenderedFrame frame = renderSlab(medium({0.0f, 1.0f}, {1e-3f, 1e8f}, 3e38f),
+                                                     path, makeSplat(renderer.renderer));
+        test::expectFiniteWithAlphaInRange(frame.image, renderer.name);
+        EXPECT_NEAR(centre(frame.image).a, 1.0, 1e-6);
+    }
+}
+
 TEST(SplatExtremes, nanAndInfiniteVoxelsAreEmptyAndLeaveTheImageFinite) {
     test::sharedContext();
     const std::vector<std::uint32_t> nonFinite{0x7fc00000u, 0x7f800001u, 0xffc00000u,

@@ -6,11 +6,13 @@
 #include "nodes/VolumeData.h"
 #include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
 #include <fstream>
 #include <string>
 
@@ -225,6 +227,53 @@ TEST(NetCdfVolume, aVariableOfAnUnknownTypeIsRefusedBeforeLibNetCdfDividesByItsS
     EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
               path + ": truncated or corrupt NetCDF file: a variable's type is 12, expected 1 "
                      "to 6");
+}
+
+TEST(NetCdfVolume, valuesDeclaredBeyondTheEndOfAClassicFileAreRefused) {
+    // Found by fuzz_netcdf_reader (scripts/fuzz-long.sh, seed 1126): a header of 404 bytes
+    // declared a variable of 100 MB, which libnetcdf read as fill values and texsplat converted
+    // for longer than the fuzzer's 10 s.
+    const std::string path = testPath("beyond.nc");
+    const std::string header("CDF\x01"
+                             "\0\0\0\0"                          // no records
+                             "\0\0\0\x0a\0\0\0\x01"              // one dimension:
+                             "\0\0\0\x01x\0\0\0\x05\xf5\xe1\0"      // x, of 100000000
+                             "\0\0\0\0\0\0\0\0"                  // no global attributes
+                             "\0\0\0\x0b\0\0\0\x01"              // one variable:
+                             "\0\0\0\x01v\0\0\0\0\0\0\x01\0\0\0\0" // v(x)
+                             "\0\0\0\0\0\0\0\0"                  // no attributes
+                             "\0\0\0\x05\x17\xd7\x84\0\0\0\0\x50",   // float, size, offset
+                             80);
+    std::ofstream(path, std::ios::binary) << header;
+    EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
+              path + ": truncated or corrupt NetCDF file: variable 'v' declares 400000000 bytes "
+                     "of values from byte 80, but the file ends at byte 80");
+}
+
+TEST(NetCdfVolume, chunksLargerThanTheMemoryLimitAreRefusedBeforeHdf5ReadsOne) {
+    // A NetCDF-4 file declares its chunks' size, up to 4 GiB each along an unlimited dimension
+    // whatever the variable holds; HDF5 allocated and filled one (80 MB here) to read 8 values.
+    REQUIRE_NCGEN();
+    const std::string path = generate("chunks", R"(netcdf chunks {
+dimensions:
+    time = UNLIMITED ; z = 2 ; y = 2 ; x = 2 ;
+variables:
+    float v(time, z, y, x) ;
+        v:_ChunkSizes = 2500000, 2, 2, 2 ;
+data:
+    v = 1, 2, 3, 4, 5, 6, 7, 8 ;
+}
+)", "nc4");
+    const std::uint64_t limit = std::uint64_t{16} << 20;
+    const std::uint64_t previous = setMemoryLimit(limit);
+    const std::string error = errorOf<ResourceError>([&] { readNetCdfVariable(path, "v"); });
+    setMemoryLimit(previous);
+    EXPECT_EQ(error, path + ": variable 'v': its chunks of 2500000 x 2 x 2 x 2 values of 4 bytes "
+                            "(HDF5 reads a chunk whole) would need " +
+                         bytesText(80000000) + ", more than the memory limit of " +
+                         bytesText(limit) +
+                         "; use a volume of lower resolution, or a larger --memory-limit");
+    EXPECT_NO_THROW(readNetCdfVariable(path, "v")); // under the limit of this machine
 }
 
 TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {

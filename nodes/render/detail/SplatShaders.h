@@ -101,11 +101,12 @@ uniform bool gouraud;
 out vec4 fragColor;
 
 void main() {
-    vec4 color = gouraud ? vec4(vertexColor.rgb * colorScale, vertexColor.a)
-                         : shadeSplat(medium.rgb, medium.a,
+    // Light is drawn scaled by lightScale (gl/LightScale.h), so that blending adds it up finite.
+    vec4 color = gouraud ? vec4(vertexColor.rgb * (colorScale * lightScale), vertexColor.a)
+                         : shadeSplat(medium.rgb * lightScale, medium.a,
                                       texture(footprint, texCoord).r * lengthScale);
     // Light beyond FLT_MAX stays FLT_MAX, as on the CPU backend and in the ray caster.
-    fragColor = vec4(min(color.rgb, vec3(3.4028235e38)), color.a);
+    fragColor = vec4(min(color.rgb, vec3(3.4028235e38 * lightScale)), color.a);
 }
 )";
 

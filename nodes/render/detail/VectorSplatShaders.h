@@ -127,18 +127,19 @@ out vec4 fragColor;
 void main() {
     vec2 table = texture(marks, vec3(tableCoord, layer)).rg * float(hasMarks);
 #ifdef COMBINED
-    vec4 scalar = shadeSplat(medium.rgb, medium.a,
+    // Light is drawn scaled by lightScale (gl/LightScale.h), so that blending adds it up finite.
+    vec4 scalar = shadeSplat(medium.rgb * lightScale, medium.a,
                              texture(footprint, footprintCoord).r * lengthScale);
     float intensity = contrast * table.r;
-    fragColor = blend ? vec4(scalar.rgb * (1.0 - intensity) + blendColor * (intensity * scalar.a),
-                             scalar.a)
+    fragColor = blend ? vec4(scalar.rgb * (1.0 - intensity) +
+                             blendColor * (intensity * scalar.a * lightScale), scalar.a)
                       : vec4(scalar.rgb * (1.0 - contrast + intensity), scalar.a);
 #else
     float alpha = polygonAlpha * table.g;
     if (alpha == 0.0) discard; // between the marks: nothing to blend
     vec3 color = blend ? medium.rgb * (1.0 - table.r) + blendColor * table.r
                        : medium.rgb * table.r;
-    fragColor = vec4(color * alpha, alpha);
+    fragColor = vec4(color * (alpha * lightScale), alpha); // scaled: gl/LightScale.h
 #endif
 }
 )";

@@ -1,8 +1,12 @@
 #include "nodes/volume/detail/NetCdfHeader.h"
 
 #include "nodes/volume/detail/DeclaredSizes.h"
+#include "nodes/volume/detail/Printable.h"
+#include "scenegraph/MemoryLimit.h"
 
+#include <cstdint>
 #include <string>
+#include <vector>
 
 namespace texsplat::volume::detail {
 namespace {
@@ -19,17 +23,22 @@ public:
     HeaderWalk(DeclaredSizes& file, int version) : mFile(file), mVersion(version) {}
 
     void walk() {
-        mFile.skip(mVersion == 5 ? 8 : 4, "the record count");
+        std::uint64_t records = count("the record count");
+        if (records == (mVersion == 5 ? ~std::uint64_t{0} : 0xffffffffu))
+            records = 0; // streaming: libnetcdf counts the records from the file's size
+        std::vector<std::uint64_t> dimensions;
         list(kDimensionTag, "the dimension list", [&] {
             name();
-            count("a dimension's length");
+            dimensions.push_back(count("a dimension's length"));
         });
         attributes("the global attributes");
         list(kVariableTag, "the variable list", [&] {
-            name();
-            const int idBytes = mVersion == 5 ? 8 : 4;
-            mFile.skip(mFile.sized(count("a variable's dimensions"), idBytes, "its dimension ids"),
-                       "a variable's dimension ids");
+            const std::string variable = name();
+            const std::uint64_t axes = count("a variable's dimensions");
+            mFile.sized(axes, mVersion == 5 ? 8 : 4, "its dimension ids");
+            std::vector<std::uint64_t> ids;
+            for (std::uint64_t i = 0; i < axes; ++i)
+                ids.push_back(count("a variable's dimension id"));
             attributes("a variable's attributes");
             // libnetcdf divides by the size of the variable's type: an unknown type (size 0
             // there) stops the process with a floating-point exception.
@@ -37,8 +46,9 @@ public:
             if (type < 1 || type > (mVersion == 5 ? 11u : 6u))
                 mFile.corrupt("a variable's type is " + std::to_string(type) + ", expected 1 to " +
                               (mVersion == 5 ? "11" : "6"));
-            mFile.skip((mVersion == 5 ? 8 : 4) + (mVersion == 1 ? 4 : 8),
-                       "a variable's size and offset");
+            mFile.skip(mVersion == 5 ? 8 : 4, "a variable's size");
+            const std::uint64_t begin = mFile.bigEndian(mVersion == 1 ? 4 : 8, "its offset");
+            checkData(variable, begin, typeSize(type), ids, dimensions, records);
         });
     }
 
@@ -50,10 +60,32 @@ private:
     // Padded to a multiple of 4 bytes.
     static std::uint64_t padded(std::uint64_t bytes) { return (bytes + 3) / 4 * 4; }
 
-    void name() {
+    std::string name() {
         const std::uint64_t length = count("a name's length");
-        mFile.skip(length, "a name");
+        std::string text = mFile.bytes(length, "a name");
         mFile.skip(padded(length) - length, "a name's padding");
+        return text;
+    }
+
+    // A variable's values, from byte `begin` (its records: one in each record of the file, the
+    // first at `begin`), must lie in the file: libnetcdf reads what lies beyond as fill values,
+    // so a header of 400 bytes could declare gigabytes to read and convert.
+    void checkData(const std::string& variable, std::uint64_t begin, std::uint64_t typeBytes,
+                   const std::vector<std::uint64_t>& ids,
+                   const std::vector<std::uint64_t>& dimensions, std::uint64_t records) const {
+        std::uint64_t bytes = typeBytes;
+        for (std::size_t axis = 0; axis < ids.size(); ++axis) {
+            if (ids[axis] >= dimensions.size())
+                return; // libnetcdf refuses it itself
+            const bool isRecord = axis == 0 && dimensions[ids[axis]] == 0;
+            bytes = byteProduct(bytes, isRecord ? records : dimensions[ids[axis]]);
+        }
+        const std::uint64_t end = mFile.offset() + mFile.left();
+        if (begin > end || bytes > end - begin)
+            mFile.corrupt("variable '" + printable(variable) + "' declares " +
+                          std::to_string(bytes) + " bytes of values from byte " +
+                          std::to_string(begin) + ", but the file ends at byte " +
+                          std::to_string(end));
     }
 
     // A list of `tag` items: ABSENT (two zero words) or the tag, a count and the items; each item

@@ -4,13 +4,16 @@
 
 namespace texsplat::volume::detail {
 
-/// @brief Checks the sizes that an OpenVDB file (format 222 and later: OpenVDB 3 on) declares
-/// for its strings and metadata (the file's metadata, each grid's descriptor, metadata and
-/// transform type) against the bytes the file has, before OpenVDB reads them: OpenVDB allocates
-/// and fills a string as long as a damaged length says (2.7 GB from a file of 10 KB, found by
-/// fuzz_vdb_reader). Files of older formats, or that are not OpenVDB files, are left to OpenVDB.
+/// @brief Walks an OpenVDB file (format 222 and later: OpenVDB 3 on) as OpenVDB 10 reads it,
+/// checking every size and count it declares against the bytes the file has before OpenVDB
+/// allocates or loops for them: the file's metadata, each grid's descriptor and the positions it
+/// gives, each grid's metadata, transform and tree (VdbTree.h). OpenVDB allocated and filled a
+/// string as long as a damaged length said (2.7 GB from a file of 10 KB), a block as large as a
+/// damaged size said, and looped over a damaged tile count (found by fuzz_vdb_reader). Files
+/// that are not OpenVDB files are left to OpenVDB.
 /// @throws IoError "path: truncated or corrupt VDB file: a metadata name at byte 57 needs
-/// 3806520034 bytes, but the file ends at byte 10175".
-void checkVdbHeaderSizes(const std::string& path);
+/// 3806520034 bytes, but the file ends at byte 10175", with the grid named where one is being
+/// walked; "path: VDB file format 221 is older than 222 …" for older formats.
+void checkVdbDeclaredSizes(const std::string& path);
 
 } // namespace texsplat::volume::detail
