@@ -26,23 +26,6 @@ std::uint64_t nodeKey(const NodeRef& node) {
     return node.index ^ (static_cast<std::uint64_t>(node.level) << 58);
 }
 
-// Whether every voxel centre of `grid` lies in front of the perspective eye, with a margin for
-// rounding: depth is linear, so the box of the centres is in front when its corners are.
-bool isInFrontOfEye(const ClassifiedGrid& grid, const View& view) {
-    const glm::dvec3 low = grid.toWorld(glm::dvec3(0.0));
-    const glm::dvec3 high = grid.toWorld(glm::dvec3(grid.dims()) - 1.0);
-    const double margin = 1e-9 * (glm::length(high - low) + glm::length(view.eye() - low));
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 point((corner & 1) != 0 ? high.x : low.x,
-                               (corner & 2) != 0 ? high.y : low.y,
-                               (corner & 4) != 0 ? high.z : low.z);
-        if (!(view.depth(point) > margin)) {
-            return false;
-        }
-    }
-    return true;
-}
-
 } // namespace
 
 int tableColumn(float towardEye, int columns) {
@@ -117,7 +100,10 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
     splats.clear();
     TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
     const SliceOrder order(grid, view);
-    const bool cullsBehindEye = view.isPerspective() && !isInFrontOfEye(grid, view);
+    // The voxel centres' box in front of the eye: no voxel can be behind it.
+    const bool cullsBehindEye =
+        !view.isBoxInFrontOfEye(grid.toWorld(glm::dvec3(0.0)),
+                                grid.toWorld(glm::dvec3(grid.dims()) - 1.0));
     // Whether a voxel makes a splat: not empty, not behind the eye.
     const auto isDrawn = [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
         return grid.storedVoxel(stored) != glm::vec4(0.0f) &&

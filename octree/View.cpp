@@ -55,16 +55,23 @@ double View::depth(glm::dvec3 point) const {
     return glm::dot(point - mEye, mDirection);
 }
 
+glm::dvec3 View::farthestCorner(glm::dvec3 low, glm::dvec3 high) const {
+    // Per axis, the upper face when the direction's component is positive.
+    return {mDirection.x > 0.0 ? high.x : low.x, mDirection.y > 0.0 ? high.y : low.y,
+            mDirection.z > 0.0 ? high.z : low.z};
+}
+
 bool View::isBoxBehindEye(glm::dvec3 low, glm::dvec3 high) const {
+    return isPerspective() && depth(farthestCorner(low, high)) <= 0.0;
+}
+
+bool View::isBoxInFrontOfEye(glm::dvec3 low, glm::dvec3 high) const {
     if (!isPerspective()) {
-        return false;
+        return true;
     }
-    // The corner farthest along the direction takes, per axis, the upper face when the
-    // direction's component is positive.
-    const glm::dvec3 farthest(mDirection.x > 0.0 ? high.x : low.x,
-                              mDirection.y > 0.0 ? high.y : low.y,
-                              mDirection.z > 0.0 ? high.z : low.z);
-    return depth(farthest) <= 0.0;
+    // The nearest corner is the farthest one of the box turned around: low and high swapped.
+    const double margin = 1e-9 * (glm::length(high - low) + glm::length(mEye - low));
+    return depth(farthestCorner(high, low)) > margin;
 }
 
 } // namespace texsplat::octree

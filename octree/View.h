@@ -47,7 +47,15 @@ public:
     /// a perspective view (never for an orthographic view): nothing in it can be projected.
     [[nodiscard]] bool isBoxBehindEye(glm::dvec3 low, glm::dvec3 high) const;
 
+    /// @brief Whether a perspective view sees the whole box [low, high] in front of the eye,
+    /// with a margin for rounding (so that no point of it has depth() <= 0); always true for an
+    /// orthographic view.
+    [[nodiscard]] bool isBoxInFrontOfEye(glm::dvec3 low, glm::dvec3 high) const;
+
 private:
+    // The corner of the box [low, high] farthest along the direction.
+    glm::dvec3 farthestCorner(glm::dvec3 low, glm::dvec3 high) const;
+
     View(Projection projection, glm::dvec3 direction, glm::dvec3 eye);
 
     Projection mProjection;

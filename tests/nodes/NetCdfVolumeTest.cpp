@@ -209,21 +209,46 @@ TEST(NetCdfVolume, sizesInAClassicHeaderAreCheckedAgainstTheFileBeforeLibNetCdfA
                      "at byte 36");
 }
 
+// The 80-byte header of a classic NetCDF file with one dimension x of `length` and one
+// variable v(x) of NetCDF type `type` whose values take `size` bytes from byte 80 (the
+// header's end, so the file holds none of them).
+std::string oneVariableHeader(std::uint32_t length, std::uint32_t type, std::uint32_t size) {
+    std::string header("CDF\x01", 4);
+    const auto word = [&header](std::uint32_t value) {
+        for (int shift = 24; shift >= 0; shift -= 8) {
+            header.push_back(static_cast<char>((value >> shift) & 0xff));
+        }
+    };
+    const auto name = [&](char letter) {
+        word(1);
+        header.push_back(letter);
+        header.append(3, '\0'); // padded to 4 bytes
+    };
+    word(0);                 // no records
+    word(10);                // NC_DIMENSION
+    word(1);                 // one dimension:
+    name('x');               // x,
+    word(length);            // of `length`
+    word(0);                 // no global attributes
+    word(0);                 //
+    word(11);                // NC_VARIABLE
+    word(1);                 // one variable:
+    name('v');               // v,
+    word(1);                 // of one dimension,
+    word(0);                 // x
+    word(0);                 // no attributes
+    word(0);                 //
+    word(type);              // its type,
+    word(size);              // the bytes of its values
+    word(80);                // and where they start
+    return header;
+}
+
 TEST(NetCdfVolume, aVariableOfAnUnknownTypeIsRefusedBeforeLibNetCdfDividesByItsSize) {
     // Found by fuzz_netcdf_reader (scripts/fuzz-long.sh, seed 7): a variable of type 12 in a
     // classic file stopped the process with SIGFPE inside libnetcdf (NC_check_vlen).
     const std::string path = testPath("type.nc");
-    const std::string header("CDF\x01"
-                             "\0\0\0\0"                          // no records
-                             "\0\0\0\x0a\0\0\0\x01"              // one dimension:
-                             "\0\0\0\x01x\0\0\0\0\0\0\x03"        // x, of 3
-                             "\0\0\0\0\0\0\0\0"                  // no global attributes
-                             "\0\0\0\x0b\0\0\0\x01"              // one variable:
-                             "\0\0\0\x01v\0\0\0\0\0\0\x01\0\0\0\0" // v(x)
-                             "\0\0\0\0\0\0\0\0"                  // no attributes
-                             "\0\0\0\x0c\0\0\0\x0c\0\0\0\x50",   // type 12, size, offset
-                             80);
-    std::ofstream(path, std::ios::binary) << header;
+    std::ofstream(path, std::ios::binary) << oneVariableHeader(3, 12, 12);
     EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
               path + ": truncated or corrupt NetCDF file: a variable's type is 12, expected 1 "
                      "to 6");
@@ -234,17 +259,7 @@ TEST(NetCdfVolume, valuesDeclaredBeyondTheEndOfAClassicFileAreRefused) {
     // declared a variable of 100 MB, which libnetcdf read as fill values and texsplat converted
     // for longer than the fuzzer's 10 s.
     const std::string path = testPath("beyond.nc");
-    const std::string header("CDF\x01"
-                             "\0\0\0\0"                          // no records
-                             "\0\0\0\x0a\0\0\0\x01"              // one dimension:
-                             "\0\0\0\x01x\0\0\0\x05\xf5\xe1\0"      // x, of 100000000
-                             "\0\0\0\0\0\0\0\0"                  // no global attributes
-                             "\0\0\0\x0b\0\0\0\x01"              // one variable:
-                             "\0\0\0\x01v\0\0\0\0\0\0\x01\0\0\0\0" // v(x)
-                             "\0\0\0\0\0\0\0\0"                  // no attributes
-                             "\0\0\0\x05\x17\xd7\x84\0\0\0\0\x50",   // float, size, offset
-                             80);
-    std::ofstream(path, std::ios::binary) << header;
+    std::ofstream(path, std::ios::binary) << oneVariableHeader(100000000, 5, 400000000);
     EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(path); }),
               path + ": truncated or corrupt NetCDF file: variable 'v' declares 400000000 bytes "
                      "of values from byte 80, but the file ends at byte 80");

@@ -4,6 +4,7 @@
 
 #include "nodes/volume/VdbVolume.h"
 
+#include "SceneNodesTestSupport.h"
 #include "scenegraph/Error.h"
 
 #include <gtest/gtest.h>
@@ -23,12 +24,7 @@
 namespace texsplat::volume {
 namespace {
 
-std::string testPath(const std::string& name) {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    return (std::filesystem::path(::testing::TempDir()) /
-            (std::string("VdbTreeTest_") + info->name() + "_" + name))
-        .string();
-}
+using nodes::test::testPath;
 
 std::string contents(const std::string& path) {
     std::ifstream in(path, std::ios::binary);

@@ -6,6 +6,8 @@
 #include "octree/Splat.h"
 
 #include <glm/geometric.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <glm/vec4.hpp>
 
 #include <algorithm>
@@ -41,41 +43,18 @@ SquareFrame squareFrame(const SplatView& view, const glm::vec3& sight) {
     return {u, glm::cross(axis, u), eLength};
 }
 
-// The cubic c0 + c1·v + c2·v² + c3·v³ through (v[j], y[j]), j < 4: the 4×4 Vandermonde system
-// solved by Gaussian elimination with partial pivoting.
+// The cubic c0 + c1·v + c2·v² + c3·v³ through (v[j], y[j]), j < 4: the Vandermonde system
+// solved with GLM's inverse (the nodes are distinct and within ½ of 0: well conditioned).
 std::array<double, 4> cubicThrough(const double (&v)[4], const double (&y)[4]) {
-    double system[4][5];
-    for (int row = 0; row < 4; ++row) {
+    glm::dmat4 vandermonde; // column k holds v^k, row j belongs to node j
+    for (int j = 0; j < 4; ++j) {
         double power = 1.0;
-        for (int column = 0; column < 4; ++column, power *= v[row]) {
-            system[row][column] = power;
-        }
-        system[row][4] = y[row];
-    }
-    for (int pivot = 0; pivot < 4; ++pivot) {
-        int best = pivot;
-        for (int row = pivot + 1; row < 4; ++row) {
-            if (std::abs(system[row][pivot]) > std::abs(system[best][pivot])) {
-                best = row;
-            }
-        }
-        std::swap(system[pivot], system[best]);
-        for (int row = pivot + 1; row < 4; ++row) {
-            const double factor = system[row][pivot] / system[pivot][pivot];
-            for (int column = pivot; column < 5; ++column) {
-                system[row][column] -= factor * system[pivot][column];
-            }
+        for (int k = 0; k < 4; ++k, power *= v[j]) {
+            vandermonde[k][j] = power;
         }
     }
-    std::array<double, 4> c{};
-    for (int row = 3; row >= 0; --row) {
-        double sum = system[row][4];
-        for (int column = row + 1; column < 4; ++column) {
-            sum -= system[row][column] * c[static_cast<std::size_t>(column)];
-        }
-        c[static_cast<std::size_t>(row)] = sum / system[row][row];
-    }
-    return c;
+    const glm::dvec4 c = glm::inverse(vandermonde) * glm::dvec4(y[0], y[1], y[2], y[3]);
+    return {c[0], c[1], c[2], c[3]};
 }
 
 // Fits `sampler.pieces` to the footprint f(extent·r) over r ∈ [0, √reach] and measures how far
