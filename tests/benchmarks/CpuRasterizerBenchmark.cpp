@@ -3,11 +3,12 @@
 // composites the same set-up splats the same way (tests/nodes/SplatSpansReference.h; the
 // nodes tests hold the two to the same image). The splats are those `texsplat bench` draws with
 // the paper's texture splats in a 512² image: blob64 seen orthographically (one affine map) and
-// in perspective (a homography per splat), squares about 8 pixels from the centre; and blob128
-// in perspective, about 4 pixels, where a splat's rows are short for the SIMD vectors. Both
-// composite all rows on one thread into the same planes again and again (the work per pixel
-// does not depend on what the planes hold); fragments are the pixels inside a square, counted
-// once by the scalar loop.
+// in perspective (a homography per splat), squares about 8 pixels from the centre; blob128 in
+// perspective, about 4 pixels, where a splat's rows are short for the SIMD vectors; and the
+// issue's measure, Marschner–Lobb 128³, orthographic (boxes 9–10 pixels wide) and in
+// perspective (mostly 7–8). Both paths composite all rows on one thread into the same planes
+// again and again (the work per pixel does not depend on what the planes hold); fragments are
+// the pixels inside a square, counted once by the scalar loop.
 #include "nodes/render/cpu/SplatSpans.h"
 
 #include "tests/nodes/SplatSpansReference.h"
@@ -51,13 +52,14 @@ const TimedWorkload& timedWorkload(const std::string& dataset, WorkloadCamera ca
 }
 
 // Times `composite` (`path` names it in the label) over the workload of the benchmark's
-// arguments: the camera (0: orthographic, 1: perspective) and the blob's resolution; reports
-// fragments per second.
+// arguments: the camera (0: orthographic, 1: perspective), the resolution and the dataset (0: the
+// blob, 1: Marschner–Lobb, the measure); reports fragments per second.
 template <typename Composite>
 void timeComposite(benchmark::State& state, const Composite& composite, const std::string& path) {
     const WorkloadCamera camera =
         state.range(0) == 0 ? WorkloadCamera::Orthographic : WorkloadCamera::Perspective;
-    const std::string dataset = "blob" + std::to_string(state.range(1));
+    const std::string dataset =
+        (state.range(2) == 0 ? "blob" : "ml") + std::to_string(state.range(1));
     const TimedWorkload& timed = timedWorkload(dataset, camera);
     const CompositeWorkload& workload = timed.workload;
     ColorPlanes planes(workload.width, workload.height, glm::vec4(0.0f), false);
@@ -88,9 +90,11 @@ void CompositeSplatsSimd(benchmark::State& state) {
         texsplat::render::cpu::compositeTarget());
 }
 BENCHMARK(CompositeSplatsSimd)
-    ->Args({0, 64})
-    ->Args({1, 64})
-    ->Args({1, 128})
+    ->Args({0, 64, 0})
+    ->Args({1, 64, 0})
+    ->Args({1, 128, 0})
+    ->Args({0, 128, 1})
+    ->Args({1, 128, 1})
     ->Unit(benchmark::kMillisecond);
 
 // Baseline: the scalar reference, one pixel at a time, std::expm1 for every fragment.
@@ -104,9 +108,11 @@ void CompositeSplatsBaselineScalar(benchmark::State& state) {
         "scalar");
 }
 BENCHMARK(CompositeSplatsBaselineScalar)
-    ->Args({0, 64})
-    ->Args({1, 64})
-    ->Args({1, 128})
+    ->Args({0, 64, 0})
+    ->Args({1, 64, 0})
+    ->Args({1, 128, 0})
+    ->Args({0, 128, 1})
+    ->Args({1, 128, 1})
     ->Unit(benchmark::kMillisecond);
 TEXSPLAT_BENCHMARK_BASELINE(CompositeSplatsSimd, CompositeSplatsBaselineScalar);
 

@@ -188,6 +188,33 @@ TEST(SplatSpans, matchesScalarReferenceForThickAndPurelyEmissiveMedia) {
     expectMatchesReference(workload, {}, false, 5e-5);
 }
 
+TEST(SplatSpans, matchesScalarReferenceForEveryOpticalDepthAndBoxWidth) {
+    // The loop computes α and the colour weight by φ's short series (largest optical depth up to
+    // 0.1), its long series (up to ½) or Expm1, and draws boxes up to 8 pixels wide with 8 lanes,
+    // wider ones with 16 (AVX-512). Extinctions spread the blob's splats over the three ranges,
+    // and two image sizes give both widths.
+    for (const int size : {64, 160}) {
+        SCOPED_TRACE(size);
+        CompositeWorkload workload =
+            test::compositeWorkload("blob32", "texture", WorkloadCamera::Perspective, size);
+        std::array<std::size_t, 3> depths{};
+        std::array<std::size_t, 2> widths{};
+        for (std::size_t i = 0; i < workload.splats.size(); ++i) {
+            SplatRaster& splat = workload.splats[i];
+            const float largest = 1e-3f * std::pow(1e4f, static_cast<float>(i % 97) / 96.0f);
+            splat.extinction = largest / (splat.lengthScale * workload.sampler->peak);
+            ++depths[largest <= 0.1f ? 0 : largest <= 0.5f ? 1 : 2];
+            ++widths[splat.columnEnd - splat.columnBegin <= 8 ? 0 : 1];
+        }
+        for (const std::size_t count : depths) {
+            EXPECT_GT(count, workload.splats.size() / 10);
+        }
+        EXPECT_GT(widths[size == 64 ? 0 : 1], workload.splats.size() / 2)
+            << widths[0] << " boxes up to 8 pixels wide, " << widths[1] << " wider";
+        expectMatchesReference(workload, {}, false, 5e-5);
+    }
+}
+
 TEST(SplatSpans, matchesScalarReferenceBehindADepthPlane) {
     // A depth plane slanting through the volume hides part of each splat, as a mesh would.
     const CompositeWorkload workload =

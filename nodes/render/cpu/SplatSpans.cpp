@@ -114,9 +114,26 @@ template <class D, class V> HWY_INLINE V PhiSeries(D d, V x) {
     return hn::MulAdd(highest, x4, low);
 }
 
+// φ(x) for 0 ≤ x ≤ kShortSeriesDepth: the series to k = 4, below 1.4e-8 there (the first term
+// left out, x⁵/720), as close as PhiSeries. Horner's rule, four multiply-adds against
+// PhiSeries' eleven operations: every intermediate is near a coefficient, so a tiny x makes no
+// denormal. Most splats of a volume are this thin (Marschner–Lobb 128³: all of them).
+constexpr float kShortSeriesDepth = 0.1f;
+template <class D, class V> HWY_INLINE V PhiShortSeries(D d, V x) {
+    const V q = hn::MulAdd(hn::MulAdd(hn::MulAdd(hn::Set(d, 1.0f / 120.0f), x,
+                                                 hn::Set(d, -1.0f / 24.0f)),
+                                      x, hn::Set(d, 1.0f / 6.0f)),
+                           x, hn::Set(d, -0.5f));
+    return hn::MulAdd(q, x, hn::Set(d, 1.0f));
+}
+
+// How a splat's opacity α = 1 − e^(−x) and colour weight f·φ(x) are computed, from the largest
+// optical depth x its footprint reaches: a short or a long series of φ, or Expm1.
+enum class Depth { Short, Series, Expm1 };
+
 // The radial footprint at ρ = a² + b² from the sampler's cubic pieces in r = √ρ, looked up in
 // registers: each coefficient's 16 values fill 16 / lanes vectors, one permute each and a
-// select between them.
+// select between them (on AVX-512, one permute of two vectors).
 template <class D> class PieceLookup {
 public:
     static constexpr std::size_t kLanes = hn::MaxLanes(D());
@@ -133,37 +150,61 @@ public:
     }
 
     V operator()(D d, V rho) const {
-        const hn::RebindToSigned<D> di;
         // The piece is p rounded to the nearest integer, found by adding 2^23: the sum's
         // mantissa holds it in its low bits (no float-to-int conversion and its overflow
-        // fix-ups). p beyond the last piece (outside the reach, skipped) takes the last one.
-        const V position = hn::Min(hn::Mul(hn::Sqrt(rho), mPerRadius),
-                                   hn::Set(d, FootprintSampler::kPieces - 1.0f));
+        // fix-ups). Lanes beyond the reach (p > kPieces − 1, masked out by the caller) read
+        // some piece.
+        const V position = hn::Mul(hn::Sqrt(rho), mPerRadius);
         const V magic = hn::Set(d, 8388608.0f);
         const V shifted = hn::Add(position, magic);
         const V nearest = hn::Sub(shifted, magic);
         const V v = hn::Sub(position, nearest);
+        const auto c = [&](std::size_t k) { return coefficient(d, k, shifted, nearest); };
+        return hn::MulAdd(hn::MulAdd(hn::MulAdd(c(3), v, c(2)), v, c(1)), v, c(0));
+    }
+
+private:
+    // Coefficient k of each lane's piece: `nearest` is the piece, `shifted` holds it in its low
+    // mantissa bits.
+    V coefficient(D d, std::size_t k, V shifted, V nearest) const {
+        const hn::RebindToSigned<D> di;
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX3
+        if constexpr (kParts == 2 && kLanes == 8) {
+            // AVX-512 on 8 lanes: one two-table permute (vpermt2ps), which Highway 1.0 does not
+            // offer, instead of two permutes and a select.
+            const auto index = hn::And(hn::BitCast(di, shifted), hn::Set(di, 15));
+            return V{_mm256_permutex2var_ps(mCoefficients[k][0].raw, index.raw,
+                                            mCoefficients[k][1].raw)};
+        }
+#endif
         const auto lanes = hn::IndicesFromVec(
             d, hn::And(hn::BitCast(di, shifted), hn::Set(di, static_cast<int>(kLanes - 1))));
-        const auto coefficient = [&](std::size_t k) {
-            V value = hn::TableLookupLanes(mCoefficients[k][0], lanes);
-            for (std::size_t part = 1; part < kParts; ++part) {
-                const auto inPart =
-                    hn::Gt(nearest, hn::Set(d, static_cast<float>(part * kLanes) - 0.5f));
-                value = hn::IfThenElse(inPart, hn::TableLookupLanes(mCoefficients[k][part], lanes),
-                                       value);
-            }
-            return value;
-        };
-        return hn::MulAdd(hn::MulAdd(hn::MulAdd(coefficient(3), v, coefficient(2)), v,
-                                     coefficient(1)),
-                          v, coefficient(0));
+        V value = hn::TableLookupLanes(mCoefficients[k][0], lanes);
+        for (std::size_t part = 1; part < kParts; ++part) {
+            const auto inPart =
+                hn::Gt(nearest, hn::Set(d, static_cast<float>(part * kLanes) - 0.5f));
+            value =
+                hn::IfThenElse(inPart, hn::TableLookupLanes(mCoefficients[k][part], lanes), value);
+        }
+        return value;
     }
 
 private:
     V mPerRadius;
     V mCoefficients[4][kParts];
 };
+
+// 1/w to 14 bits, the same bits on 8 lanes as on 16: Highway's estimate on 8 lanes is AVX's
+// 12-bit one even where AVX-512 has the 14-bit one, and a pixel must not depend on the width of
+// its splat's box.
+template <class D, class V> HWY_INLINE V ReciprocalEstimate(D /*d*/, V w) {
+#if HWY_ARCH_X86 && HWY_TARGET <= HWY_AVX3
+    if constexpr (hn::MaxLanes(D()) == 8) {
+        return V{_mm256_rcp14_ps(w.raw)};
+    }
+#endif
+    return hn::ApproximateReciprocal(w);
+}
 
 // What a batch's splats are: scalar (radial profile, radial cubic pieces or texture), vector
 // marks, or combined.
@@ -186,8 +227,9 @@ template <class D> struct Batch {
 };
 
 // Composites rows [first, last) of one splat; with kClamp, every sum is clamped to FLT_MAX
-// (kUnclampedColour says when that is not needed).
-template <Kind kKind, bool kClamp, class D>
+// (kUnclampedColour says when that is not needed); kDepth as the splat's optical depth allows
+// (vector splats: any).
+template <Kind kKind, bool kClamp, Depth kDepth, class D>
 HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, int first,
                                int last) {
     const D d = batch.d;
@@ -217,9 +259,6 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
     const auto inverseTau = hn::Set(d, absorbs ? 1.0f / splat.extinction : 0.0f);
     const auto lengthScale = hn::Set(d, splat.lengthScale);
     const auto reach = hn::Set(d, sampler != nullptr ? sampler->reach : 2.0f);
-    // Thin splats (optical depth at most ½ anywhere) take φ's series, thick ones Expm1.
-    const bool thin =
-        sampler != nullptr && splat.extinction * splat.lengthScale * sampler->peak <= 0.5f;
     const auto ax = hn::Set(d, splat.square[0]);
     const auto bx = hn::Set(d, splat.square[3]);
     const auto wx = hn::Set(d, splat.square[6]);
@@ -249,7 +288,7 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
                 inside = hn::Gt(w, zero);
                 // 1/w: the estimate and one Newton step (relative error ~1e-7), cheaper than a
                 // division.
-                const auto estimate = hn::ApproximateReciprocal(w);
+                const auto estimate = ReciprocalEstimate(d, w);
                 const auto inverseW =
                     hn::Mul(estimate, hn::NegMulAdd(w, estimate, hn::Set(d, 2.0f)));
                 a = hn::Mul(a, inverseW);
@@ -320,8 +359,9 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
             const auto opticalDepth = hn::Mul(tau, f);
             auto alpha = opticalDepth;
             auto weight = f;
-            if (thin) {
-                const auto phi = PhiSeries(d, opticalDepth);
+            if constexpr (kDepth != Depth::Expm1) {
+                const auto phi = kDepth == Depth::Short ? PhiShortSeries(d, opticalDepth)
+                                                        : PhiSeries(d, opticalDepth);
                 alpha = hn::Mul(opticalDepth, phi);
                 weight = hn::Mul(f, phi);
             } else {
@@ -375,18 +415,58 @@ bool isUnclamped(const SplatRaster& splat, const FootprintSampler& sampler) {
            splat.extinction >= 0.0f && splat.extinction <= FLT_MAX;
 }
 
+// How α and the colour weight of `splat` are computed: the series of φ as far as its largest
+// optical depth allows them (thin splats), else Expm1.
+Depth depthOf(const SplatRaster& splat, const FootprintSampler* sampler) {
+    const float largest =
+        sampler != nullptr ? splat.extinction * splat.lengthScale * sampler->peak : HUGE_VALF;
+    return largest <= kShortSeriesDepth ? Depth::Short
+           : largest <= 0.5f            ? Depth::Series
+                                        : Depth::Expm1;
+}
+
+// Composites one splat with the instantiation its clamps and optical depth call for.
+template <Kind kKind, bool kClamp, class D>
+HWY_INLINE void CompositeSplatAtDepth(const Batch<D>& batch, const SplatRaster& splat, int first,
+                                      int last) {
+    if constexpr (kKind == Kind::Vector) {
+        CompositeSplat<kKind, kClamp, Depth::Expm1>(batch, splat, first, last);
+        return;
+    }
+    switch (depthOf(splat, batch.sampler)) {
+    case Depth::Short:
+        CompositeSplat<kKind, kClamp, Depth::Short>(batch, splat, first, last);
+        break;
+    case Depth::Series:
+        CompositeSplat<kKind, kClamp, Depth::Series>(batch, splat, first, last);
+        break;
+    case Depth::Expm1:
+        CompositeSplat<kKind, kClamp, Depth::Expm1>(batch, splat, first, last);
+        break;
+    }
+}
+
 template <Kind kKind>
 void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                          const FootprintSampler* sampler, const MarkSampler* marks,
                          ColorPlanes& planes, int rowBegin, int rowEnd) {
-    // Up to 16 lanes (AVX-512): 1.1× eight on 7–9-pixel-wide splats (CpuRasterizerBenchmark).
-    using D = hn::CappedTag<float, 16>;
-    const D d;
+    // Up to 16 lanes (AVX-512: 1.1× eight on 9–10-pixel-wide boxes), and 8 for boxes no wider:
+    // half-width vectors issue on three ports of AVX-512 instead of two (Marschner–Lobb 128³ in
+    // perspective, three quarters of its boxes 7–8 pixels wide: 1.16×, CpuRasterizerBenchmark).
+    using Wide = hn::CappedTag<float, 16>;
+    using Narrow = hn::CappedTag<float, 8>;
+    constexpr int kNarrowColumns = static_cast<int>(hn::MaxLanes(Narrow()));
     const bool squareTest = sampler == nullptr || sampler->reach > 1.0f;
-    Batch<D> batch{d, sampler, marks, planes, planes.hasDepth(), squareTest, std::nullopt};
-    if constexpr (kKind == Kind::RadialPieces) {
-        batch.pieces.emplace(d, *sampler);
-    }
+    const auto batchOf = [&](auto d) {
+        Batch<decltype(d)> batch{d, sampler, marks, planes, planes.hasDepth(), squareTest,
+                                 std::nullopt};
+        if constexpr (kKind == Kind::RadialPieces) {
+            batch.pieces.emplace(d, *sampler);
+        }
+        return batch;
+    };
+    const Batch<Wide> wide = batchOf(Wide());
+    const Batch<Narrow> narrow = batchOf(Narrow());
     // Vector and combined splats keep every clamp; scalar splats drop them where they change
     // nothing (seven of a pixel's operations).
     constexpr bool kMayDropClamps = kKind != Kind::Vector && kKind != Kind::Combined;
@@ -397,10 +477,18 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
             continue;
         }
         const SplatRaster& splat = splats[i];
-        if (kMayDropClamps && isUnclamped(splat, *sampler)) {
-            CompositeSplat<kKind, false>(batch, splat, first, last);
+        const bool clamp = !kMayDropClamps || !isUnclamped(splat, *sampler);
+        const auto composite = [&](const auto& batch) {
+            if (clamp) {
+                CompositeSplatAtDepth<kKind, true>(batch, splat, first, last);
+            } else {
+                CompositeSplatAtDepth<kKind, false>(batch, splat, first, last);
+            }
+        };
+        if (splat.columnEnd - splat.columnBegin <= kNarrowColumns) {
+            composite(narrow);
         } else {
-            CompositeSplat<kKind, true>(batch, splat, first, last);
+            composite(wide);
         }
     }
 }
