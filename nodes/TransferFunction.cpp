@@ -11,7 +11,10 @@
 #include "scenegraph/actions/Action.h"
 #include "scenegraph/fields/ValueFormat.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -266,8 +269,8 @@ template <class Y> bool isZeroBetween(const detail::PiecewiseLinear<Y>& map, flo
     if (map(t0) != Y(0.0f) || map(t1) != Y(0.0f)) {
         return false;
     }
-    for (std::size_t i = 0; i < map.x.size(); ++i) {
-        if (map.x[i] >= t0 && map.x[i] <= t1 && map.y[i] != Y(0.0f)) {
+    for (std::size_t i = 0; i < map.x().size(); ++i) {
+        if (map.x()[i] >= t0 && map.x()[i] <= t1 && map.y()[i] != Y(0.0f)) {
             return false;
         }
     }
@@ -293,36 +296,76 @@ bool TransferFunction::isTransparentBetween(float minimum, float maximum,
 namespace {
 
 constexpr const char* kClassifyStep = "classifying";
-// One progress report per this many voxels walked.
-constexpr std::uint64_t kVoxelsPerReport = std::uint64_t{1} << 20;
+// Blocks classified in parallel between two progress reports: 2^19 voxels, 8 MiB of classified
+// blocks held until the grid takes them.
+constexpr std::size_t kBlocksPerBatch = 1024;
 
-// Classifies the non-empty voxels of `grid` for which `isWanted(ijk, value)` holds, telling
-// `progress` the fraction of the grid's stored voxels walked.
+// Classifies the non-empty voxels of `grid`'s blocks for which `isWanted(block)` holds (block
+// coordinates), telling `progress` the fraction of the blocks done; with `recording`, adds the
+// value range of every block that holds a non-empty voxel to it. The blocks are read and
+// classified in parallel (oneTBB), a batch at a time, and put into the grid in order: the same
+// grid for any number of threads.
 template <class IsWanted>
 std::shared_ptr<octree::ClassifiedGrid>
-classifyVoxels(const detail::TransferTable& checked, const DataScale& scale,
+classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
                const volume::ScalarGrid& grid, const sg::WorkProgress& progress,
-               IsWanted&& isWanted) {
+               octree::ValueRanges* recording, IsWanted&& isWanted) {
+    using ClassifiedBlock = std::array<glm::vec4, octree::ClassifiedGrid::kBlockVoxels>;
+    static_assert(volume::ScalarGrid::kBlockEdge ==
+                      static_cast<std::int64_t>(octree::ClassifiedGrid::kBlockSize),
+                  "the grid's read blocks are the classified grid's blocks");
     const volume::GridGeometry& geometry = grid.geometry();
     auto classified = std::make_shared<octree::ClassifiedGrid>(
         glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
-    const double stored =
-        static_cast<double>(std::max<std::uint64_t>(grid.storedVoxelCount(), 1));
-    std::uint64_t walked = 0;
+    const std::vector<glm::i64vec3> blocks = grid.occupiedBlocks();
+    std::vector<ClassifiedBlock> batch(std::min(blocks.size(), kBlocksPerBatch));
+    std::vector<std::uint32_t> nonEmpty(batch.size());
+    std::vector<glm::vec2> ranges(batch.size());
     sg::reportWork(progress, kClassifyStep, 0.0);
-    grid.forEachActive([&](const glm::i64vec3& index, float value) {
-        if (++walked % kVoxelsPerReport == 0) {
-            sg::reportWork(progress, kClassifyStep,
-                           std::min(static_cast<double>(walked) / stored, 1.0));
+    for (std::size_t begin = 0; begin < blocks.size(); begin += kBlocksPerBatch) {
+        const std::size_t count = std::min(kBlocksPerBatch, blocks.size() - begin);
+        tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+            const glm::u64vec3 block(blocks[begin + i]);
+            nonEmpty[i] = 0;
+            const bool wanted = isWanted(block);
+            if (!wanted && recording == nullptr) {
+                return;
+            }
+            volume::ScalarGrid::VoxelBlock voxels;
+            grid.readBlock(blocks[begin + i], voxels);
+            glm::vec2 range(std::numeric_limits<float>::infinity(),
+                            -std::numeric_limits<float>::infinity());
+            ClassifiedBlock& out = batch[i];
+            for (std::size_t v = 0; v < voxels.values.size(); ++v) {
+                out[v] = glm::vec4(0.0f);
+                if (!voxels.nonEmpty[v]) {
+                    continue;
+                }
+                const float value = voxels.values[v];
+                range = glm::vec2(std::min(range.x, value), std::max(range.y, value));
+                if (!wanted) {
+                    continue;
+                }
+                const Classification result = classifyWith(checked, value, scale);
+                if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
+                    out[v] = glm::vec4(result.color, result.extinction);
+                    ++nonEmpty[i];
+                }
+            }
+            ranges[i] = range;
+        });
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::u64vec3 block(blocks[begin + i]);
+            if (recording != nullptr && ranges[i].x <= ranges[i].y) {
+                recording->addBlock(block, ranges[i]);
+            }
+            if (nonEmpty[i] > 0) {
+                classified->setBlock(block, batch[i]);
+            }
         }
-        if (!isWanted(glm::u64vec3(index), value)) {
-            return;
-        }
-        const Classification result = classifyWith(checked, value, scale);
-        if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
-            classified->setVoxel(glm::u64vec3(index), result.color, result.extinction);
-        }
-    });
+        sg::reportWork(progress, kClassifyStep,
+                       static_cast<double>(begin + count) / static_cast<double>(blocks.size()));
+    }
     sg::reportWork(progress, kClassifyStep, 1.0);
     return classified;
 }
@@ -337,8 +380,8 @@ TransferFunction::classify(const volume::ScalarGrid& grid, const octree::ValueRa
     const std::vector<bool> visible = ranges.visibleBlocks([&](float minimum, float maximum) {
         return !isTransparentBetween(minimum, maximum, scale);
     });
-    return classifyVoxels(*checked, scale, grid, progress, [&](glm::u64vec3 ijk, float) {
-        return ranges.isVisibleBlock(visible, ijk);
+    return classifyBlocks(*checked, scale, grid, progress, nullptr, [&](glm::u64vec3 block) {
+        return ranges.isVisibleBlock(visible, block * octree::ClassifiedGrid::kBlockSize);
     });
 }
 
@@ -346,18 +389,15 @@ std::shared_ptr<octree::ClassifiedGrid>
 TransferFunction::classifyRecording(const volume::ScalarGrid& grid, octree::ValueRanges& ranges,
                                     const sg::WorkProgress& progress) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
-    return classifyVoxels(*checked, scaleOf(*checked, grid), grid, progress,
-                          [&ranges](glm::u64vec3 ijk, float value) {
-                              ranges.add(ijk, value);
-                              return true;
-                          });
+    return classifyBlocks(*checked, scaleOf(*checked, grid), grid, progress, &ranges,
+                          [](glm::u64vec3) { return true; });
 }
 
 std::shared_ptr<octree::ClassifiedGrid>
 TransferFunction::classify(const volume::ScalarGrid& grid) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
-    return classifyVoxels(*checked, scaleOf(*checked, grid), grid, {},
-                          [](glm::u64vec3, float) { return true; });
+    return classifyBlocks(*checked, scaleOf(*checked, grid), grid, {}, nullptr,
+                          [](glm::u64vec3) { return true; });
 }
 
 void TransferFunction::doAction(sg::Action& action) {

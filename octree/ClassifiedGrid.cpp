@@ -58,6 +58,18 @@ ClassifiedGrid::ClassifiedGrid(glm::u64vec3 dims, glm::dvec3 spacing, glm::dvec3
     mSlots.assign(static_cast<std::size_t>(boxBlockCount(dims)), kNoBlock);
 }
 
+void ClassifiedGrid::checkVoxel(glm::u64vec3 ijk, glm::vec4 value) {
+    for (int channel = 0; channel < 4; ++channel) {
+        if (!std::isfinite(value[channel]) || value[channel] < 0.0f) {
+            std::ostringstream text;
+            text << "ClassifiedGrid: voxel (" << ijk.x << ", " << ijk.y << ", " << ijk.z
+                 << "): " << (channel < 3 ? "color" : "extinction")
+                 << " must be finite and >= 0, got " << value[channel];
+            throw DataError(text.str());
+        }
+    }
+}
+
 ClassifiedGrid::Block& ClassifiedGrid::block(glm::u64vec3 ijk) {
     std::uint32_t& slot = mSlots[static_cast<std::size_t>(blockIndex(ijk / kBlockSize))];
     if (slot == kNoBlock) {
@@ -79,21 +91,50 @@ void ClassifiedGrid::setVoxel(glm::u64vec3 ijk, glm::vec3 color, float extinctio
     TEXSPLAT_ASSERT(ijk.x < mDims.x && ijk.y < mDims.y && ijk.z < mDims.z,
                     "ClassifiedGrid::setVoxel(): voxel outside the grid");
     const glm::vec4 value(color, extinction);
-    for (int channel = 0; channel < 4; ++channel) {
-        if (!std::isfinite(value[channel]) || value[channel] < 0.0f) {
-            std::ostringstream text;
-            text << "ClassifiedGrid: voxel (" << ijk.x << ", " << ijk.y << ", " << ijk.z
-                 << "): " << (channel < 3 ? "color" : "extinction")
-                 << " must be finite and >= 0, got " << value[channel];
-            throw DataError(text.str());
-        }
-    }
+    checkVoxel(ijk, value);
     if (value == glm::vec4(0.0f) && blockSlot(ijk) == kNoBlock) {
         return;
     }
     glm::vec4& stored = block(ijk).voxels[static_cast<std::size_t>(offsetInBlock(ijk))];
     mNonEmptyCount += (value != glm::vec4(0.0f) ? 1 : 0) - (stored != glm::vec4(0.0f) ? 1 : 0);
     stored = value;
+}
+
+void ClassifiedGrid::setBlock(glm::u64vec3 block,
+                              const std::array<glm::vec4, kBlockVoxels>& voxels) {
+    // One branch-free pass (this runs on one thread while the blocks were made on all): every
+    // channel in [0, FLT_MAX] (NaN fails), and the non-empty voxels counted.
+    bool valid = true;
+    std::uint64_t nonEmpty = 0;
+    for (const glm::vec4& value : voxels) {
+        for (int channel = 0; channel < 4; ++channel) {
+            valid &= value[channel] >= 0.0f && value[channel] <= std::numeric_limits<float>::max();
+        }
+        nonEmpty += value != glm::vec4(0.0f) ? 1 : 0;
+    }
+    const auto voxelOf = [&](std::size_t i) {
+        return block * kBlockSize + glm::u64vec3(i % kBlockSize, (i / kBlockSize) % kBlockSize,
+                                                 i / (kBlockSize * kBlockSize));
+    };
+    for (std::size_t i = 0; i < kBlockVoxels && !valid; ++i) {
+        checkVoxel(voxelOf(i), voxels[i]);
+    }
+    if (nonEmpty == 0 && !hasBlock(block)) {
+        return;
+    }
+    if (glm::any(glm::greaterThan((block + std::uint64_t{1}) * kBlockSize, mDims))) {
+        for (std::size_t i = 0; i < kBlockVoxels; ++i) {
+            TEXSPLAT_ASSERT(glm::all(glm::lessThan(voxelOf(i), mDims)) ||
+                                voxels[i] == glm::vec4(0.0f),
+                            "ClassifiedGrid::setBlock(): a voxel outside the grid is not empty");
+        }
+    }
+    std::array<glm::vec4, kBlockVoxels>& stored = this->block(block * kBlockSize).voxels;
+    for (const glm::vec4& value : stored) {
+        mNonEmptyCount -= value != glm::vec4(0.0f) ? 1 : 0;
+    }
+    mNonEmptyCount += nonEmpty;
+    stored = voxels;
 }
 
 void ClassifiedGrid::enableVectors() {

@@ -55,6 +55,12 @@ public:
     /// @throws DataError when a colour channel or the extinction is negative or not finite.
     void setVoxel(glm::u64vec3 ijk, glm::vec3 color, float extinction);
 
+    /// @brief Sets every voxel of block @p block (block coordinates) at once, x fastest, as
+    /// setVoxel() would one by one: the way to fill a grid from blocks made in parallel. Voxels
+    /// of a block clipped by the grid's upper faces must be zero there.
+    /// @throws DataError as setVoxel().
+    void setBlock(glm::u64vec3 block, const std::array<glm::vec4, kBlockVoxels>& voxels);
+
     /// @brief Gives every voxel a vector, all zero until setVector(): the flow that vector splats
     /// draw as marks (Crawfis & Max 1993, "Combined Vector and Scalar Textures"). Scalar grids have
     /// none and pay nothing for it (12 more bytes per voxel of the allocated blocks when enabled).
@@ -213,6 +219,9 @@ private:
 
     // The block of `ijk`, allocated on first use.
     Block& block(glm::u64vec3 ijk);
+
+    // Throws DataError unless every channel of voxel `ijk`'s `value` is finite and >= 0.
+    static void checkVoxel(glm::u64vec3 ijk, glm::vec4 value);
 
     glm::u64vec3 mDims;
     glm::u64vec3 mBlockDims;

@@ -47,6 +47,19 @@ public:
         range.y = value > range.y ? value : range.y;
     }
 
+    /// @brief Widens the range of block @p block (block coordinates) by @p range, the smallest
+    /// and largest of some of its non-empty voxels' values: add() for a whole block at once.
+    void addBlock(glm::u64vec3 block, glm::vec2 range) {
+        std::uint32_t& slot = mSlots[blockIndex(block * ClassifiedGrid::kBlockSize)];
+        if (slot == kNoBlock) {
+            slot = static_cast<std::uint32_t>(mRanges.size());
+            mRanges.push_back(range);
+            return;
+        }
+        glm::vec2& stored = mRanges[slot];
+        stored = glm::vec2(std::min(stored.x, range.x), std::max(stored.y, range.y));
+    }
+
     /// @brief The smallest and largest value added (0, 0 when none was), over all blocks.
     [[nodiscard]] glm::vec2 valueRange() const;
 

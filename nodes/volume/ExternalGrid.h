@@ -48,6 +48,11 @@ public:
     bool isActive(const glm::i64vec3& index) const override;
     /// @copydoc Grid::forEachStored
     void forEachStored(const typename Grid<T>::VoxelVisitor& visit) const override;
+    /// @copydoc Grid::readBlock
+    void readBlock(const glm::i64vec3& block,
+                   typename Grid<T>::VoxelBlock& out) const override {
+        voxels().readBlock(block, out);
+    }
     /// @brief The bytes of the values it reads (the application's memory, or its owner's).
     std::size_t memoryBytes() const override;
 

@@ -41,6 +41,19 @@ GridStatistics Grid<T>::statistics() const {
     return result;
 }
 
+template <typename T>
+std::vector<glm::i64vec3> Grid<T>::occupiedBlocks() const {
+    const glm::i64vec3 blocks = (mGeometry.dims() + (kBlockEdge - 1)) / kBlockEdge;
+    std::vector<glm::i64vec3> result;
+    result.reserve(static_cast<std::size_t>(blocks.x * blocks.y * blocks.z));
+    glm::i64vec3 block;
+    for (block.z = 0; block.z < blocks.z; ++block.z)
+        for (block.y = 0; block.y < blocks.y; ++block.y)
+            for (block.x = 0; block.x < blocks.x; ++block.x)
+                result.push_back(block);
+    return result;
+}
+
 template class Grid<float>;
 template class Grid<glm::vec3>;
 

@@ -5,12 +5,15 @@
 
 #include <glm/glm.hpp>
 
+#include <array>
+#include <bitset>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <memory>
 #include <variant>
+#include <vector>
 
 namespace texsplat::volume {
 
@@ -63,6 +66,20 @@ public:
 
     /// @brief Calls `visit` for every non-empty voxel (stored and finite), in storage order.
     void forEachActive(const VoxelVisitor& visit) const;
+
+    /// @brief Edge length, in voxels, of the blocks readBlock() reads: block b holds the voxels
+    /// 8b … 8b + 7 along each axis (clipped by the box), octree::ClassifiedGrid's blocks.
+    static constexpr std::int64_t kBlockEdge = 8;
+    /// @brief One block's voxels, x fastest: their values and which are non-empty.
+    struct VoxelBlock {
+        std::array<T, 512> values;   ///< unspecified where not non-empty
+        std::bitset<512> nonEmpty;   ///< stored and finite (false beyond the box)
+    };
+    /// @brief The blocks that may hold a non-empty voxel, ordered by z, then y, then x: for
+    /// work over whole blocks, in parallel (classification). By default every block of the box.
+    virtual std::vector<glm::i64vec3> occupiedBlocks() const;
+    /// @brief The voxels of block `block` (inside the box's blocks) into `out`.
+    virtual void readBlock(const glm::i64vec3& block, VoxelBlock& out) const = 0;
     /// @brief Value range and counts; scans the stored voxels on each call, so cache the result.
     GridStatistics statistics() const;
 

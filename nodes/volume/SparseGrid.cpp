@@ -2,6 +2,7 @@
 
 #include "scenegraph/Assert.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace texsplat::volume {
@@ -90,6 +91,80 @@ void SparseGrid<T>::forEachStored(const typename Grid<T>::VoxelVisitor& visit) c
             visit(block->first + offset, block->values[slot]);
         }
     }
+}
+
+template <typename T>
+std::vector<glm::i64vec3> SparseGrid<T>::occupiedBlocks() const {
+    constexpr std::int64_t kEdge = Grid<T>::kBlockEdge;
+    const glm::i64vec3 dims = this->geometry().dims();
+    const glm::i64vec3 blockDims = (dims + (kEdge - 1)) / kEdge;
+    std::vector<std::int64_t> keys;
+    keys.reserve(mBlocks.size());
+    for (const auto& stored : mBlocks) {
+        if (stored->active.none())
+            continue;
+        // The stored block's voxels inside the box, and the read blocks they fall in.
+        const glm::i64vec3 low = glm::max(stored->first, glm::i64vec3(0)) / kEdge;
+        const glm::i64vec3 high =
+            (glm::min(stored->first + kBlockSize, dims) - std::int64_t{1}) / kEdge;
+        for (std::int64_t z = low.z; z <= high.z; ++z)
+            for (std::int64_t y = low.y; y <= high.y; ++y)
+                for (std::int64_t x = low.x; x <= high.x; ++x)
+                    keys.push_back(x + blockDims.x * (y + blockDims.y * z));
+    }
+    std::sort(keys.begin(), keys.end());
+    keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+    std::vector<glm::i64vec3> blocks;
+    blocks.reserve(keys.size());
+    for (const std::int64_t key : keys) {
+        blocks.emplace_back(key % blockDims.x, (key / blockDims.x) % blockDims.y,
+                            key / (blockDims.x * blockDims.y));
+    }
+    return blocks;
+}
+
+template <typename T>
+void SparseGrid<T>::readBlock(const glm::i64vec3& block,
+                              typename Grid<T>::VoxelBlock& out) const {
+    constexpr std::int64_t kEdge = Grid<T>::kBlockEdge;
+    static_assert(kEdge == kBlockSize, "a read block overlaps at most 2 stored blocks per axis");
+    out.nonEmpty.reset();
+    const glm::i64vec3 first = block * kEdge;
+    const glm::i64vec3 last = glm::min(first + kEdge, this->geometry().dims());
+    // The stored blocks the read block overlaps, looked up once: (first + offset) / 8 and the
+    // next along each axis.
+    const glm::i64vec3 base = (first + mBlockOffset) / kBlockSize;
+    const Block* overlapped[2][2][2];
+    for (int z = 0; z < 2; ++z)
+        for (int y = 0; y < 2; ++y)
+            for (int x = 0; x < 2; ++x) {
+                const glm::i64vec3 stored = base + glm::i64vec3(x, y, z);
+                overlapped[z][y][x] =
+                    glm::all(glm::lessThan(stored, mBlockDims))
+                        ? findBlock({stored.x + mBlockDims.x * (stored.y + mBlockDims.y * stored.z),
+                                     stored * kBlockSize - mBlockOffset, 0})
+                        : nullptr;
+            }
+    glm::i64vec3 index;
+    for (index.z = first.z; index.z < last.z; ++index.z)
+        for (index.y = first.y; index.y < last.y; ++index.y)
+            for (index.x = first.x; index.x < last.x; ++index.x) {
+                const glm::i64vec3 shifted = index + mBlockOffset;
+                const glm::i64vec3 which = shifted / kBlockSize - base;
+                const Block* stored = overlapped[which.z][which.y][which.x];
+                if (stored == nullptr)
+                    continue;
+                const glm::i64vec3 local = shifted % kBlockSize;
+                const auto slot =
+                    static_cast<std::size_t>(local.x + kBlockSize * (local.y + kBlockSize * local.z));
+                if (!stored->active.test(slot) || !isFiniteValue(stored->values[slot]))
+                    continue;
+                const glm::i64vec3 inRead = index - first;
+                const auto target =
+                    static_cast<std::size_t>(inRead.x + kEdge * (inRead.y + kEdge * inRead.z));
+                out.values[target] = stored->values[slot];
+                out.nonEmpty.set(target);
+            }
 }
 
 namespace {

@@ -43,6 +43,11 @@ public:
     bool isActive(const glm::i64vec3& index) const override;
     /// @copydoc Grid::forEachStored
     void forEachStored(const typename Grid<T>::VoxelVisitor& visit) const override;
+    /// @brief The blocks (of Grid::kBlockEdge, aligned at index 0) that an allocated block
+    /// overlaps: up to 8 each when blockOffset() is not 0.
+    std::vector<glm::i64vec3> occupiedBlocks() const override;
+    /// @copydoc Grid::readBlock
+    void readBlock(const glm::i64vec3& block, typename Grid<T>::VoxelBlock& out) const override;
     /// @copydoc Grid::memoryBytes
     std::size_t memoryBytes() const override;
     /// @brief The active voxels (activeVoxelCount()).

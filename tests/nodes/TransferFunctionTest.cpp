@@ -1,4 +1,5 @@
 #include "nodes/TransferFunction.h"
+#include "nodes/detail/TransferTable.h"
 
 #include "SceneNodesTestSupport.h"
 #include "nodes/elements/TransferFunctionElement.h"
@@ -8,8 +9,13 @@
 #include "scenegraph/Separator.h"
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <random>
+#include <vector>
 #include <limits>
 
 namespace texsplat::nodes {
@@ -135,6 +141,53 @@ TEST(TransferFunction, repeatedPositionsMakeAStep) {
     EXPECT_EQ(tf->classify(0.51f).extinction, 4.0f);
 }
 
+TEST(TransferFunction, indexedLookupsFindTheBinarySearchesSegment) {
+    // Lookups find their segment from a uniform index and a step or two, not a binary search;
+    // the value must be the binary search's bit for bit, at and next to every control point and
+    // step, on maps of 2 to 300 points with repeated positions.
+    std::mt19937 random(20261126);
+    for (const std::size_t points : {2, 3, 7, 64, 256, 300}) {
+        std::uniform_real_distribution<float> position(-3.0f, 5.0f);
+        std::vector<float> x(points);
+        for (float& value : x) {
+            value = position(random);
+        }
+        std::sort(x.begin(), x.end());
+        for (std::size_t i = 1; i < points; i += 5) {
+            x[i] = x[i - 1]; // steps
+        }
+        std::vector<float> y(points);
+        for (float& value : y) {
+            value = position(random);
+        }
+        const nodes::detail::PiecewiseLinear<float> map(x, y);
+        const auto searched = [&](float t) {
+            if (!(t > x.front())) {
+                return y.front();
+            }
+            if (t >= x.back()) {
+                return y.back();
+            }
+            const auto i = static_cast<std::size_t>(
+                std::distance(x.begin(), std::upper_bound(x.begin(), x.end(), t)));
+            const float weight = (t - x[i - 1]) / (x[i] - x[i - 1]);
+            return y[i - 1] + weight * (y[i] - y[i - 1]);
+        };
+        std::vector<float> probes;
+        for (const float point : x) {
+            probes.push_back(point);
+            probes.push_back(std::nextafter(point, -INFINITY));
+            probes.push_back(std::nextafter(point, INFINITY));
+        }
+        for (int i = 0; i < 10000; ++i) {
+            probes.push_back(position(random));
+        }
+        for (const float t : probes) {
+            ASSERT_EQ(map(t), searched(t)) << points << " points, t = " << t;
+        }
+    }
+}
+
 TEST(TransferFunction, aSingleControlPointIsConstant) {
     const auto tf = TransferFunction::create();
     tf->opacityValues.setValue({0.3f});
@@ -222,6 +275,45 @@ TEST(TransferFunction, classifiesAGridIntoTheOctreeInput) {
     const Classification quarter = tf->classify(0.25f);
     EXPECT_EQ(classified->voxel(glm::u64vec3(2, 1, 0)),
               glm::vec4(quarter.color, quarter.extinction));
+}
+
+TEST(TransferFunction, classifyingAGridGivesEachVoxelItsValuesClassificationForAnyThreadCount) {
+    // Blocks are read and classified in parallel batches (more than one batch here, and blocks
+    // the box clips): every voxel must be what classify(value) gives it, for 1, 2 and 7 threads.
+    using volume::DenseScalarGrid;
+    using volume::GridGeometry;
+    DenseScalarGrid grid(GridGeometry({131, 97, 90}));
+    for (std::int64_t z = 0; z < 90; ++z) {
+        for (std::int64_t y = 0; y < 97; ++y) {
+            for (std::int64_t x = 0; x < 131; ++x) {
+                grid.setValue({x, y, z}, std::sin(0.05f * float(x * y)) * std::cos(0.1f * float(z)));
+            }
+        }
+    }
+    const auto tf = TransferFunction::create();
+    tf->preset.setValue(ColorPreset::Viridis);
+    tf->opacityValues.setValue({0.0f, 0.5f, 0.5f, 1.0f});
+    tf->opacities.setValue({0.0f, 0.0f, 3.0f, 4.0f});
+    const DataScale scale = tf->dataScale(grid);
+    for (const int threads : {1, 2, 7}) {
+        SCOPED_TRACE(threads);
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism,
+                                        static_cast<std::size_t>(threads));
+        const std::shared_ptr<octree::ClassifiedGrid> classified = tf->classify(grid);
+        std::size_t wrong = 0;
+        std::uint64_t drawn = 0;
+        grid.forEachActive([&](const glm::i64vec3& index, float value) {
+            const Classification expected = tf->classify(value, scale);
+            wrong += classified->voxel(glm::u64vec3(index)) !=
+                             glm::vec4(expected.color, expected.extinction)
+                         ? 1
+                         : 0;
+            drawn += expected.extinction != 0.0f || expected.color != glm::vec3(0.0f) ? 1 : 0;
+        });
+        EXPECT_EQ(wrong, 0u);
+        EXPECT_EQ(classified->nonEmptyVoxelCount(), drawn);
+        EXPECT_GT(drawn, 100000u);
+    }
 }
 
 TEST(TransferFunction, classifyingAGridChecksTheFields) {

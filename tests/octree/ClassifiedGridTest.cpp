@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+
 #include <cmath>
 #include <limits>
 #include <string>
@@ -67,6 +69,29 @@ TEST(ClassifiedGrid, rejectsNegativeOrNonFiniteValues) {
               }),
               "ClassifiedGrid: voxel (0, 1, 0): extinction must be finite and >= 0, got inf");
     EXPECT_TRUE(grid.isEmptyVoxel(glm::u64vec3(1, 0, 1)));
+}
+
+TEST(ClassifiedGrid, aWholeBlockIsSetAsItsVoxelsWouldBe) {
+    ClassifiedGrid grid({20, 9, 9}, glm::dvec3(1.0), glm::dvec3(0.0));
+    std::array<glm::vec4, ClassifiedGrid::kBlockVoxels> voxels{};
+    voxels[0] = glm::vec4(1.0f, 2.0f, 3.0f, 4.0f);
+    voxels[3 + 8 * (1 + 8 * 2)] = glm::vec4(0.0f, 0.0f, 0.0f, 0.5f); // voxel (3, 1, 2)
+    grid.setBlock({2, 0, 0}, voxels); // x 16..19 inside, 20..23 beyond the grid (all zero)
+    EXPECT_EQ(grid.blockCount(), 1u);
+    EXPECT_EQ(grid.nonEmptyVoxelCount(), 2u);
+    EXPECT_EQ(grid.voxel({16, 0, 0}), glm::vec4(1.0f, 2.0f, 3.0f, 4.0f));
+    EXPECT_EQ(grid.voxel({19, 1, 2}), glm::vec4(0.0f, 0.0f, 0.0f, 0.5f));
+    // Setting it again replaces it and counts again; an all-empty block allocates nothing.
+    voxels[0] = glm::vec4(0.0f);
+    grid.setBlock({2, 0, 0}, voxels);
+    EXPECT_EQ(grid.nonEmptyVoxelCount(), 1u);
+    grid.setBlock({0, 1, 1}, std::array<glm::vec4, ClassifiedGrid::kBlockVoxels>{});
+    EXPECT_EQ(grid.blockCount(), 1u);
+    // A bad value is reported with its voxel, as setVoxel() reports it, and changes nothing.
+    voxels[1 + 8 * (2 + 8 * 3)] = glm::vec4(0.0f, -1.0f, 0.0f, 0.0f); // voxel (1, 2, 3)
+    EXPECT_EQ(errorOf([&] { grid.setBlock({1, 0, 1}, voxels); }),
+              "ClassifiedGrid: voxel (9, 2, 11): color must be finite and >= 0, got -1");
+    EXPECT_EQ(grid.blockCount(), 1u);
 }
 
 TEST(ClassifiedGrid, vectorsAreThereOnlyWhenEnabledAndMustBeFinite) {

@@ -27,6 +27,26 @@ template <typename T> struct ContiguousVoxels {
         return isFiniteValue(values[static_cast<std::size_t>(geometry.linearIndex(index))]);
     }
 
+    /// @brief Grid::readBlock(): rows of up to 8 values copied, the finite ones non-empty.
+    void readBlock(const glm::i64vec3& block, typename Grid<T>::VoxelBlock& out) const {
+        constexpr std::int64_t kEdge = Grid<T>::kBlockEdge;
+        out.nonEmpty.reset();
+        const glm::i64vec3 first = block * kEdge;
+        const glm::i64vec3 last = glm::min(first + kEdge, geometry.dims());
+        for (std::int64_t z = first.z; z < last.z; ++z) {
+            for (std::int64_t y = first.y; y < last.y; ++y) {
+                const T* row = values + geometry.linearIndex({first.x, y, z});
+                const auto slot =
+                    static_cast<std::size_t>(kEdge * ((y - first.y) + kEdge * (z - first.z)));
+                for (std::int64_t x = 0; x < last.x - first.x; ++x) {
+                    const auto i = static_cast<std::size_t>(x);
+                    out.values[slot + i] = row[i];
+                    out.nonEmpty[slot + i] = isFiniteValue(row[i]);
+                }
+            }
+        }
+    }
+
     /// @brief Grid::forEachStored(): every voxel in storage order.
     void forEachStored(const typename Grid<T>::VoxelVisitor& visit) const {
         const glm::i64vec3& dims = geometry.dims();
