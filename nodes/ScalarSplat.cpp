@@ -26,7 +26,7 @@
 #include "scenegraph/actions/RayCastAction.h"
 
 #ifdef TEXSPLAT_WITH_GL
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/gl/SplatBatch.h"
 #include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/gl/Context.h"
 #endif

@@ -6,7 +6,7 @@
 #include "nodes/ScalarSplat.h"
 #include "nodes/TriangleMesh.h"
 #include "nodes/render/CameraView.h"
-#include "nodes/render/MeshBatch.h"
+#include "nodes/render/gl/MeshBatch.h"
 #include "nodes/render/MeshLighting.h"
 #include "scenegraph/actions/RenderAction.h"
 

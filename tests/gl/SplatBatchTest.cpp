@@ -1,4 +1,4 @@
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/gl/SplatBatch.h"
 
 #include "SplatTestSupport.h"
 #include "nodes/kernel/CubicKernel.h"

@@ -12,7 +12,7 @@
 #include "nodes/volume/Grid.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/render/RenderedImage.h"
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/gl/SplatBatch.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/Splat.h"
 #include "octree/SplatEmission.h"
