@@ -19,8 +19,7 @@
 #include "scenegraph/sensors/SimulatedClock.h"
 
 #ifdef TEXSPLAT_WITH_GL
-#include "nodes/render/RenderedImage.h"
-#include "scenegraph/actions/RenderAction.h"
+#include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/gl/EglContext.h"
 #endif
 
@@ -460,7 +459,7 @@ render::BackendChoice chooseBackend(render::BackendRequest request,
 #ifdef TEXSPLAT_WITH_GL
     if (backend.backend == render::Backend::Gl) {
         try {
-            sg::RenderAction::checkSize(size.x, size.y);
+            render::GlRenderer::checkSize(size.x, size.y);
         } catch (const GlError& error) {
             throw GlError("--size " + sizeText + ": " + error.what() + " (--backend cpu)");
         }
@@ -550,36 +549,31 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     // Asked before the first frame, as every stage asks for its largest allocation: the image
     // (the CPU's colour planes and GL's framebuffer are as large).
     checkMemory(stage, imageBytes, kRenderAdvice);
-    if (backend.backend == render::Backend::Cpu) {
-        cpu.emplace(arguments.threads);
-        render::FrameAction action(size.x, size.y, background);
-        action.setWorkProgress(WorkProgressPrinter());
-        for (int frame = 0; frame < animation.frames; ++frame) {
-            clock.moveTo(frame);
-            const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
-                return cpu->draw(action.collect(*root), action.statistics(), withDepth);
-            });
-            total += action.statistics();
-            writeFrame(image, frame);
-        }
-    }
 #ifdef TEXSPLAT_WITH_GL
+    std::optional<render::GlRenderer> gl;
     if (backend.backend == render::Backend::Gl) {
-        sg::RenderAction action(size.x, size.y);
-        action.setBackground(background);
-        action.setWorkProgress(WorkProgressPrinter());
-        for (int frame = 0; frame < animation.frames; ++frame) {
-            clock.moveTo(frame);
-            const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
-                action.render(*root);
-                return render::renderedImage(action, withDepth ? render::DepthReadback::With
-                                                               : render::DepthReadback::Without);
-            });
-            total += action.statistics();
-            writeFrame(image, frame);
-        }
+        gl.emplace();
     }
 #endif
+    if (backend.backend == render::Backend::Cpu) {
+        cpu.emplace(arguments.threads);
+    }
+    render::FrameAction action(size.x, size.y, background);
+    action.setWorkProgress(WorkProgressPrinter());
+    for (int frame = 0; frame < animation.frames; ++frame) {
+        clock.moveTo(frame);
+        const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
+            const render::Frame& collected = action.collect(*root);
+#ifdef TEXSPLAT_WITH_GL
+            if (gl) {
+                return gl->draw(collected, action.statistics(), withDepth);
+            }
+#endif
+            return cpu->draw(collected, action.statistics(), withDepth);
+        });
+        total += action.statistics();
+        writeFrame(image, frame);
+    }
     if (arguments.timeReport) {
         BackendReport report{cpu ? cpu->description() : "", backend.reason,
                              backend.contextSeconds};

@@ -1,6 +1,6 @@
 #include "nodes/render/gl/GlRenderer.h"
 
-#include "scenegraph/actions/detail/DepthOrderedRuns.h"
+#include "nodes/render/detail/DepthOrderedRuns.h"
 #include "nodes/render/gl/MeshBatch.h"
 #include "nodes/render/gl/SplatBatch.h"
 #include "nodes/render/gl/detail/SplatBatchCache.h"
@@ -57,7 +57,7 @@ struct DrawnBatch {
 };
 
 // The frame's batches merged into one depth order: one run for a single batch.
-std::vector<sg::detail::SplatRun> splatRuns(const Frame& frame, sg::RenderStatistics& statistics) {
+std::vector<detail::SplatRun> splatRuns(const Frame& frame, sg::RenderStatistics& statistics) {
     if (frame.splats.size() == 1) {
         return {{0, 0, frame.splats.front().splats->size()}};
     }
@@ -67,7 +67,7 @@ std::vector<sg::detail::SplatRun> splatRuns(const Frame& frame, sg::RenderStatis
     for (const FrameSplats& splats : frame.splats) {
         depths.push_back(splats.cameraDepths());
     }
-    std::vector<sg::detail::SplatRun> runs = sg::detail::depthOrderedRuns(depths);
+    std::vector<detail::SplatRun> runs = detail::depthOrderedRuns(depths);
     statistics.addTime(sg::RenderPhase::Order, secondsSince(start));
     return runs;
 }
@@ -115,8 +115,8 @@ void GlRenderer::render(const Frame& frame, sg::RenderStatistics& statistics) {
     }
     statistics.builds.splatBatches += mBatches->made() - madeBefore;
     statistics.addTime(sg::RenderPhase::Upload, secondsSince(start));
-    const std::vector<sg::detail::SplatRun> runs =
-        frame.splats.empty() ? std::vector<sg::detail::SplatRun>() : splatRuns(frame, statistics);
+    const std::vector<detail::SplatRun> runs =
+        frame.splats.empty() ? std::vector<detail::SplatRun>() : splatRuns(frame, statistics);
 
     start = Clock::now();
     // Instances are uploaded when a run of a list is first drawn: a node used twice in the graph
@@ -139,7 +139,7 @@ void GlRenderer::render(const Frame& frame, sg::RenderStatistics& statistics) {
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-        for (const sg::detail::SplatRun& run : runs) {
+        for (const detail::SplatRun& run : runs) {
             const DrawnBatch& drawn = batches[run.batch];
             if (!drawn.batch->isUploaded(drawn.splats->splats)) {
                 const Clock::time_point uploadStart = Clock::now();
