@@ -451,23 +451,6 @@ Framing framingOf(const RenderArguments& arguments) {
     return framing;
 }
 
-// Resolves --backend and, for GL, asks whether the device holds the image, before any work.
-render::BackendChoice chooseBackend(render::BackendRequest request,
-                                    [[maybe_unused]] const std::string& sizeText,
-                                    [[maybe_unused]] glm::ivec2 size) {
-    render::BackendChoice backend = render::BackendChoice::resolve(request);
-#ifdef TEXSPLAT_WITH_GL
-    if (backend.backend == render::Backend::Gl) {
-        try {
-            render::GlRenderer::checkSize(size.x, size.y);
-        } catch (const GlError& error) {
-            throw GlError("--size " + sizeText + ": " + error.what() + " (--backend cpu)");
-        }
-    }
-#endif
-    return backend;
-}
-
 // The option values of `render`, as checkRenderOptions() parsed them.
 struct RenderOptions {
     glm::ivec2 size;
@@ -510,9 +493,9 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const glm::vec4 background = options.background;
     setMemoryLimit(options.memoryLimit);
     const ThreadLimit threadLimit(arguments.threads);
-    const render::BackendChoice backend =
-        arguments.rayCast ? render::BackendChoice{}
-                          : chooseBackend(options.request, arguments.size, size);
+    const render::BackendChoice backend = arguments.rayCast
+                                              ? render::BackendChoice{}
+                                              : render::BackendChoice::resolve(options.request);
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -547,7 +530,8 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const std::uint64_t imageBytes = std::uint64_t(size.x) * std::uint64_t(size.y) *
                                      sizeof(glm::vec4);
     // Asked before the first frame, as every stage asks for its largest allocation: the image
-    // (the CPU's colour planes and GL's framebuffer are as large).
+    // (the CPU's colour planes are as large; GL draws an image larger than its device's
+    // framebuffers in tiles into it).
     checkMemory(stage, imageBytes, kRenderAdvice);
 #ifdef TEXSPLAT_WITH_GL
     std::optional<render::GlRenderer> gl;

@@ -15,8 +15,13 @@
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "nodes/render/gl/GlRenderer.h"
+#include "scenegraph/Error.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
 
 namespace texsplat::nodes {
 namespace {
@@ -97,6 +102,52 @@ TEST(GlRenderer, keepsItsBatchesWhileTheSceneKeepsItsFootprints) {
     EXPECT_EQ(batchesMade(), 0u) << "an unchanged scene draws with the batches it has";
     first->size.setValue(2.0f);
     EXPECT_EQ(batchesMade(), 1u) << "a new footprint, a new batch; the other node keeps its own";
+}
+
+// A frame larger than the tile size is drawn tile by tile through clip matrices scaled and moved
+// onto each tile; the pixels are the same but for rounding (measured: 3.6e-6 of colour, 5.4e-7
+// of depth) and a pixel whose centre a mesh edge passes within rounding of, which may fall on the
+// other side (one of the 5917 pixels with tiles of 32).
+TEST(GlRenderer, drawsAFrameInTilesAsInOnePiece) {
+    test::sharedContext();
+    const sg::Separator::Ptr root =
+        twoVolumesAndAMesh(TextureSplat::create(), TextureSplat::create());
+    // 97 x 61 pixels: tiles of 64 (one row), 32 and 7, the last column and row narrower.
+    render::FrameAction action(97, 61);
+    const render::Frame& frame = action.collect(*root);
+    sg::RenderStatistics statistics;
+    render::GlRenderer whole;
+    const image::Image reference = whole.draw(frame, statistics, true);
+    for (const int tileSize : {64, 32, 7}) {
+        render::GlRenderer tiled;
+        EXPECT_THROW(tiled.setMaxTileSize(-1), DataError);
+        tiled.setMaxTileSize(tileSize);
+        const image::Image image = tiled.draw(frame, statistics, true);
+        ASSERT_EQ(image.width(), reference.width());
+        ASSERT_EQ(image.height(), reference.height());
+        float colour = 0.0f;
+        float depth = 0.0f;
+        std::size_t edgePixels = 0;
+        for (int y = 0; y < reference.height(); ++y) {
+            for (int x = 0; x < reference.width(); ++x) {
+                const glm::vec4 d = glm::abs(image.pixel(x, y) - reference.pixel(x, y));
+                const float pixelColour = std::max({d.r, d.g, d.b, d.a});
+                const float pixelDepth = std::abs(image.depth(x, y) - reference.depth(x, y));
+                if (pixelColour > 1e-5f || pixelDepth > 1e-5f) {
+                    ++edgePixels;
+                    continue;
+                }
+                colour = std::max(colour, pixelColour);
+                depth = std::max(depth, pixelDepth);
+            }
+        }
+        RecordProperty("tiles of " + std::to_string(tileSize),
+                       "colour " + std::to_string(colour) + ", depth " + std::to_string(depth) +
+                           ", " + std::to_string(edgePixels) + " pixels on a mesh edge");
+        EXPECT_LE(edgePixels, 5u) << "tiles of " << tileSize;
+    }
+    // Each renderer made its two batches once, not once per tile.
+    EXPECT_EQ(statistics.builds.splatBatches, 2u * 4u);
 }
 
 } // namespace

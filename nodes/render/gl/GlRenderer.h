@@ -30,47 +30,71 @@ class SplatBatchCache;
 /// (nodes make a new one when a field that shapes their splats changes), per GL context; its
 /// instances are uploaded when the frame brings a new splat list.
 ///
+/// A frame larger than the device's largest framebuffer (gl::Framebuffer::largestSquare(), e.g.
+/// 10032² RGBA32F on llvmpipe) is drawn in tiles by draw(): every clip-space matrix of the frame
+/// (the splats' SplatView::localToClip, the meshes' MeshLighting::localToClip) is multiplied by
+/// a tile matrix that scales and moves the tile's part of the image onto the viewport, and each
+/// tile is read back into its place. A frame that fits is drawn in one piece, with the frame's
+/// matrices as they are.
+///
 /// Namespace render, not render::gl: that one would hide texsplat::gl, the GL object layer that
 /// every file of this backend uses. Created and used with one GL context current.
 class GlRenderer {
 public:
     /// @brief A renderer for the current context; its framebuffer is made with the first frame
-    /// and again when the frame size changes.
+    /// and again when the frame (or tile) size changes.
     /// @throws GlError when no context is current.
     GlRenderer();
     ~GlRenderer();
     GlRenderer(GlRenderer&&) noexcept;
     GlRenderer& operator=(GlRenderer&&) noexcept;
 
-    /// @brief Throws the GlError drawing a `width` x `height` frame would, without allocating
-    /// (gl::Framebuffer::checkSize()): commands ask it before any work.
-    static void checkSize(int width, int height);
-
-    /// @brief Draws `frame` into framebuffer(), as the class notes say. Times count as
+    /// @brief Draws `frame` into framebuffer(), whole, as the class notes say. Times count as
     /// RenderPhase::Upload (meshes, new batches, instances), Order (merging several batches) and
     /// Draw (both passes until glFinish()); the batches' texture bytes add to `memory.textures`
     /// and the batches made to `builds.splatBatches`.
-    /// @throws GlError when the framebuffer cannot be made or the GL reports an error.
+    /// @throws GlError when the device cannot hold a framebuffer of the frame's size or the GL
+    /// reports an error.
     void render(const Frame& frame, sg::RenderStatistics& statistics);
 
-    /// @brief render(), then the framebuffer read back as the CPU backend's draw() returns its
-    /// image: premultiplied float RGBA, top row first, the light scaled back from what GL drew
-    /// (gl/LightScale.h) and clamped to ±FLT_MAX (NaN stays NaN); with `withDepth`, the
-    /// window-space depth in [0, 1] of the meshes (1 where there is none; splats write none).
-    /// The read-back counts as RenderPhase::ReadBack.
+    /// @brief Draws `frame` as render() does, in tiles where it is larger than maxTileSize(), and
+    /// reads it back as the CPU backend's draw() returns its image: premultiplied float RGBA, top
+    /// row first, the light scaled back from what GL drew (gl/LightScale.h) and clamped to
+    /// ±FLT_MAX (NaN stays NaN); with `withDepth`, the window-space depth in [0, 1] of the meshes
+    /// (1 where there is none; splats write none). The read-back counts as RenderPhase::ReadBack.
+    /// As for the CPU backend, the caller asks the memory limit for the image (checkMemory():
+    /// the render command does, before the first frame).
+    /// @throws GlError as render().
     image::Image draw(const Frame& frame, sg::RenderStatistics& statistics,
                       bool withDepth = false);
 
-    /// @brief The render target of the last frame (the viewer shows it); it holds the light
-    /// scaled by gl::kLightScale.
+    /// @brief Makes draw() split frames into tiles of at most `pixels` a side; 0 (the default):
+    /// the device's largest framebuffer. Smaller tiles cost a pass over the frame's splats each.
+    /// @throws DataError when `pixels` is negative.
+    void setMaxTileSize(int pixels);
+
+    /// @brief The largest tile side draw() uses (asks the device the first time when
+    /// setMaxTileSize() was not given one).
+    int maxTileSize();
+
+    /// @brief The render target of the last frame or tile (the viewer shows it); it holds the
+    /// light scaled by gl::kLightScale.
     /// @throws GlError when no frame was drawn yet.
     const gl::Framebuffer& framebuffer() const;
 
 private:
-    image::Image readBack(sg::RenderStatistics& statistics, bool withDepth) const;
+    struct Prepared;
+    struct Tile;
+
+    void useFramebuffer(int width, int height);
+    Prepared prepare(const Frame& frame, sg::RenderStatistics& statistics);
+    void drawPasses(const Frame& frame, Prepared& prepared, const Tile* tile,
+                    sg::RenderStatistics& statistics);
+    void readTile(const Tile& tile, image::Image& image, sg::RenderStatistics& statistics) const;
 
     std::optional<gl::Framebuffer> mFramebuffer;
     std::unique_ptr<detail::SplatBatchCache> mBatches;
+    int mMaxTileSize = 0;
 };
 
 } // namespace texsplat::render
