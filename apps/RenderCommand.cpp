@@ -19,8 +19,7 @@
 #include "scenegraph/sensors/SimulatedClock.h"
 
 #ifdef TEXSPLAT_WITH_GL
-#include "nodes/render/RenderedImage.h"
-#include "scenegraph/actions/RenderAction.h"
+#include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/gl/EglContext.h"
 #endif
 
@@ -452,23 +451,6 @@ Framing framingOf(const RenderArguments& arguments) {
     return framing;
 }
 
-// Resolves --backend and, for GL, asks whether the device holds the image, before any work.
-render::BackendChoice chooseBackend(render::BackendRequest request,
-                                    [[maybe_unused]] const std::string& sizeText,
-                                    [[maybe_unused]] glm::ivec2 size) {
-    render::BackendChoice backend = render::BackendChoice::resolve(request);
-#ifdef TEXSPLAT_WITH_GL
-    if (backend.backend == render::Backend::Gl) {
-        try {
-            sg::RenderAction::checkSize(size.x, size.y);
-        } catch (const GlError& error) {
-            throw GlError("--size " + sizeText + ": " + error.what() + " (--backend cpu)");
-        }
-    }
-#endif
-    return backend;
-}
-
 // The option values of `render`, as checkRenderOptions() parsed them.
 struct RenderOptions {
     glm::ivec2 size;
@@ -511,9 +493,9 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const glm::vec4 background = options.background;
     setMemoryLimit(options.memoryLimit);
     const ThreadLimit threadLimit(arguments.threads);
-    const render::BackendChoice backend =
-        arguments.rayCast ? render::BackendChoice{}
-                          : chooseBackend(options.request, arguments.size, size);
+    const render::BackendChoice backend = arguments.rayCast
+                                              ? render::BackendChoice{}
+                                              : render::BackendChoice::resolve(options.request);
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -548,38 +530,34 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const std::uint64_t imageBytes = std::uint64_t(size.x) * std::uint64_t(size.y) *
                                      sizeof(glm::vec4);
     // Asked before the first frame, as every stage asks for its largest allocation: the image
-    // (the CPU's colour planes and GL's framebuffer are as large).
+    // (the CPU's colour planes are as large; GL draws an image larger than its device's
+    // framebuffers in tiles into it).
     checkMemory(stage, imageBytes, kRenderAdvice);
-    if (backend.backend == render::Backend::Cpu) {
-        cpu.emplace(arguments.threads);
-        render::FrameAction action(size.x, size.y, background);
-        action.setWorkProgress(WorkProgressPrinter());
-        for (int frame = 0; frame < animation.frames; ++frame) {
-            clock.moveTo(frame);
-            const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
-                return cpu->draw(action.collect(*root), action.statistics(), withDepth);
-            });
-            total += action.statistics();
-            writeFrame(image, frame);
-        }
-    }
 #ifdef TEXSPLAT_WITH_GL
+    std::optional<render::GlRenderer> gl;
     if (backend.backend == render::Backend::Gl) {
-        sg::RenderAction action(size.x, size.y);
-        action.setBackground(background);
-        action.setWorkProgress(WorkProgressPrinter());
-        for (int frame = 0; frame < animation.frames; ++frame) {
-            clock.moveTo(frame);
-            const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
-                action.render(*root);
-                return render::renderedImage(action, withDepth ? render::DepthReadback::With
-                                                               : render::DepthReadback::Without);
-            });
-            total += action.statistics();
-            writeFrame(image, frame);
-        }
+        gl.emplace();
     }
 #endif
+    if (backend.backend == render::Backend::Cpu) {
+        cpu.emplace(arguments.threads);
+    }
+    render::FrameAction action(size.x, size.y, background);
+    action.setWorkProgress(WorkProgressPrinter());
+    for (int frame = 0; frame < animation.frames; ++frame) {
+        clock.moveTo(frame);
+        const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
+            const render::Frame& collected = action.collect(*root);
+#ifdef TEXSPLAT_WITH_GL
+            if (gl) {
+                return gl->draw(collected, action.statistics(), withDepth);
+            }
+#endif
+            return cpu->draw(collected, action.statistics(), withDepth);
+        });
+        total += action.statistics();
+        writeFrame(image, frame);
+    }
     if (arguments.timeReport) {
         BackendReport report{cpu ? cpu->description() : "", backend.reason,
                              backend.contextSeconds};

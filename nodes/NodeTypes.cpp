@@ -21,9 +21,6 @@
 #include "nodes/render/FrameMethods.h"
 #include "nodes/render/RayCastMethods.h"
 #include "scenegraph/NodeRegistry.h"
-#ifdef TEXSPLAT_WITH_GL
-#include "nodes/render/RenderMethods.h"
-#endif
 
 namespace texsplat::nodes {
 
@@ -49,10 +46,8 @@ void registerNodeTypes() {
     registry.add<VectorMarkSplat>();
     registry.add<VectorSplat>();
     registry.add<CombinedSplat>();
-    // What RenderAction does with these types; a scene that can be read can also be drawn.
-#ifdef TEXSPLAT_WITH_GL
-    render::registerRenderMethods();
-#endif
+    // What the frame and ray-cast actions do with these types; a scene that can be read can
+    // also be drawn.
     render::registerRayCastMethods();
     render::registerFrameMethods();
 }

@@ -17,19 +17,12 @@
 #include "octree/Refiner.h"
 #include "octree/Splat.h"
 #include "octree/SplatEmission.h"
-#include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
 #include "scenegraph/MemoryLimit.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/ModelMatrixElement.h"
 #include "scenegraph/actions/RayCastAction.h"
-
-#ifdef TEXSPLAT_WITH_GL
-#include "nodes/render/SplatBatch.h"
-#include "scenegraph/actions/RenderAction.h"
-#include "scenegraph/gl/Context.h"
-#endif
 
 #include <chrono>
 #include <cmath>
@@ -204,38 +197,6 @@ std::shared_ptr<const render::SplatFootprint> ScalarSplat::footprint() {
     return mFootprint;
 }
 
-#ifdef TEXSPLAT_WITH_GL
-void ScalarSplat::render(sg::RenderAction& action) {
-    const render::CameraView camera = render::CameraView::current(action, *this);
-    const render::FrameSplats splats = frameSplats(action, camera, action.statistics());
-    TEXSPLAT_ASSERT(gl::Context::current(), "ScalarSplat::render(): no current GL context");
-    const std::uint64_t context = gl::Context::current()->serial();
-    if (!mBatch || mBatchContext != context) {
-        mBatch = timed(action.statistics(), sg::RenderPhase::Upload, [&] {
-            return detail::withNodeContext(*this, [&] {
-                return std::make_shared<render::SplatBatch>(
-                    render::SplatBatch::create(*splats.footprint));
-            });
-        });
-        mBatchContext = context;
-    }
-    action.statistics().memory.textures += mBatch->textureBytes();
-    sg::RenderAction::SplatWork work;
-    work.count = splats.splats->size();
-    work.depths = [splats] { return splats.cameraDepths(); };
-    // Upload at draw time, when a run of this list is first drawn: a node used twice in the
-    // graph (DEF/USE) draws two lists with one batch.
-    work.drawRange = [&action, batch = mBatch, splats](std::size_t begin, std::size_t end) {
-        if (!batch->isUploaded(splats.splats)) {
-            timed(action.statistics(), sg::RenderPhase::Upload,
-                  [&] { batch->upload(splats.splats); });
-        }
-        batch->draw(splats.view, splats.marks, begin, end - begin);
-    };
-    action.addSplats(std::move(work));
-}
-#endif
-
 void ScalarSplat::collectFrame(render::FrameAction& action) {
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
@@ -290,7 +251,6 @@ void ScalarSplat::getBoundingBox(sg::BoundingBoxAction& action) {
 void ScalarSplat::notify(const sg::Field* source) {
     if (!isDrawingField(source)) {
         mFootprint.reset();
-        mBatch.reset();
     }
     if (isClassificationField(source)) {
         mCache->invalidate();

@@ -9,20 +9,17 @@
 
 #include <glm/mat4x4.hpp>
 
-#include <cstdint>
 #include <memory>
 #include <optional>
 #include <utility>
 
 namespace texsplat::sg {
 class RayCastAction;
-class RenderAction;
 struct RenderStatistics;
 } // namespace texsplat::sg
 
 namespace texsplat::render {
 class FrameAction;
-class SplatBatch;
 struct CameraView;
 struct FrameSplats;
 struct SplatFootprint;
@@ -36,15 +33,15 @@ namespace texsplat::nodes {
 /// @brief Base of the splat nodes (TextureSplat, GaussianSplat, and through VectorMarkSplat the
 /// vector and combined splats): renders the current
 /// VolumeData, classified by the current TransferFunction, as one splat per non-empty voxel or
-/// per node of an octree cut, back to front for the camera, in RenderAction's splat pass.
+/// per node of an octree cut, back to front for the camera, in a backend's splat pass.
 ///
 /// Per frame: the scalar grid of the VolumeData (loaded on first use), classified into emission
 /// C and extinction τ per unit length (cached with its octree until the volume's grid or the
 /// transfer function changes; voxels that classify to zero make no splat; the grid's block value
 /// ranges, octree::ValueRanges, are made once per grid and let a transfer-function edit skip
 /// the blocks it hides without a new data hierarchy), ordered for the view
-/// (see below), and drawn facing the eye: by RenderAction as instanced GL quads
-/// (render::SplatBatch), by FrameAction's frame on the CPU backend (render::cpu::CpuRenderer).
+/// (see below), and drawn facing the eye from FrameAction's frame: by the GL backend as instanced
+/// quads (render::GlRenderer), or by the CPU backend (render::cpu::CpuRenderer).
 /// Optical properties are per unit length of the volume's local space; a Transform above the
 /// node places the volume. Anisotropic spacing uses the ellipsoidal kernel h(S⁻¹x).
 ///
@@ -81,29 +78,23 @@ public:
 
     ~ScalarSplat() override;
 
-#ifdef TEXSPLAT_WITH_GL
-    /// @brief RenderAction: queues this frame's splats (registered by registerNodeTypes()).
+    /// @brief FrameAction: adds this frame's splats to the action's frame, for any backend
+    /// (registered by registerNodeTypes()).
     /// @throws DataError naming the node when there is no camera, VolumeData or
     /// TransferFunction before it, or a field is out of range; what loading the volume throws.
-    void render(sg::RenderAction& action);
-#endif
-
-    /// @brief FrameAction: adds this frame's splats to the action's frame, for a backend without
-    /// GL (registered by registerNodeTypes()).
-    /// @throws as render(), except that no GL context is needed.
     void collectFrame(render::FrameAction& action);
 
     /// @brief RayCastAction: queues the continuous medium these splats approximate (the same
     /// classified grid, reconstructed with the paper's kernel: render::KernelVolumeMedium) and
     /// the camera (registered by registerNodeTypes()).
-    /// @throws as render(), except that no GL context is needed.
+    /// @throws as collectFrame().
     void rayCast(sg::RayCastAction& action);
 
     /// @brief Extends the box by the current VolumeData's bounds under this node's model matrix
     /// (a splat node under its own Transform draws the volume there); nothing without a volume.
     void getBoundingBox(sg::BoundingBoxAction& action) override;
 
-    /// @brief Drops the GL batch when a field that shapes it changes and the classification
+    /// @brief Drops the footprint when a field that shapes it changes and the classification
     /// when one that classification reads changes, then notifies as every node does.
     void notify(const sg::Field* source) override;
 
@@ -123,7 +114,7 @@ protected:
              const glm::mat4& model) const;
 
     /// @brief For splats that carry vectors: the table size and seed their emission needs
-    /// (the matrices are filled in by render()); nothing (the default) for scalar splats.
+    /// (the matrices are filled in per frame); nothing (the default) for scalar splats.
     virtual std::optional<octree::VectorEmission> vectorEmission() const { return std::nullopt; }
 
     /// @brief Whether the splats stand for an emission-absorption medium that RayCastAction can
@@ -133,7 +124,7 @@ protected:
     /// @brief What the batch draws with this frame; only vector and combined batches read it.
     virtual render::MarkDrawing markDrawing() const { return {}; }
 
-    /// @brief Whether a change of `field` leaves the GL batch as it is (it changes which splats
+    /// @brief Whether a change of `field` leaves the footprint as it is (it changes which splats
     /// are drawn, or a per-frame drawing parameter). Here: the cut fields.
     virtual bool isDrawingField(const sg::Field* field) const;
 
@@ -161,8 +152,6 @@ private:
 
     std::unique_ptr<render::detail::ClassificationCache> mCache;
     std::shared_ptr<const render::SplatFootprint> mFootprint;
-    std::shared_ptr<render::SplatBatch> mBatch;
-    std::uint64_t mBatchContext = 0;
 };
 
 } // namespace texsplat::nodes

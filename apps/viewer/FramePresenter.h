@@ -14,7 +14,7 @@ class Texture2D;
 
 namespace texsplat::apps {
 
-/// @brief Shows a RenderAction's float framebuffer (or the CPU backend's image) in the window: the premultiplied linear
+/// @brief Shows the GL backend's float framebuffer (or the CPU backend's image) in the window: the premultiplied linear
 /// color composited over a background, encoded to sRGB, as `texsplat render` writes its PNGs,
 /// so the window and the files look alike. One full-screen triangle, no blending.
 ///
@@ -23,7 +23,7 @@ class FramePresenter {
 public:
     FramePresenter();
 
-    /// @brief Draws `frame` (a RenderAction's, whose light GL draws scaled: gl/LightScale.h) over
+    /// @brief Draws `frame` (a GlRenderer's, whose light GL draws scaled: gl/LightScale.h) over
     /// `background` (linear RGB) into the default framebuffer of size `windowSize`, scaled to
     /// fill it.
     void present(const gl::Framebuffer& frame, const glm::vec3& background,

@@ -14,7 +14,7 @@ namespace texsplat::apps {
 /// calls then go through libepoxy as everywhere else in texsplat (epoxy follows GLX and EGL
 /// contexts alike).
 ///
-/// It is a gl::Context, so texsplat's GL objects (RenderAction's framebuffer, programs) can be
+/// It is a gl::Context, so texsplat's GL objects (GlRenderer's framebuffer, programs) can be
 /// made in it; destroy them before the window. One window per process: the constructor
 /// initializes GLFW, the destructor terminates it. Neither copyable nor movable.
 class GlfwWindow final : public gl::Context {

@@ -14,6 +14,8 @@ ViewerFrames::ViewerFrames(render::BackendRequest request, const std::string& re
                       render::isSoftwareRenderer(renderer));
     if (cpu) {
         mCpu.emplace(threads);
+    } else {
+        mGl.emplace();
     }
 }
 
@@ -23,14 +25,10 @@ bool ViewerFrames::resize(const glm::ivec2& size) {
     }
     mSize = size;
     mHasFrame = false;
+    mFrameAction = std::make_unique<render::FrameAction>(size.x, size.y, mBackground);
+    mFrameAction->setWorkProgress(mProgress);
     if (mCpu) {
-        mFrameAction = std::make_unique<render::FrameAction>(size.x, size.y, mBackground);
-        mFrameAction->setWorkProgress(mProgress);
         mTexture = std::make_unique<gl::Texture2D>(size.x, size.y, gl::TextureFormat::RGBA32F);
-    } else {
-        mAction = std::make_unique<sg::RenderAction>(size.x, size.y);
-        mAction->setBackground(mBackground);
-        mAction->setWorkProgress(mProgress);
     }
     return true;
 }
@@ -40,14 +38,12 @@ void ViewerFrames::setWorkProgress(sg::WorkProgress progress) {
     if (mFrameAction) {
         mFrameAction->setWorkProgress(mProgress);
     }
-    if (mAction) {
-        mAction->setWorkProgress(mProgress);
-    }
 }
 
 const sg::RenderStatistics& ViewerFrames::render(sg::Node& root) {
+    const render::Frame& frame = mFrameAction->collect(root);
     if (mCpu) {
-        image::Image image = mCpu->draw(mFrameAction->collect(root), mFrameAction->statistics());
+        image::Image image = mCpu->draw(frame, mFrameAction->statistics());
         image.flipVertically(); // a texture's row 0 is the bottom
         std::vector<float> texels(image.pixelCount() * 4);
         std::memcpy(texels.data(), image.data(), texels.size() * sizeof(float));
@@ -55,9 +51,9 @@ const sg::RenderStatistics& ViewerFrames::render(sg::Node& root) {
         mHasFrame = true;
         return mFrameAction->statistics();
     }
-    mAction->render(root);
+    mGl->render(frame, mFrameAction->statistics());
     mHasFrame = true;
-    return mAction->statistics();
+    return mFrameAction->statistics();
 }
 
 void ViewerFrames::present(FramePresenter& presenter, const glm::vec3& background,
@@ -65,7 +61,7 @@ void ViewerFrames::present(FramePresenter& presenter, const glm::vec3& backgroun
     if (mCpu) {
         presenter.present(*mTexture, background, windowSize);
     } else {
-        presenter.present(mAction->framebuffer(), background, windowSize);
+        presenter.present(mGl->framebuffer(), background, windowSize);
     }
 }
 

@@ -4,8 +4,8 @@
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/WorkProgress.h"
-#include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/gl/Texture2D.h"
 
 #include <glm/vec2.hpp>
@@ -17,11 +17,11 @@
 
 namespace texsplat::apps {
 
-/// @brief The viewer's frames, drawn by the backend the user asked for: GL (a RenderAction's
-/// framebuffer, shown as it is) or the CPU (CpuRenderer's image, uploaded as one float texture
-/// per frame), so progressive viewing is interactive on a machine whose GL is a software
-/// rasterizer too. `auto` takes the CPU when the window's GL renderer is llvmpipe, softpipe or
-/// swrast.
+/// @brief The viewer's frames, collected by a FrameAction and drawn by the backend the user asked
+/// for: GL (GlRenderer's framebuffer, shown as it is) or the CPU (CpuRenderer's image, uploaded as
+/// one float texture per frame), so progressive viewing is interactive on a machine whose GL is a
+/// software rasterizer too. `auto` takes the CPU when the window's GL renderer is llvmpipe,
+/// softpipe or swrast.
 ///
 /// Created and used with the window's context current.
 class ViewerFrames {
@@ -59,11 +59,11 @@ private:
     glm::ivec2 mSize{0, 0};
     bool mHasFrame = false;
     sg::WorkProgress mProgress;
+    std::unique_ptr<render::FrameAction> mFrameAction;
     // GL backend.
-    std::unique_ptr<sg::RenderAction> mAction;
+    std::optional<render::GlRenderer> mGl;
     // CPU backend.
     std::optional<render::cpu::CpuRenderer> mCpu;
-    std::unique_ptr<render::FrameAction> mFrameAction;
     std::unique_ptr<gl::Texture2D> mTexture;
 };
 

@@ -12,8 +12,8 @@ namespace texsplat::bench {
 
 /// @brief What `texsplat bench` measured for one method on one dataset at one image size.
 ///
-/// Times are medians over the repeated frames after warm-up, in wall seconds; a frame is, on GL,
-/// RenderAction::render() from traversal to glFinish, on the CPU FrameAction::collect() and
+/// Times are medians over the repeated frames after warm-up, in wall seconds; a frame is
+/// FrameAction::collect() and, on GL, GlRenderer::render() to glFinish, on the CPU
 /// CpuRenderer::draw() to the finished image (classification is cached after the
 /// warm-up, as in an interactive viewer). Errors are over R, G, B pooled, on the premultiplied
 /// float images (image::ImageComparison, PSNR peak 1); NaN where there was nothing to compare

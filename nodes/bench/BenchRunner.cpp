@@ -28,8 +28,7 @@
 #ifdef TEXSPLAT_WITH_GL
 #include "nodes/bench/FillRateCeiling.h"
 #include "nodes/bench/detail/SamplesPassed.h"
-#include "nodes/render/RenderedImage.h"
-#include "scenegraph/actions/RenderAction.h"
+#include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/gl/Context.h"
 #endif
 
@@ -365,11 +364,13 @@ image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
     ceiling.upload(drawn);
     // Frames and ceiling draws alternate, so that load from other processes on a shared
     // machine hits both alike; each ratio pairs a frame with the ceiling draw after it.
-    sg::RenderAction action(size.x, size.y);
+    render::FrameAction action(size.x, size.y);
+    render::GlRenderer renderer;
+    const auto renderFrame = [&] { renderer.render(action.collect(root), action.statistics()); };
     const int frames = mOptions.warmup + mOptions.repeat;
     for (int i = 0; i < mOptions.warmup; ++i) {
         report(stage, static_cast<double>(i) / frames);
-        action.render(root);
+        renderFrame();
         ceiling.draw(view, extent);
     }
     std::vector<double> frameTimes;
@@ -380,7 +381,7 @@ image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
     for (int i = 0; i < mOptions.repeat; ++i) {
         report(stage, static_cast<double>(mOptions.warmup + i) / frames);
         const Clock::time_point start = Clock::now();
-        action.render(root);
+        renderFrame();
         frameTimes.push_back(secondsSince(start));
         for (std::size_t phase = 0; phase < sg::kRenderPhaseCount; ++phase) {
             phaseTimes[phase].push_back(action.statistics().seconds[phase]);
@@ -404,8 +405,10 @@ image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
                                    std::to_string(result.splats) + " splats");
     }
     result.ceilingFragments = ceiling.fragments(view, extent);
-    result.fragments = detail::countSamplesPassed([&] { action.render(root); });
-    return render::renderedImage(action);
+    std::optional<image::Image> image;
+    result.fragments = detail::countSamplesPassed(
+        [&] { image = renderer.draw(action.collect(root), action.statistics()); });
+    return std::move(*image);
 }
 #endif
 

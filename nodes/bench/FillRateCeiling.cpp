@@ -35,8 +35,8 @@ void main() {
 }
 )";
 
-// The same state as RenderAction's splat pass: depth test (GL_LESS) without depth writes,
-// premultiplied "over" blending. Restored as RenderAction leaves it.
+// The same state as GlRenderer's splat pass: depth test (GL_LESS) without depth writes,
+// premultiplied "over" blending. Restored as GlRenderer leaves it.
 struct SplatPassState {
     SplatPassState() {
         glEnable(GL_DEPTH_TEST);

@@ -14,7 +14,7 @@ namespace texsplat::bench {
 
 /// @brief The fill-rate ceiling of the current GL device for a splat list: the same number of
 /// instanced quads, of the same size on screen, drawn with a trivial shader and the same
-/// blending into the same kind of framebuffer as RenderAction's splat pass.
+/// blending into the same kind of framebuffer as GlRenderer's splat pass.
 ///
 /// Each quad reads the splat's centre and size from the octree's 32-byte `Splat` (the same
 /// instance data a render::SplatBatch reads) and spans `extent · size` voxels in the plane
@@ -31,7 +31,7 @@ namespace texsplat::bench {
 class FillRateCeiling {
 public:
     /// @brief A ceiling drawing into its own `width` x `height` RGBA32F framebuffer with a
-    /// 32-bit float depth buffer (what RenderAction renders into).
+    /// 32-bit float depth buffer (what GlRenderer renders into).
     /// @throws GlError when no context is current or the shaders do not build.
     FillRateCeiling(int width, int height);
 
@@ -40,7 +40,7 @@ public:
 
     /// @brief Clears the framebuffer, draws every quad for `view` with quads `extent` voxels
     /// from the centre at size 1, and waits for the GL (glFinish). Returns the wall seconds,
-    /// clear and finish included, as RenderAction's Draw phase counts them.
+    /// clear and finish included, as GlRenderer's Draw phase counts them.
     /// @throws GlError on a GL error.
     double draw(const render::SplatView& view, float extent);
 

@@ -13,7 +13,7 @@ namespace texsplat::render {
 /// @brief What draws a frame (docs/design.md, "Backends: one frame, several ways to draw it").
 enum class Backend {
     Cpu, ///< render::cpu::CpuRenderer: no GL
-    Gl,  ///< sg::RenderAction: instanced quads through OpenGL
+    Gl,  ///< render::GlRenderer: instanced quads through OpenGL
 };
 
 /// @brief The backend a user asks for: `--backend cpu|gl|auto`.

@@ -5,9 +5,6 @@
 #include "nodes/elements/CameraElement.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/State.h"
-#ifdef TEXSPLAT_WITH_GL
-#include "scenegraph/actions/RenderAction.h"
-#endif
 
 #include <glm/gtc/constants.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -16,12 +13,6 @@
 #include <cmath>
 
 namespace texsplat::render {
-
-#ifdef TEXSPLAT_WITH_GL
-CameraView CameraView::current(sg::RenderAction& action, const sg::Node& node) {
-    return current(action.state(), node, action.aspectRatio());
-}
-#endif
 
 CameraView CameraView::current(sg::State& state, const sg::Node& node, float aspectRatio) {
     const nodes::CameraElement& element = state.get<nodes::CameraElement>();

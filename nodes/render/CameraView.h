@@ -6,10 +6,6 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
-namespace texsplat::sg {
-class RenderAction;
-} // namespace texsplat::sg
-
 namespace texsplat::render {
 
 /// @brief The active camera of a render traversal as matrices in the traversal root's space.
@@ -22,16 +18,11 @@ struct CameraView {
     /// @brief Unit viewing direction, root space.
     glm::vec3 viewDirection{0.0f, 0.0f, -1.0f};
 
-#ifdef TEXSPLAT_WITH_GL
-    /// @brief The camera of `action`'s state (the last one met, Inventor's rule).
+    /// @brief The camera of `state` (the last one met, Inventor's rule) for an image of
+    /// `aspectRatio` (width over height): what any action sees, so that sg::RayCastAction sees
+    /// the same rays as FrameAction's backends.
     /// @throws DataError "<node>: no camera before this node" when there is none, or what the
     /// camera throws for unusable fields.
-    static CameraView current(sg::RenderAction& action, const sg::Node& node);
-#endif
-
-    /// @brief The camera of `state` for an image of `aspectRatio` (width over height): what
-    /// any action sees, e.g. sg::RayCastAction, which must see the same rays as RenderAction.
-    /// @throws as current(RenderAction&, const Node&).
     static CameraView current(sg::State& state, const sg::Node& node, float aspectRatio);
 };
 

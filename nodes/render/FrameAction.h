@@ -8,9 +8,8 @@ namespace texsplat::render {
 
 /// @brief Traverses a scene and collects its backend-neutral Frame (docs/design.md, "Data flow of
 /// one frame"): meshes with their lighting, and per splat node its classified, ordered and emitted
-/// splats with their footprint. No GL: the CPU backend (cpu::CpuRenderer) draws what it
-/// collects. Classification, the octree, ordering and emission are the same code as for the GL
-/// RenderAction (ScalarSplat::frameSplats()).
+/// splats with their footprint. No GL: a backend draws what it collects (GlRenderer,
+/// cpu::CpuRenderer).
 class FrameAction : public sg::Action {
 public:
     /// @brief An action collecting frames of `width` x `height` pixels (what the cameras'

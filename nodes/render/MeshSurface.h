@@ -16,7 +16,7 @@ struct TriangleMesh;
 namespace texsplat::render {
 
 /// @brief A triangle mesh as an opaque surface for sg::RayCastAction, shaded exactly as
-/// MeshBatch shades it in RenderAction's opaque pass: the hit's interpolated vertex normal
+/// MeshBatch shades it in GlRenderer's opaque pass: the hit's interpolated vertex normal
 /// (mapped to root space by the inverse transpose of the model matrix, normalized after
 /// interpolation) and color, two-sided Lambert under the directional lights
 /// (Σ color·light·|n·l|, a headlight along the view direction when there is none), plus the

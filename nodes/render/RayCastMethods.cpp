@@ -16,8 +16,8 @@
 namespace texsplat::render {
 namespace {
 
-// Queues `mesh` as an opaque surface seen by the state's camera and lit by its lights, as
-// RenderMethods.cpp's queueMesh() draws it.
+// Queues `mesh` as an opaque surface seen by the state's camera and lit by its lights, as the
+// backends draw a FrameMesh.
 void queueSurface(sg::RayCastAction& action, const sg::Node& node,
                   const nodes::TriangleMesh& mesh) {
     if (mesh.isEmpty()) {

@@ -22,8 +22,8 @@ template <class N, class A> struct MemberMethod<void (N::*)(A&)> {
 /// types, and falls back to `Node::doAction()`. So an action added later, in another library,
 /// gives node types behaviour without touching Node:
 /// @code
-/// // with void TextureSplat::render(RenderAction&):
-/// RenderAction::methods().add<&TextureSplat::render>();
+/// // with void ScalarSplat::collectFrame(FrameAction&):
+/// FrameAction::methods().add<&ScalarSplat::collectFrame>();
 /// @endcode
 /// Tables are written at start-up (before traversals run on other threads) and only read
 /// during traversal.

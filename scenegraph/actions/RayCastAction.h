@@ -73,11 +73,11 @@ public:
 /// emission–absorption exactly through the reconstructed fields of the volumes the splat nodes
 /// draw, up to the first opaque surface.
 ///
-/// Like RenderAction, the traversal only *collects* work: node methods registered in
-/// `methods()` (by the nodes library) queue RayCastSurface and RayCastMedium objects in the
+/// Like the nodes library's FrameAction, the traversal only *collects* work: node methods
+/// registered in `methods()` (by the nodes library) queue RayCastSurface and RayCastMedium objects in the
 /// traversal root's space and set the camera. `render()` then traces one ray through each
 /// pixel centre, on several threads (rows interleaved), so pixel (i, j) sees the same ray as
-/// RenderAction's pixel (i, j) for the same camera and size.
+/// the backends' pixel (i, j) for the same camera and size.
 ///
 /// Integration (docs/raycast.md): along a ray, the media's intervals are walked in steps Δs;
 /// at the midpoint of each step c and τ (summed over overlapping media) are taken constant and

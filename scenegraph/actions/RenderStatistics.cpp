@@ -35,6 +35,7 @@ FrameBuilds& FrameBuilds::operator+=(const FrameBuilds& other) {
     valueRanges += other.valueRanges;
     classifications += other.classifications;
     octrees += other.octrees;
+    splatBatches += other.splatBatches;
     return *this;
 }
 

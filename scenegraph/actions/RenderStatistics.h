@@ -38,13 +38,14 @@ struct FrameMemory {
     void keepLarger(const FrameMemory& other);
 };
 
-/// @brief What the splat nodes made during a frame rather than kept from an earlier one: a
-/// transfer-function edit classifies again (and builds a new octree for a cut) but makes no new
-/// value ranges, which follow the data alone.
+/// @brief What the splat nodes and the backend made during a frame rather than kept from an
+/// earlier one: a transfer-function edit classifies again (and builds a new octree for a cut) but
+/// makes no new value ranges, which follow the data alone.
 struct FrameBuilds {
     std::size_t valueRanges = 0;     ///< block value ranges of a grid (octree::ValueRanges)
     std::size_t classifications = 0; ///< classified grids
     std::size_t octrees = 0;         ///< octrees over a classified grid
+    std::size_t splatBatches = 0;    ///< GL splat batches (shaders, footprint textures)
 
     /// @brief Adds another frame's counts.
     FrameBuilds& operator+=(const FrameBuilds& other);

@@ -11,7 +11,7 @@ namespace texsplat::gl {
 ///
 /// Meant for the boundaries of an action or a setup step, not for every call on a hot path:
 /// glGetError may synchronize with the driver.
-/// @param where names the step, e.g. "RenderAction::apply()".
+/// @param where names the step, e.g. "GlRenderer::render()".
 /// @throws GlError "<where>: GL_INVALID_ENUM, GL_INVALID_OPERATION" (each error once, in order).
 void checkGlError(std::string_view where);
 

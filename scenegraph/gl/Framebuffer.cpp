@@ -4,6 +4,7 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/gl/detail/TextureSetup.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <cstring>
 #include <string>
@@ -43,7 +44,7 @@ std::string statusName(GLenum status) {
 }
 
 // The largest n for which the device holds an n x n texture of `format` (at least 1).
-int largestSquare(TextureFormat format) {
+int largestTextureSquare(TextureFormat format) {
     GLint low = 1;
     GLint high = 0;
     glGetIntegerv(GL_MAX_TEXTURE_SIZE, &high);
@@ -63,7 +64,7 @@ int largestSquare(TextureFormat format) {
 void checkAttachment(int width, int height, TextureFormat format) {
     detail::checkTextureSize("Framebuffer", width, height, std::nullopt);
     if (!detail::canHoldTexture(width, height, format)) {
-        const std::string largest = std::to_string(largestSquare(format));
+        const std::string largest = std::to_string(largestTextureSquare(format));
         throw GlError("Framebuffer: this GL device cannot hold a " + std::to_string(width) + "x" +
                       std::to_string(height) + " " + toString(format) +
                       " image; the largest square it holds is " + largest + "x" + largest +
@@ -99,6 +100,14 @@ void Framebuffer::checkSize(int width, int height, FramebufferColor color,
                             FramebufferDepth depth) {
     checkAttachment(width, height, textureFormat(color));
     checkAttachment(width, height, textureFormat(depth));
+}
+
+int Framebuffer::largestSquare(FramebufferColor color, FramebufferDepth depth) {
+    GLint viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    return std::max(1, std::min({largestTextureSquare(textureFormat(color)),
+                                 largestTextureSquare(textureFormat(depth)), viewport[0],
+                                 viewport[1]}));
 }
 
 void Framebuffer::bind() const {

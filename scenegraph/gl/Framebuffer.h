@@ -50,6 +50,11 @@ public:
     /// 8192x8192; ..."), asked of proxy textures.
     static void checkSize(int width, int height, FramebufferColor color, FramebufferDepth depth);
 
+    /// @brief The largest n for which an n x n framebuffer of `color` and `depth` fits this
+    /// device: its texture and viewport limits and what it holds (asked of proxy textures, so
+    /// nothing is allocated). At least 1.
+    static int largestSquare(FramebufferColor color, FramebufferDepth depth);
+
     /// @brief Binds the framebuffer for drawing and reading and sets the viewport to all of it.
     void bind() const;
 

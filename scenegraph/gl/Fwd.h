@@ -2,7 +2,7 @@
 
 /// @file
 /// @brief Forward declarations of the OpenGL layer (namespace texsplat::gl), for headers that
-/// only pass its objects by reference (the RenderAction's state, the viewer).
+/// only pass its objects by reference (the GL backend, the viewer).
 
 namespace texsplat::gl {
 

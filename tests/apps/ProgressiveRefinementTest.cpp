@@ -6,7 +6,8 @@
 
 #include "apps/SceneSetup.h"
 #include "nodes/ScalarSplat.h"
-#include "scenegraph/actions/RenderAction.h"
+#include "nodes/render/FrameAction.h"
+#include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/gl/EglContext.h"
 
@@ -38,12 +39,13 @@ std::vector<nodes::ScalarSplat*> splatNodes(sg::Node& root) {
 class ProgressiveRefinementTest : public ::testing::Test {
 protected:
     std::size_t render() {
-        mAction.render(*mRoot);
+        mRenderer.render(mAction.collect(*mRoot), mAction.statistics());
         return mAction.statistics().splats;
     }
 
     texsplat::gl::EglContext mContext;
-    sg::RenderAction mAction{64, 64};
+    texsplat::render::FrameAction mAction{64, 64};
+    texsplat::render::GlRenderer mRenderer;
     sg::Node::Ptr mRoot =
         texsplat::apps::withCamera(texsplat::apps::loadScene(""), texsplat::apps::Framing{}, 1.0f);
 };

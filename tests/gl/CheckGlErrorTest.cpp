@@ -14,11 +14,11 @@ TEST(CheckGlError, reportsPendingErrorsAndDrainsThem) {
     glEnable(0x1234);
     glEnable(0x1235);
     try {
-        checkGlError("RenderAction::apply()");
+        checkGlError("GlRenderer::render()");
         FAIL() << "expected a GlError";
     } catch (const GlError& error) {
         // GL records an error kind at most once until it is read, so two bad enums are one.
-        EXPECT_STREQ(error.what(), "RenderAction::apply(): GL_INVALID_ENUM");
+        EXPECT_STREQ(error.what(), "GlRenderer::render(): GL_INVALID_ENUM");
     }
     EXPECT_NO_THROW(checkGlError("after"));
 }

@@ -10,13 +10,12 @@
 #include "nodes/render/CameraView.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/RayCastImage.h"
-#include "nodes/render/RenderedImage.h"
 #include "nodes/render/SceneFraming.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
 #include "scenegraph/actions/RayCastAction.h"
-#include "scenegraph/actions/RenderAction.h"
 #include "scenegraph/io/SceneReader.h"
 
 #include <gtest/gtest.h>
@@ -181,9 +180,9 @@ image::Image drawCpu(sg::Node& root, int width, int height) {
 }
 
 image::Image drawGl(sg::Node& root, int width, int height) {
-    sg::RenderAction action(width, height);
-    action.render(root);
-    return render::renderedImage(action, render::DepthReadback::Without);
+    render::FrameAction action(width, height);
+    render::GlRenderer renderer;
+    return renderer.draw(action.collect(root), action.statistics(), false);
 }
 
 image::Image drawRayCast(sg::Node& root, int width, int height) {

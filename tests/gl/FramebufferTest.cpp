@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -185,6 +186,21 @@ TEST(Framebuffer, refusesAnImageTheDeviceCannotHoldBeforeAllocating) {
                                                    FramebufferDepth::Depth32F));
             EXPECT_THROW(Framebuffer(largest + 1, largest + 1), GlError);
         }
+    }
+}
+
+TEST(Framebuffer, largestSquareIsTheLargestTheDeviceHolds) {
+    test::sharedContext();
+    const int largest = Framebuffer::largestSquare(FramebufferColor::Rgba32F,
+                                                   FramebufferDepth::Depth32F);
+    EXPECT_NO_THROW(Framebuffer::checkSize(largest, largest, FramebufferColor::Rgba32F,
+                                           FramebufferDepth::Depth32F));
+    GLint viewport[2] = {0, 0};
+    glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    if (largest < std::min(viewport[0], viewport[1])) {
+        EXPECT_THROW(Framebuffer::checkSize(largest + 1, largest + 1, FramebufferColor::Rgba32F,
+                                            FramebufferDepth::Depth32F),
+                     GlError);
     }
 }
 

@@ -1,4 +1,4 @@
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/gl/SplatBatch.h"
 
 #include "SplatTestSupport.h"
 #include "nodes/kernel/CubicKernel.h"
@@ -44,10 +44,17 @@ render::SplatView layerView() {
     return test::topView(-0.5f * pixel, static_cast<float>(kLayerVoxels));
 }
 
-LayerStatistics renderLayer(SplatBatch& batch) {
-    batch.upload(glowingLayer(1.0f));
-    const image::Image image =
-        test::renderNodes(kImageSize, kImageSize, {test::splatNode(batch, layerView())});
+// The layer drawn by the GL backend with splats looking like `footprint`.
+LayerStatistics renderLayer(const SplatFootprint& footprint) {
+    Frame frame;
+    frame.width = kImageSize;
+    frame.height = kImageSize;
+    FrameSplats layer;
+    layer.splats = std::make_shared<const octree::SplatList>(glowingLayer(1.0f));
+    layer.view = layerView();
+    layer.footprint = std::make_shared<const SplatFootprint>(footprint);
+    frame.splats.push_back(std::move(layer));
+    const image::Image image = test::drawFrame(frame);
     std::vector<float> red;
     for (const glm::vec4& pixel : image.pixels()) {
         red.push_back(pixel.r);
@@ -60,12 +67,29 @@ kernel::GaussianKernel sameExtentGaussian() {
     return kernel::KernelOptimizer().fitGaussian(kernel::CubicKernel::paper().support()).kernel;
 }
 
+// Squares carrying `texture` (SplatBatch::textured()).
+SplatFootprint textured(const kernel::FootprintTexture& texture) {
+    SplatFootprint footprint;
+    footprint.shape = SplatShape::TexturedSquare;
+    footprint.extent = texture.extent();
+    footprint.texture = std::make_shared<const kernel::FootprintTexture>(texture);
+    return footprint;
+}
+
+// The paper's polygonal baseline of `kernel` (SplatBatch::polygonal(), 3 x 7 samples).
+SplatFootprint polygonal(const kernel::GaussianKernel& kernel) {
+    SplatFootprint footprint;
+    footprint.shape = SplatShape::GouraudPolygon;
+    footprint.extent = kernel::FootprintTexture::kPaperExtent;
+    footprint.kernel = std::make_shared<const kernel::GaussianKernel>(kernel);
+    return footprint;
+}
+
 TEST(SplatBatch, figure2LayerOfPaperSplatsIsAsFlatAsThePaperReports) {
     test::sharedContext();
     const kernel::CubicKernel cubic = kernel::CubicKernel::paper();
     const kernel::FootprintTexture footprint(cubic, 64);
-    SplatBatch batch = SplatBatch::textured(footprint);
-    const LayerStatistics layer = renderLayer(batch);
+    const LayerStatistics layer = renderLayer(textured(footprint));
     test::reportLayer("paper cubic, 64x64 float texture", layer);
     EXPECT_NEAR(layer.mean, 1.0, 2e-3);
     EXPECT_NEAR(layer.relativeMax(), kPaperLayerMax, 1e-3 * kPaperLayerMax);
@@ -80,20 +104,17 @@ TEST(SplatBatch, figure2LayerOfPaperSplatsIsAsFlatAsThePaperReports) {
 TEST(SplatBatch, figure2GaussianOfTheSameExtentRipplesMore) {
     test::sharedContext();
     const kernel::CubicKernel cubic = kernel::CubicKernel::paper();
-    SplatBatch paper = SplatBatch::textured(kernel::FootprintTexture(cubic, 64));
     const kernel::GaussianKernel gaussian = sameExtentGaussian();
-    SplatBatch texturedGaussian = SplatBatch::textured(kernel::FootprintTexture(gaussian, 64));
-    SplatBatch polygonalGaussian =
-        SplatBatch::polygonal(gaussian, kernel::FootprintTexture::kPaperExtent);
-    EXPECT_EQ(polygonalGaussian.templateTriangles(), 21);
-    const LayerStatistics cubicLayer = renderLayer(paper);
-    const LayerStatistics textured = renderLayer(texturedGaussian);
-    const LayerStatistics polygonal = renderLayer(polygonalGaussian);
-    test::reportLayer("textured Gaussian (same extent)", textured);
-    test::reportLayer("polygonal Gaussian, 3 radial x 7 azimuth, Gouraud", polygonal);
+    EXPECT_EQ(SplatBatch::create(polygonal(gaussian)).templateTriangles(), 21);
+    const LayerStatistics cubicLayer = renderLayer(textured(kernel::FootprintTexture(cubic, 64)));
+    const LayerStatistics texturedLayer =
+        renderLayer(textured(kernel::FootprintTexture(gaussian, 64)));
+    const LayerStatistics polygonalLayer = renderLayer(polygonal(gaussian));
+    test::reportLayer("textured Gaussian (same extent)", texturedLayer);
+    test::reportLayer("polygonal Gaussian, 3 radial x 7 azimuth, Gouraud", polygonalLayer);
     const auto ripple = [](const LayerStatistics& s) { return s.relativeMax() - s.relativeMin(); };
-    EXPECT_GT(ripple(textured), 2.0 * ripple(cubicLayer));
-    EXPECT_GT(ripple(polygonal), ripple(textured));
+    EXPECT_GT(ripple(texturedLayer), 2.0 * ripple(cubicLayer));
+    EXPECT_GT(ripple(polygonalLayer), ripple(texturedLayer));
 }
 
 // The paper's point about 8 bits ("one part in 256, or one bit"): the same layer drawn into an
@@ -103,7 +124,7 @@ TEST(SplatBatch, figure2InAnEightBitFramebufferDeviatesByQuantization) {
     const kernel::CubicKernel cubic = kernel::CubicKernel::paper();
     SplatBatch batch = SplatBatch::textured(kernel::FootprintTexture(cubic, 64));
     // Emission 0.5 keeps the sum in the middle of the 8-bit range. GL draws light scaled by
-    // gl::kLightScale (a RenderAction's read-back scales it back): the layer glows as much more.
+    // gl::kLightScale (the GL backend's read-back scales it back): the layer glows as much more.
     batch.upload(glowingLayer(0.5f / gl::kLightScale));
     gl::Texture2D color(kImageSize, kImageSize, gl::TextureFormat::RGBA8,
                         {gl::TextureFilter::Nearest, gl::TextureWrap::ClampToEdge, false});

@@ -11,17 +11,15 @@
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/Grid.h"
 #include "nodes/volume/RawVolume.h"
-#include "nodes/render/RenderedImage.h"
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/Frame.h"
+#include "nodes/render/FrameAction.h"
+#include "nodes/render/gl/GlRenderer.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/Splat.h"
 #include "octree/SplatEmission.h"
-#include "scenegraph/Declare.h"
-#include "scenegraph/Group.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
-#include "scenegraph/actions/RenderAction.h"
 
 #include <gtest/gtest.h>
 
@@ -30,7 +28,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <limits>
 #include <string>
 #include <utility>
@@ -38,54 +35,12 @@
 
 namespace texsplat::test {
 
-/// @brief A test node that hands RenderAction one prepared splat batch or opaque draw, so the
-/// splat drawing is tested through the action's real passes without the scene nodes.
-class DrawNode : public sg::Declare<DrawNode, sg::Node> {
-public:
-    static constexpr const char* kTypeName = "TestDrawNode";
-
-    /// @brief What render() queues: into the opaque pass or the splat pass.
-    bool isOpaque = false;
-    std::function<void()> draw;
-
-    void render(sg::RenderAction& action) {
-        if (isOpaque) {
-            action.addOpaque(draw);
-        } else {
-            action.addSplats(draw);
-        }
-    }
-
-    /// @brief Registers render() with the action (idempotent).
-    static void registerMethod() { sg::RenderAction::methods().add<&DrawNode::render>(); }
-};
-
-/// @brief A node drawing `batch` seen through `view` in the splat pass.
-inline DrawNode::Ptr splatNode(render::SplatBatch& batch, const render::SplatView& view) {
-    DrawNode::registerMethod();
-    DrawNode::Ptr node = DrawNode::create();
-    node->draw = [&batch, view] { batch.draw(view); };
-    return node;
-}
-
-/// @brief A node drawing `draw` in the opaque pass.
-inline DrawNode::Ptr opaqueNode(std::function<void()> draw) {
-    DrawNode::registerMethod();
-    DrawNode::Ptr node = DrawNode::create();
-    node->isOpaque = true;
-    node->draw = std::move(draw);
-    return node;
-}
-
-/// @brief Renders the nodes under a group with a fresh action and reads the image back.
-inline image::Image renderNodes(int width, int height, const std::vector<sg::Node::Ptr>& nodes) {
-    sg::Group::Ptr root = sg::Group::create();
-    for (const sg::Node::Ptr& node : nodes) {
-        root->addChild(node);
-    }
-    sg::RenderAction action(width, height);
-    action.render(*root);
-    return render::renderedImage(action, render::DepthReadback::With);
+/// @brief Draws `frame` (made by hand, so that splat drawing is tested through the GL backend's
+/// real passes without the scene nodes) with a new GL backend; reads color and depth back.
+inline image::Image drawFrame(const render::Frame& frame) {
+    render::GlRenderer renderer;
+    sg::RenderStatistics statistics;
+    return renderer.draw(frame, statistics, true);
 }
 
 /// @brief An orthographic camera looking down −z at the square [x0, x0 + size]² in the plane
@@ -116,7 +71,8 @@ inline nodes::VolumeData::Ptr fileVolume(nodes::VolumeSource source, const std::
     return volume;
 }
 
-/// @brief One rendered frame: the image (color and depth) and what the action counted.
+/// @brief One rendered frame: the image (color and depth) and what the action and the backend
+/// counted.
 struct RenderedFrame {
     image::Image image;
     sg::RenderStatistics statistics;
@@ -141,16 +97,17 @@ inline sg::Separator::Ptr framedScene(const nodes::Camera::Ptr& camera,
     frameCamera(*camera, *root);
     return root;
 }
-/// @brief Renders `root` with a new action; answers the image and the frame's statistics.
+/// @brief Collects the frame of `root` with a new action and draws it with a new GL backend;
+/// answers the image and the frame's statistics.
 inline RenderedFrame renderFrame(sg::Node& root, int width, int height) {
     nodes::registerNodeTypes();
-    sg::RenderAction action(width, height);
-    action.render(root);
-    image::Image image = render::renderedImage(action, render::DepthReadback::With);
+    render::FrameAction action(width, height);
+    render::GlRenderer renderer;
+    image::Image image = renderer.draw(action.collect(root), action.statistics(), true);
     return {std::move(image), action.statistics()};
 }
 
-/// @brief Renders `root` with a new action and reads color and depth back.
+/// @brief Renders `root` with a new action and backend and reads color and depth back.
 inline image::Image renderScene(sg::Node& root, int width, int height) {
     return renderFrame(root, width, height).image;
 }

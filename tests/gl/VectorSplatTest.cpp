@@ -1,4 +1,4 @@
-// VectorSplat and CombinedSplat through RenderAction (Crawfis & Max 1993, "Combined Vector and
+// VectorSplat and CombinedSplat through the GL backend (Crawfis & Max 1993, "Combined Vector and
 // Scalar Textures"): marks along the projected vector, the animation phase, the paper's texture
 // operators, stretch, mask, colour by position, extreme vectors, and the combined splat's scalar
 // part. Fields are uniform or tiny (at most 8x8 voxels) so that llvmpipe draws each in a blink.

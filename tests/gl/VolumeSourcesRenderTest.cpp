@@ -1,5 +1,5 @@
 // Every volume source, loaded and drawn through the scene nodes (camera, TransferFunction,
-// VolumeData, TextureSplat under RenderAction): each gives a finite image with something in it,
+// VolumeData, TextureSplat; the GL backend): each gives a finite image with something in it,
 // drawn as splats. Grids are small (at most 24³ voxels) so that llvmpipe draws each in a blink.
 
 #include "SplatTestSupport.h"

@@ -182,7 +182,7 @@ TEST(RayCastMethods, nanAndInfiniteDataGiveAFiniteImage) {
     }
 }
 
-TEST(RayCastMethods, reportsAMissingCameraOrVolumeLikeTheRenderAction) {
+TEST(RayCastMethods, reportsAMissingCameraOrVolumeLikeTheFrameAction) {
     sg::Separator::Ptr root = sg::Separator::create();
     root->addChild(glowAndWall());
     root->addChild(cube("missing", 2, 1.0f));

@@ -20,14 +20,14 @@ using test::TestCube;
 
 class VisitAction;
 
-// A node with a member for VisitAction, as `void TextureSplat::render(RenderAction&)` will be.
+// A node with a member for VisitAction, as `void ScalarSplat::collectFrame(FrameAction&)` is.
 class VisitedCube : public Declare<VisitedCube, TestCube> {
 public:
     static constexpr const char* kTypeName = "VisitedCube";
     void visit(VisitAction& action);
 };
 
-// An action defined outside the core, as RenderAction will be: it records visits through
+// An action defined outside the core, as FrameAction is: it records visits through
 // per-type methods without any virtual on Node.
 class VisitAction : public Action {
 public:

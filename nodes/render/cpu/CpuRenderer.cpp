@@ -9,7 +9,7 @@
 #include "nodes/render/cpu/detail/SamplerCache.h"
 #include "octree/Splat.h"
 #include "scenegraph/Error.h"
-#include "scenegraph/actions/detail/DepthOrderedRuns.h"
+#include "nodes/render/detail/DepthOrderedRuns.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -122,8 +122,8 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                 meshes.draw(planes, bands.begin(band), bands.end(band, frame.height));
             });
         }
-        // Several batches: one depth order across them (as RenderAction merges its batches).
-        std::vector<sg::detail::SplatRun> runs;
+        // Several batches: one depth order across them (as GlRenderer merges its batches).
+        std::vector<render::detail::SplatRun> runs;
         if (batches.size() == 1) {
             runs.push_back({0, 0, batches.front().splats->splats->size()});
         } else if (batches.size() > 1) {
@@ -132,12 +132,12 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             for (const PreparedBatch& batch : batches) {
                 depths.push_back(batch.splats->cameraDepths());
             }
-            runs = sg::detail::depthOrderedRuns(depths);
+            runs = render::detail::depthOrderedRuns(depths);
             statistics.addTime(sg::RenderPhase::Order, secondsSince(orderStart));
         }
         std::vector<SplatRaster> rasters(kChunk);
         std::vector<RowSpan> rows(kChunk);
-        for (const sg::detail::SplatRun& run : runs) {
+        for (const render::detail::SplatRun& run : runs) {
             const PreparedBatch& batch = batches[run.batch];
             const octree::Splat* splats = batch.splats->splats->splats().data();
             const octree::SplatVector* vectors = batch.splats->splats->hasVectors()

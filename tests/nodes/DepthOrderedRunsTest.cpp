@@ -1,10 +1,10 @@
-#include "scenegraph/actions/detail/DepthOrderedRuns.h"
+#include "nodes/render/detail/DepthOrderedRuns.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-namespace texsplat::sg::detail {
+namespace texsplat::render::detail {
 namespace {
 
 using Runs = std::vector<SplatRun>;
@@ -39,4 +39,4 @@ TEST(DepthOrderedRuns, tiesGoToTheEarlierBatchAndEveryBatchKeepsItsOwnOrder) {
 }
 
 } // namespace
-} // namespace texsplat::sg::detail
+} // namespace texsplat::render::detail

@@ -1,10 +1,10 @@
-#include "nodes/render/SplatBatch.h"
+#include "nodes/render/gl/SplatBatch.h"
 
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/RadialKernel.h"
 #include "nodes/kernel/VectorSplatTable.h"
-#include "nodes/render/detail/SplatShaders.h"
-#include "nodes/render/detail/VectorSplatShaders.h"
+#include "nodes/render/gl/detail/SplatShaders.h"
+#include "nodes/render/gl/detail/VectorSplatShaders.h"
 #include "octree/Splat.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"

@@ -1,6 +1,6 @@
-#include "scenegraph/actions/detail/DepthOrderedRuns.h"
+#include "nodes/render/detail/DepthOrderedRuns.h"
 
-namespace texsplat::sg::detail {
+namespace texsplat::render::detail {
 
 std::vector<SplatRun> depthOrderedRuns(const std::vector<std::vector<float>>& depths) {
     const std::size_t batches = depths.size();
@@ -40,4 +40,4 @@ std::vector<SplatRun> depthOrderedRuns(const std::vector<std::vector<float>>& de
     }
 }
 
-} // namespace texsplat::sg::detail
+} // namespace texsplat::render::detail

@@ -1,4 +1,4 @@
-#include "nodes/render/MeshBatch.h"
+#include "nodes/render/gl/MeshBatch.h"
 
 #include "nodes/TriangleMesh.h"
 #include "nodes/elements/LightElement.h"

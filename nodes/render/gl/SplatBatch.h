@@ -31,7 +31,7 @@ namespace texsplat::render {
 /// `Splat` as is (attributes 1 and 2, stride 32). The fragment color is the emission-absorption
 /// of a slab as thick as the footprint f (a length: the kernel's line integral, scaled by the
 /// voxel spacing): α = 1 − exp(−τ·f), premultiplied color C·f·φ(τ·f) with φ(x) = (1 − e^(−x))/x
-/// evaluated without cancellation, meant for "over" blending (RenderAction's splat pass).
+/// evaluated without cancellation, meant for "over" blending (GlRenderer's splat pass).
 ///
 /// Move-only (it holds GL objects); create and use it with the same context current.
 class SplatBatch {
@@ -78,7 +78,7 @@ public:
     [[nodiscard]] std::uint64_t textureBytes() const;
 
     /// @brief As upload(), remembering `splats` so that isUploaded() can tell: a node used
-    /// twice in a graph (DEF/USE) draws two lists with one batch, and RenderAction may
+    /// twice in a graph (DEF/USE) draws two lists with one batch, and GlRenderer may
     /// interleave their runs with other batches.
     void upload(const std::shared_ptr<const octree::SplatList>& splats);
 
@@ -88,11 +88,11 @@ public:
     }
 
     /// @brief Draws the uploaded splats in their order; `marks` matters to vector and combined
-    /// batches only. Leaves blending and depth state to the caller (RenderAction's splat pass).
+    /// batches only. Leaves blending and depth state to the caller (GlRenderer's splat pass).
     void draw(const SplatView& view, const MarkDrawing& marks = {});
 
     /// @brief Draws `count` uploaded splats from `first` on, in their order (one run of a
-    /// frame whose batches RenderAction interleaves by depth).
+    /// frame whose batches GlRenderer interleaves by depth).
     void draw(const SplatView& view, const MarkDrawing& marks, std::size_t first,
               std::size_t count);
 

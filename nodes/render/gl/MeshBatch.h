@@ -13,7 +13,7 @@ struct TriangleMesh;
 
 namespace texsplat::render {
 
-/// @brief A triangle mesh on the GPU for RenderAction's opaque pass: per-vertex positions,
+/// @brief A triangle mesh on the GPU for GlRenderer's opaque pass: per-vertex positions,
 /// normals and colors, lit as MeshLighting says, written opaque with depth.
 ///
 /// Move-only (it holds GL objects); create and use it with the same context current.
