@@ -136,7 +136,12 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     result.localToCamera = camera.view * model;
     result.marks = markDrawing();
     result.footprint = timed(statistics, sg::RenderPhase::Classify, [this] { return footprint(); });
-    auto splats = std::make_shared<octree::SplatList>();
+    // The list of the last frame, refilled when the frame that drew it is gone: the same pages,
+    // no allocation or zeroing per frame (about a twentieth of a Marschner-Lobb 128^3 CPU frame).
+    if (!mSplatList || mSplatList.use_count() > 1) {
+        mSplatList = std::make_shared<octree::SplatList>();
+    }
+    const std::shared_ptr<octree::SplatList> splats = mSplatList;
     if (!fullResolution) {
         // The octree is part of the cached classification; build it outside the ordering time.
         timed(statistics, sg::RenderPhase::Classify, [&] {
@@ -185,7 +190,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     bytes.classified += classified->memoryBytes() + mCache->valueRangeBytes();
     bytes.octree += fullResolution ? 0 : mCache->octree().memoryBytes();
     bytes.splats += splats->memoryBytes();
-    result.splats = std::move(splats);
+    result.splats = splats;
     return result;
 }
 

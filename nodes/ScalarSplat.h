@@ -152,6 +152,7 @@ private:
 
     std::unique_ptr<render::detail::ClassificationCache> mCache;
     std::shared_ptr<const render::SplatFootprint> mFootprint;
+    std::shared_ptr<octree::SplatList> mSplatList; // the last frame's, refilled when free
 };
 
 } // namespace texsplat::nodes

@@ -48,6 +48,15 @@ static_assert(sizeof(SplatVector) == 4 * sizeof(float), "SplatVector must stay o
 /// rasterizer): drawing in index order composites correctly with the "over" operator.
 class SplatList {
 public:
+    SplatList() = default;
+    SplatList(const SplatList&) = default;
+    SplatList(SplatList&&) noexcept = default;
+    /// @brief Takes @p other's splats; the revision still moves on (see revision()).
+    SplatList& operator=(const SplatList& other);
+    /// @brief Takes @p other's splats; the revision still moves on (see revision()).
+    SplatList& operator=(SplatList&& other) noexcept;
+    ~SplatList() = default;
+
     /// @brief Reserves room for @p count splats, and for their vectors when @p withVectors.
     void reserve(std::size_t count, bool withVectors);
 
@@ -63,16 +72,28 @@ public:
 
     /// @brief Makes the list exactly @p count splats long (with as many vectors when
     /// @p withVectors, else none), for a caller that writes them in place through
-    /// writableSplats() and writableVectors(), e.g. from several threads at once.
+    /// writableSplats() and writableVectors(), e.g. from several threads at once. Splats it
+    /// already held are kept (not cleared), so a list refilled with about as many splats as
+    /// last frame writes no memory twice.
     void resize(std::size_t count, bool withVectors);
 
     /// @brief The splats, to be written in place (see resize()).
-    [[nodiscard]] Splat* writableSplats() { return mSplats.data(); }
+    [[nodiscard]] Splat* writableSplats() {
+        ++mRevision;
+        return mSplats.data();
+    }
 
     /// @brief The vectors, to be written in place (see resize()); null without vectors.
     [[nodiscard]] SplatVector* writableVectors() {
+        ++mRevision;
         return mVectors.empty() ? nullptr : mVectors.data();
     }
+
+    /// @brief A number that grows with every change of the list (add(), clear(), resize(),
+    /// assignment, the writable pointers): a list kept and refilled frame after frame is the
+    /// same object with new splats, and what a backend uploaded of it is current while this is
+    /// unchanged.
+    [[nodiscard]] std::uint64_t revision() const { return mRevision; }
 
     /// @brief Number of splats.
     [[nodiscard]] std::size_t size() const { return mSplats.size(); }
@@ -96,6 +117,7 @@ public:
 private:
     std::vector<Splat> mSplats;
     std::vector<SplatVector> mVectors;
+    std::uint64_t mRevision = 0;
 };
 
 } // namespace texsplat::octree

@@ -97,7 +97,6 @@ void emitSplats(const Cut& cut, const View& view, SplatList& splats,
 
 void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats,
                      const VectorEmission* vectors) {
-    splats.clear();
     TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
     const SliceOrder order(grid, view);
     // The voxel centres' box in front of the eye: no voxel can be behind it.

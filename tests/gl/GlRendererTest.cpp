@@ -104,6 +104,32 @@ TEST(GlRenderer, keepsItsBatchesWhileTheSceneKeepsItsFootprints) {
     EXPECT_EQ(batchesMade(), 1u) << "a new footprint, a new batch; the other node keeps its own";
 }
 
+TEST(GlRenderer, drawsANodesRefilledSplatListAnew) {
+    // A splat node refills last frame's list when that frame is gone (the same object, new
+    // splats): the GL batch must upload it again. Frame 2 sees the scene from the other side; it
+    // must be what a fresh renderer draws of it.
+    test::sharedContext();
+    // Footprints of their own (two nodes of one footprint share its batch, which then uploads
+    // each list in turn anyway).
+    const TextureSplat::Ptr second = TextureSplat::create();
+    second->size.setValue(1.5f);
+    const sg::Separator::Ptr root = twoVolumesAndAMesh(TextureSplat::create(), second);
+    auto* camera = static_cast<PerspectiveCamera*>(root->child(0).get());
+    render::FrameAction action(kSize, kSize);
+    render::GlRenderer kept;
+    const octree::SplatList* list = action.collect(*root).splats[0].splats.get();
+    const image::Image before = kept.draw(action.frame(), action.statistics());
+    camera->orientation.setValue(render::rotationLookingAlong({0.6f, 0.35f, 1.0f}));
+    test::frameCamera(*camera, *root); // from the other side: the splats' order changes
+    const render::Frame& turned = action.collect(*root);
+    EXPECT_EQ(turned.splats[0].splats.get(), list) << "the list was refilled, not made anew";
+    const image::Image after = kept.draw(turned, action.statistics());
+    render::GlRenderer fresh;
+    const image::Image expected = fresh.draw(turned, action.statistics());
+    EXPECT_GT(image::ImageComparison(before, expected).rgb().rmse, 1e-3) << "the view changed";
+    EXPECT_EQ(image::ImageComparison(after, expected).rgb().rmse, 0.0);
+}
+
 // A frame larger than the tile size is drawn tile by tile through clip matrices scaled and moved
 // onto each tile; the pixels are the same but for rounding (measured: 3.6e-6 of colour, 5.4e-7
 // of depth) and a pixel whose centre a mesh edge passes within rounding of, which may fall on the

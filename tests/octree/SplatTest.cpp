@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cstddef>
+#include <cstdint>
 
 using texsplat::octree::Splat;
 using texsplat::octree::SplatList;
@@ -46,4 +47,32 @@ TEST(SplatList, keepsVectorsParallelToSplats) {
     ASSERT_EQ(list.vectors().size(), list.size());
     EXPECT_EQ(list.vectors()[0].row, 3);
     EXPECT_EQ(list.vectors()[0].column, 7);
+}
+
+TEST(SplatList, everyChangeMovesTheRevisionOn) {
+    // A backend keeps what it uploaded of a list while the list's revision stays; a node
+    // refills one list frame after frame, so every change must move it on, never back (an
+    // assigned list brings its own, smaller count).
+    SplatList list;
+    std::uint64_t last = list.revision();
+    const auto movedOn = [&] {
+        const bool grew = list.revision() > last;
+        last = list.revision();
+        return grew;
+    };
+    list.add(Splat{});
+    EXPECT_TRUE(movedOn());
+    list.resize(5, false);
+    EXPECT_TRUE(movedOn());
+    (void)list.writableSplats();
+    EXPECT_TRUE(movedOn());
+    list.clear();
+    EXPECT_TRUE(movedOn());
+    SplatList fresh;
+    fresh.add(Splat{});
+    list = fresh;
+    EXPECT_TRUE(movedOn());
+    list = SplatList();
+    EXPECT_TRUE(movedOn());
+    EXPECT_EQ(list.size(), 0u);
 }

@@ -204,6 +204,11 @@ void SplatBatch::upload(const octree::SplatList& splats) {
 void SplatBatch::upload(const std::shared_ptr<const octree::SplatList>& splats) {
     upload(*splats);
     mUploadedList = splats;
+    mUploadedRevision = splats->revision();
+}
+
+bool SplatBatch::isUploaded(const std::shared_ptr<const octree::SplatList>& splats) const {
+    return mUploadedList.lock() == splats && splats->revision() == mUploadedRevision;
 }
 
 void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks) {

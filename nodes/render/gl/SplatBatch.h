@@ -82,10 +82,9 @@ public:
     /// interleave their runs with other batches.
     void upload(const std::shared_ptr<const octree::SplatList>& splats);
 
-    /// @brief Whether `splats` is the list the last upload() of a shared list put on the GPU.
-    bool isUploaded(const std::shared_ptr<const octree::SplatList>& splats) const {
-        return mUploadedList.lock() == splats;
-    }
+    /// @brief Whether `splats`, as it is now, is what the last upload() of a shared list put
+    /// on the GPU: the same list at the same revision (a node refills its list every frame).
+    bool isUploaded(const std::shared_ptr<const octree::SplatList>& splats) const;
 
     /// @brief Draws the uploaded splats in their order; `marks` matters to vector and combined
     /// batches only. Leaves blending and depth state to the caller (GlRenderer's splat pass).
@@ -133,6 +132,7 @@ private:
     std::size_t mCount = 0;
     std::size_t mAttributeFirst = 0; // the instance the per-instance attributes start at
     std::weak_ptr<const octree::SplatList> mUploadedList;
+    std::uint64_t mUploadedRevision = 0;
 };
 
 } // namespace texsplat::render
