@@ -7,7 +7,7 @@ namespace texsplat::sg {
 
 EngineOutputBase::~EngineOutputBase() {
     for (Field* target : mTargets) {
-        target->mSourceOutput = nullptr;
+        target->mConnections->sourceOutput = nullptr;
     }
 }
 

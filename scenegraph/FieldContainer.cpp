@@ -3,6 +3,7 @@
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/detail/FieldDescriptions.h"
+#include "scenegraph/detail/FieldNames.h"
 #include "scenegraph/fields/Field.h"
 
 #include <cctype>
@@ -58,21 +59,31 @@ void FieldContainer::setName(std::string name) {
                         "whitespace, control characters or any of " +
                         std::string(kForbiddenNameChars) + ")");
     }
-    mName = std::move(name);
+    if (name.empty()) {
+        mName.reset();
+    } else {
+        mName = std::make_unique<std::string>(std::move(name));
+    }
 }
 
+const std::string& FieldContainer::name() const { return mName ? *mName : detail::noName(); }
+
 std::string FieldContainer::describe() const {
-    return mName.empty() ? typeName() : typeName() + "(" + mName + ")";
+    return mName ? typeName() + "(" + *mName + ")" : typeName();
 }
 
 void FieldContainer::notify(const Field* source) { notifyObservers(source); }
 
-void FieldContainer::attachField(Field& field, std::string name, const char* description) {
+const std::string& FieldContainer::internedName(std::string_view name) {
+    return detail::internFieldName(name);
+}
+
+void FieldContainer::attachField(Field& field, const std::string& name, const char* description) {
     TEXSPLAT_ASSERT(field.mContainer == nullptr, "FieldContainer::addField(): field added twice");
     TEXSPLAT_ASSERT(this->findField(name) == nullptr, "FieldContainer::addField(): duplicate name");
     detail::recordFieldDescription(*this, name, description);
     field.mContainer = this;
-    field.mName = std::move(name);
+    field.mName = &name;
     field.mIsDefault = true;
     mFields.push_back(&field);
     field.attached();

@@ -40,7 +40,7 @@ public:
     Field* findField(std::string_view name) const;
 
     /// @brief The name used for DEF/USE and SearchAction; empty when unnamed.
-    const std::string& name() const { return mName; }
+    const std::string& name() const;
 
     /// @brief Sets the name. Throws DataError unless it is a valid Inventor name that scene files
     /// can hold: it must not start with a digit or `#` and must not contain whitespace, control
@@ -66,24 +66,37 @@ protected:
     /// Call once per field, in the constructor. The value type is whatever the field's
     /// `setValue()` accepts.
     template <class F, class V>
-    void addField(F& field, std::string name, V&& defaultValue, const char* description) {
+    void addField(F& field, std::string_view name, V&& defaultValue, const char* description) {
         field.setValue(std::forward<V>(defaultValue));
-        attachField(field, std::move(name), description);
+        attachField(field, internedName(name), description);
     }
 
     /// @brief Registers an enumerated field: its value names, default and meaning, declared once.
     template <class F, class E>
-    void addField(F& field, std::string name, E defaultValue, const EnumNames& names,
+    void addField(F& field, std::string_view name, E defaultValue, const EnumNames& names,
                   const char* description) {
         field.setEnumNames(names);
-        addField(field, std::move(name), defaultValue, description);
+        addField(field, name, defaultValue, description);
+    }
+
+    /// @brief As addField(), for a name that no class declares (an unknown node's field, named
+    /// in a file). The fields of a declared name share one interned string, kept for the life of
+    /// the process; this one is not interned: the caller keeps `name` unchanged for the field's
+    /// life.
+    template <class F, class V>
+    void addFieldNamedBy(F& field, const std::string& name, V&& defaultValue,
+                         const char* description) {
+        field.setValue(std::forward<V>(defaultValue));
+        attachField(field, name, description);
     }
 
 private:
-    void attachField(Field& field, std::string name, const char* description);
+    static const std::string& internedName(std::string_view name);
+    void attachField(Field& field, const std::string& name, const char* description);
 
     std::vector<Field*> mFields;
-    std::string mName;
+    // Made when a name is set: most nodes have none (8 bytes, not a string's 32).
+    std::unique_ptr<std::string> mName;
 };
 
 } // namespace texsplat::sg

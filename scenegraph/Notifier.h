@@ -3,6 +3,7 @@
 #include "scenegraph/Fwd.h"
 
 #include <cstddef>
+#include <memory>
 #include <vector>
 
 namespace texsplat::sg {
@@ -11,6 +12,9 @@ namespace texsplat::sg {
 ///
 /// Observers may add or remove observers (themselves included) while being notified; an
 /// observer removed during a notification is not called afterwards in that notification.
+///
+/// The observer list is made on the first addObserver(): most fields and nodes are never
+/// observed, and pay one pointer for it (every field is a Notifier; issue 14).
 class Notifier {
 public:
     Notifier() = default;
@@ -34,8 +38,12 @@ protected:
     void notifyObservers(const Field* source);
 
 private:
-    std::vector<Observer*> mObservers;
-    int mNotifyDepth = 0;
+    struct Observers {
+        std::vector<Observer*> list;
+        int notifyDepth = 0;
+    };
+
+    std::unique_ptr<Observers> mObservers;
 };
 
 } // namespace texsplat::sg

@@ -8,6 +8,7 @@
 #include "nodes/volume/detail/Printable.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "nodes/volume/detail/VdbHeader.h"
+#include "scenegraph/MemoryLimit.h"
 
 #include <openvdb/openvdb.h>
 
@@ -49,14 +50,34 @@ std::string corrupt(const std::string& path, const std::string& reason) {
     return path + ": truncated or corrupt VDB file: " + reason;
 }
 
+// "1 internal node of 32^3, 8 of 16^3 and 40 leaves": what a tree's memory goes to.
+std::string nodesText(const detail::VdbNodeCounts& nodes) {
+    return std::to_string(nodes.upper) + " internal node" + (nodes.upper == 1 ? "" : "s") +
+           " of 32^3, " + std::to_string(nodes.lower) + " of 16^3 and " +
+           std::to_string(nodes.leaves) + (nodes.leaves == 1 ? " leaf" : " leaves");
+}
+
 // Opens with OpenVDB after checking the path ourselves, so a missing file gets the same message
 // as from the raw reader instead of OpenVDB's wording, and every size and count the file
 // declares (header, metadata, transforms, trees) against the file before OpenVDB allocates or
-// loops for them.
-std::unique_ptr<openvdb::io::File> openVdb(const std::string& path) {
+// loops for them. A file written as a stream has its trees read on opening: what they need is
+// checked against the memory limit first. `trees` receives what the walk found.
+std::unique_ptr<openvdb::io::File> openVdb(const std::string& path,
+                                           detail::VdbFileTrees& trees) {
     openvdb::initialize();
     detail::openForReading(path);
-    detail::checkVdbDeclaredSizes(path);
+    trees = detail::checkVdbDeclaredSizes(path);
+    if (trees.streamed) {
+        std::uint64_t bytes = 0;
+        for (const auto& grid : trees.grids)
+            bytes = byteSum(bytes, grid.second.bytes);
+        const std::size_t grids = trees.grids.size();
+        detail::checkFitsInMemory(path + ": reading the trees of its " + std::to_string(grids) +
+                                      (grids == 1 ? " grid" : " grids") +
+                                      " into OpenVDB, which reads them all on opening a file "
+                                      "written as a stream,",
+                                  bytes);
+    }
     auto file = std::make_unique<openvdb::io::File>(path);
     callOpenVdb([&] { return file->open(false); },
                 [&](const std::string& reason) {
@@ -108,9 +129,10 @@ GridGeometry geometryOf(const openvdb::GridBase& grid, const openvdb::CoordBBox&
     }
 }
 
+// `treeBytes`: what OpenVDB's tree holds while it is copied, where this read made it.
 template <typename VdbGrid>
 auto convert(const VdbGrid& source, const std::string& path, const std::string& gridName,
-             const ProgressCallback& progress) {
+             const ProgressCallback& progress, std::uint64_t treeBytes) {
     using Value = decltype(toGlm(source.background()));
     const std::string where = path + ": grid '" + gridName + "'";
     const openvdb::CoordBBox box = source.evalActiveVoxelBoundingBox();
@@ -133,7 +155,7 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
         (active - source.tree().activeLeafVoxelCount()) / std::uint64_t(kBlock * kBlock * kBlock);
     detail::checkFitsInMemory(where + ": copying its " + std::to_string(active) +
                                   " active voxels (tiles included)",
-                              SparseGrid<Value>::memoryBytesForBlocks(blocks));
+                              byteSum(treeBytes, SparseGrid<Value>::memoryBytesForBlocks(blocks)));
     const auto total = static_cast<double>(active);
     const std::string message = "copying grid '" + gridName + "'";
     std::int64_t copied = 0;
@@ -164,7 +186,8 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
 bool isOpenVdbAvailable() { return true; }
 
 std::vector<VdbGridInfo> listVdbGrids(const std::string& path) {
-    auto file = openVdb(path);
+    detail::VdbFileTrees trees;
+    auto file = openVdb(path, trees);
     return gridInfos(*file, path);
 }
 
@@ -172,16 +195,17 @@ std::vector<VdbGridInfo> listVdbGrids(const std::string& path) {
 constexpr const char* kInMemory = "in-memory OpenVDB grid";
 
 ScalarGridPtr gridFromVdb(const openvdb::FloatGrid& grid) {
-    return convert(grid, kInMemory, grid.getName(), {});
+    return convert(grid, kInMemory, grid.getName(), {}, 0);
 }
 
 VectorGridPtr gridFromVdb(const openvdb::Vec3SGrid& grid) {
-    return convert(grid, kInMemory, grid.getName(), {});
+    return convert(grid, kInMemory, grid.getName(), {}, 0);
 }
 
 AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
                     const ProgressCallback& progress) {
-    auto file = openVdb(path);
+    detail::VdbFileTrees trees;
+    auto file = openVdb(path, trees);
     const bool hasGrid =
         callOpenVdb([&] { return file->hasGrid(gridName); },
                     [&](const std::string& reason) { return corrupt(path, reason); });
@@ -203,14 +227,21 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
         [&] { return file->readGridMetadata(gridName)->valueType(); }, cannotRead);
     if (valueType != "float" && valueType != "vec3s")
         throw DataError(where + " holds " + valueType + " values; expected float or vec3s");
+    // A float or vec3s grid's tree was walked; a file written as a stream has been read whole.
+    const detail::VdbTreeSize* walked = trees.find(gridName);
+    const detail::VdbTreeSize tree = walked != nullptr ? *walked : detail::VdbTreeSize{};
+    if (!trees.streamed)
+        detail::checkFitsInMemory(where + ": reading its tree of " + nodesText(tree.nodes) +
+                                      " into OpenVDB",
+                                  tree.bytes);
     // OpenVDB reads and decompresses the whole grid in this one call, often the longest step.
     reportProgress(progress, path, 0.0, "reading grid '" + gridName + "'");
     const openvdb::GridBase::Ptr base =
         callOpenVdb([&] { return file->readGrid(gridName); }, cannotRead);
     if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
-        return ScalarGridPtr(convert(*scalar, path, gridName, progress));
+        return ScalarGridPtr(convert(*scalar, path, gridName, progress, tree.bytes));
     if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))
-        return VectorGridPtr(convert(*vector, path, gridName, progress));
+        return VectorGridPtr(convert(*vector, path, gridName, progress, tree.bytes));
     throw DataError(where + " holds " + base->valueType() + " values; expected float or vec3s");
 }
 

@@ -6,6 +6,7 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/FieldContainer.h"
 #include "scenegraph/Node.h"
+#include "scenegraph/detail/FieldNames.h"
 #include "scenegraph/fields/FieldValueWriter.h"
 
 #include <algorithm>
@@ -121,17 +122,31 @@ void eraseOne(std::vector<Field*>& fields, Field* field) {
 
 Field::~Field() {
     disconnect();
-    for (Field* target : mTargets) {
-        target->mSourceField = nullptr;
+    for (Field* target : targets()) {
+        target->mConnections->sourceField = nullptr;
     }
+}
+
+Field::Connections& Field::connections() {
+    if (!mConnections) {
+        mConnections = std::make_unique<Connections>();
+    }
+    return *mConnections;
+}
+
+const std::vector<Field*>& Field::targets() const {
+    static const std::vector<Field*> none;
+    return mConnections ? mConnections->targets : none;
 }
 
 std::string Field::fullName() const {
     if (mContainer == nullptr) {
         return "<standalone>";
     }
-    return mContainer->describe() + "." + mName;
+    return mContainer->describe() + "." + name();
 }
+
+const std::string& Field::name() const { return mName != nullptr ? *mName : detail::noName(); }
 
 std::string Field::valueText() const {
     LineWriter writer;
@@ -158,8 +173,9 @@ void Field::propagate(bool clearDefault) {
     }
     notifyObservers(this);
     // Index loop: a target may disconnect itself while being updated.
-    for (std::size_t i = 0; i < mTargets.size(); ++i) {
-        mTargets[i]->receive(*this);
+    const std::vector<Field*>& followers = targets();
+    for (std::size_t i = 0; i < followers.size(); ++i) {
+        followers[i]->receive(*this);
     }
     if (mContainer != nullptr) {
         mContainer->notify(this);
@@ -176,8 +192,8 @@ void Field::checkSameType(const Field& other) const {
 void Field::connectFrom(Field& source) {
     checkConnectable(source.typeName(), source.fullName(), &source, nullptr);
     disconnect();
-    mSourceField = &source;
-    source.mTargets.push_back(this);
+    connections().sourceField = &source;
+    source.connections().targets.push_back(this);
     receive(source);
 }
 
@@ -185,29 +201,35 @@ void Field::connectFrom(EngineOutputBase& output) {
     checkConnectable(output.typeName(), output.fullName(), nullptr, &output);
     std::shared_ptr<FieldContainer> engine = output.engine().shared_from_this();
     disconnect();
-    mSourceOutput = &output;
-    mSourceOwner = std::move(engine);
+    Connections& connection = connections();
+    connection.sourceOutput = &output;
+    connection.sourceOwner = std::move(engine);
     output.mTargets.push_back(this);
     receive(output.valueField());
 }
 
 void Field::disconnect() {
-    if (mSourceField != nullptr) {
-        eraseOne(mSourceField->mTargets, this);
-        mSourceField = nullptr;
+    if (!mConnections) {
+        return;
     }
-    if (mSourceOutput != nullptr) {
-        eraseOne(mSourceOutput->mTargets, this);
-        mSourceOutput = nullptr;
+    Connections& connection = *mConnections;
+    if (connection.sourceField != nullptr) {
+        eraseOne(connection.sourceField->mConnections->targets, this);
+        connection.sourceField = nullptr;
+    }
+    if (connection.sourceOutput != nullptr) {
+        eraseOne(connection.sourceOutput->mTargets, this);
+        connection.sourceOutput = nullptr;
     }
     // Last: releasing the owner may destroy it and its fields or outputs.
-    std::shared_ptr<FieldContainer> owner = std::move(mSourceOwner);
+    std::shared_ptr<FieldContainer> owner = std::move(connection.sourceOwner);
 }
 
 void Field::keepSourceAlive() {
-    TEXSPLAT_ASSERT(mSourceField != nullptr && mSourceField->mContainer != nullptr,
+    Field* source = connectedField();
+    TEXSPLAT_ASSERT(source != nullptr && source->mContainer != nullptr,
                     "Field::keepSourceAlive(): not connected from a field of a container");
-    mSourceOwner = mSourceField->mContainer->shared_from_this();
+    mConnections->sourceOwner = source->mContainer->shared_from_this();
 }
 
 void Field::checkConnectable(std::string_view sourceType, const std::string& sourceName,
@@ -233,10 +255,10 @@ void Field::checkConnectable(std::string_view sourceType, const std::string& sou
     std::vector<ChainLink> path{{sourceField, sourceOutput}};
     while (path.back().field != nullptr && path.back().field->isConnected()) {
         const Field& field = *path.back().field;
-        if (field.mSourceField == this) {
+        if (field.connectedField() == this) {
             cycle(path);
         }
-        path.push_back({field.mSourceField, field.mSourceOutput});
+        path.push_back({field.connectedField(), field.connectedOutput()});
     }
     std::size_t above = path.size() - 1;
     if (const EngineOutputBase* output = path.back().output) {
@@ -247,7 +269,7 @@ void Field::checkConnectable(std::string_view sourceType, const std::string& sou
                     next.push_back({input, nullptr});
                 }
             } else if (link.field->isConnected()) {
-                next.push_back({link.field->mSourceField, link.field->mSourceOutput});
+                next.push_back({link.field->connectedField(), link.field->connectedOutput()});
             }
         };
         path.pop_back();
@@ -260,7 +282,7 @@ void Field::checkConnectable(std::string_view sourceType, const std::string& sou
     // Downstream a field feeds its targets and, as an engine input, its engine's outputs.
     const auto downstream = [](const ChainLink& link, std::vector<ChainLink>& next) {
         const std::vector<Field*>& targets =
-            link.field != nullptr ? link.field->mTargets : link.output->connectedFields();
+            link.field != nullptr ? link.field->targets() : link.output->connectedFields();
         for (const Field* target : targets) {
             next.push_back({target, nullptr});
         }

@@ -28,6 +28,10 @@ namespace texsplat::sg {
 /// than kMaxConnectionChain links; a connection that would make one longer throws DataError. A
 /// field connected from an engine output keeps that engine alive; a field-to-field connection
 /// does not own the source (it is dropped when the source dies) unless keepSourceAlive() says so.
+///
+/// A field costs what its value holds plus 48 bytes: what connections need is made on the first
+/// connection to or from it, its observer list on the first observer (Notifier), and its name is
+/// shared by every field of that name (issue 14: a field cost 144 bytes whatever it held).
 class Field : public Notifier {
 public:
     /// @brief The longest chain of connections, in links. A change passes each link in a few
@@ -43,7 +47,7 @@ public:
     virtual std::string_view typeName() const = 0;
 
     /// @brief The name under which the container registered it ("size"); empty if standalone.
-    const std::string& name() const { return mName; }
+    const std::string& name() const;
 
     /// @brief The owning node or engine, nullptr for a standalone field.
     FieldContainer* container() const { return mContainer; }
@@ -97,13 +101,15 @@ public:
     void disconnect();
 
     /// @brief True when connected from a field or an engine output.
-    bool isConnected() const { return mSourceField != nullptr || mSourceOutput != nullptr; }
+    bool isConnected() const { return connectedField() != nullptr || connectedOutput() != nullptr; }
 
     /// @brief The field this one follows, or nullptr.
-    Field* connectedField() const { return mSourceField; }
+    Field* connectedField() const { return mConnections ? mConnections->sourceField : nullptr; }
 
     /// @brief The engine output this one follows, or nullptr.
-    EngineOutputBase* connectedOutput() const { return mSourceOutput; }
+    EngineOutputBase* connectedOutput() const {
+        return mConnections ? mConnections->sourceOutput : nullptr;
+    }
 
 protected:
     Field() = default;
@@ -121,20 +127,31 @@ private:
     friend class FieldContainer;
     friend class EngineOutputBase;
 
+    // The incoming connection and the fields that follow this one: made on the first connection
+    // to or from the field, and kept.
+    struct Connections {
+        Field* sourceField = nullptr;
+        EngineOutputBase* sourceOutput = nullptr;
+        // The engine of sourceOutput, or the container of sourceField after keepSourceAlive().
+        std::shared_ptr<FieldContainer> sourceOwner;
+        std::vector<Field*> targets;
+    };
+
+    Connections& connections();
+    const std::vector<Field*>& targets() const;
     void propagate(bool clearDefault);
     void receive(const Field& source);
     void checkConnectable(std::string_view sourceType, const std::string& sourceName,
                           const Field* sourceField, const EngineOutputBase* sourceOutput) const;
 
     FieldContainer* mContainer = nullptr;
-    std::string mName;
+    // Interned (detail::internFieldName()): one string for every field of that name; or, for a
+    // name read from a file, the container's own (FieldContainer::addFieldNamedBy()).
+    const std::string* mName = nullptr;
+    std::unique_ptr<Connections> mConnections;
+    // Last, so that a derived field's value may fill the padding after them.
     bool mIsDefault = true;
     bool mIsReceiving = false;
-    Field* mSourceField = nullptr;
-    EngineOutputBase* mSourceOutput = nullptr;
-    // The engine of mSourceOutput, or the container of mSourceField after keepSourceAlive().
-    std::shared_ptr<FieldContainer> mSourceOwner;
-    std::vector<Field*> mTargets;
 };
 
 } // namespace texsplat::sg

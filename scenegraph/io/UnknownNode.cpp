@@ -101,8 +101,8 @@ template <class F> Field& UnknownNode::addOwnedField(std::string name) {
     auto owned = std::make_unique<F>();
     F& field = *owned;
     mOwnedFields.push_back(std::move(owned));
-    addField(field, std::move(name), zeroValue(field),
-             "A field of a type this program does not know, kept to be written back");
+    addFieldNamedBy(field, mFieldNames.emplace_back(std::move(name)), zeroValue(field),
+                    "A field of a type this program does not know, kept to be written back");
     return field;
 }
 

@@ -3,6 +3,7 @@
 #include "scenegraph/Group.h"
 #include "scenegraph/NodeType.h"
 
+#include <deque>
 #include <map>
 #include <memory>
 #include <string>
@@ -67,6 +68,9 @@ private:
     std::unique_ptr<NodeType> mType;
     // Declared before the fields so that it outlives them: SFEnum fields point into it.
     std::map<const Field*, std::unique_ptr<EnumNames>> mEnumNames;
+    // The fields' names, read from the file (not interned: see addFieldNamedBy()); a deque keeps
+    // them in place. Declared before the fields, which point to them.
+    std::deque<std::string> mFieldNames;
     std::vector<std::unique_ptr<Field>> mOwnedFields;
 };
 

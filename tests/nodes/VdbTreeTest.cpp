@@ -5,15 +5,22 @@
 #include "nodes/volume/VdbVolume.h"
 
 #include "SceneNodesTestSupport.h"
+#include "nodes/volume/SparseGrid.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
+#include "tests/scenegraph/ScopedMemoryLimit.h"
 
 #include <gtest/gtest.h>
 
 #ifdef TEXSPLAT_WITH_OPENVDB
+#include "nodes/volume/detail/VdbHeader.h"
+
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
+#include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -24,7 +31,9 @@
 namespace texsplat::volume {
 namespace {
 
+using nodes::test::errorOf;
 using nodes::test::testPath;
+using test::ScopedMemoryLimit;
 
 std::string contents(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
@@ -342,6 +351,104 @@ TEST(VdbTree, aStreamedFileWithAGridWhoseTreeIsNotCheckedIsRefused) {
               path + ": grid 'mask' is a Tree_bool_5_4_3 grid in a VDB file written as a stream, "
                      "which OpenVDB reads whole on opening it; texsplat checks only grids of "
                      "float, double, integer and vector values before that");
+}
+
+// A float grid named "density" of one voxel in each of 4 root children: a tree of 4 internal
+// nodes of each size and 4 leaves, which a file holds in about 10 KB each.
+openvdb::FloatGrid::Ptr fourChildren() {
+    openvdb::initialize();
+    auto grid = openvdb::FloatGrid::create(0.0f);
+    grid->setName("density");
+    for (int i = 0; i < 4; ++i)
+        grid->tree().setValue({4096 * i, 0, 0}, 1.0f);
+    return grid;
+}
+
+std::string writeFourChildren() {
+    return writeFile("children.vdb", {fourChildren()},
+                     openvdb::io::COMPRESS_ZIP | openvdb::io::COMPRESS_ACTIVE_MASK);
+}
+
+TEST(VdbTree, aTreeLargerThanTheMemoryLimitIsRefusedBeforeOpenVdbReadsIt) {
+    // Each internal node of 32^3 costs OpenVDB 264 KiB for the 8 KiB of its masks in the file.
+    const std::string path = writeFourChildren();
+    ASSERT_LT(std::filesystem::file_size(path), 40000u);
+    // 1232 + 16 (the tree), 393216 (reading a node of 32^3), 4 x 80 (root entries),
+    // 4 x 270368, 4 x 33824, 4 x 2176 (internal nodes and leaves, 16 bytes of malloc's each).
+    constexpr std::uint64_t kTreeBytes = 1620256;
+    const ScopedMemoryLimit limit(1u << 20);
+    EXPECT_EQ(errorOf<ResourceError>([&] { readVdbGrid(path, "density"); }),
+              path + ": grid 'density': reading its tree of 4 internal nodes of 32^3, 4 of 16^3 "
+                     "and 4 leaves into OpenVDB would need " + bytesText(kTreeBytes) +
+                  ", more than the memory limit of 1048576 bytes (1 MiB); use a volume of lower "
+                  "resolution, or a larger --memory-limit");
+    EXPECT_EQ(listVdbGrids(path).size(), 1u); // reads no tree
+    // A file written as a stream: OpenVDB reads every tree on opening it.
+    const std::string streamed = testPath("streamed.vdb");
+    {
+        std::ofstream out(streamed, std::ios::binary);
+        openvdb::io::Stream(out).write(openvdb::GridPtrVec{fourChildren()});
+    }
+    EXPECT_EQ(errorOf<ResourceError>([&] { listVdbGrids(streamed); }),
+              streamed + ": reading the trees of its 1 grid into OpenVDB, which reads them all "
+                         "on opening a file written as a stream, would need " +
+                  bytesText(kTreeBytes) +
+                  ", more than the memory limit of 1048576 bytes (1 MiB); use a volume of lower "
+                  "resolution, or a larger --memory-limit");
+}
+
+TEST(VdbTree, aGridThatNeedsJustTheMemoryLimitIsRead) {
+    // While the grid is copied, OpenVDB's tree is held too: the read needs both.
+    const std::string path = writeFourChildren();
+    const std::uint64_t tree = detail::checkVdbDeclaredSizes(path).find("density")->bytes;
+    const std::uint64_t needed = tree + SparseGrid<float>::memoryBytesForBlocks(4);
+    {
+        const ScopedMemoryLimit limit(needed);
+        EXPECT_EQ(std::get<ScalarGridPtr>(readVdbGrid(path, "density"))->value({4096 * 3, 0, 0}),
+                  1.0f);
+    }
+    const ScopedMemoryLimit limit(needed - 1);
+    const std::string error = errorOf<ResourceError>([&] { readVdbGrid(path, "density"); });
+    EXPECT_EQ(error.rfind(path + ": grid 'density': copying its 4 active voxels (tiles included) "
+                                 "would need " + bytesText(needed) + ", more than",
+                          0),
+              0u)
+        << error;
+}
+
+// A shell of radius 70 voxels and 4 thick about the origin (8 root children, ~250 000 voxels).
+template <typename GridType> typename GridType::Ptr shell(const std::string& name) {
+    openvdb::initialize();
+    auto grid = GridType::create();
+    grid->setName(name);
+    auto accessor = grid->getAccessor();
+    for (int x = -72; x <= 72; ++x)
+        for (int y = -72; y <= 72; ++y)
+            for (int z = -72; z <= 72; ++z)
+                if (std::abs(std::sqrt(float(x * x + y * y + z * z)) - 70.0f) < 2.0f)
+                    accessor.setValue({x, y, z}, typename GridType::ValueType(1.0f));
+    return grid;
+}
+
+TEST(VdbTree, theTreeEstimateBoundsWhatOpenVdbsTreeHoldsOnceRead) {
+    // At least what the tree's own memUsage() counts, and at most 20 % more (the estimate adds
+    // malloc's headers, the root's map and the arrays held while a node of 32^3 is read).
+    const std::string path = writeFile(
+        "shell.vdb", {shell<openvdb::FloatGrid>("float"), shell<openvdb::Vec3SGrid>("vector")},
+        openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK);
+    const detail::VdbFileTrees trees = detail::checkVdbDeclaredSizes(path);
+    openvdb::io::File file(path);
+    file.open(false);
+    for (const char* name : {"float", "vector"}) {
+        SCOPED_TRACE(name);
+        const std::uint64_t estimate = trees.find(name)->bytes;
+        const std::uint64_t used = file.readGrid(name)->memUsage();
+        EXPECT_GE(estimate, used);
+        EXPECT_LE(double(estimate), 1.2 * double(used));
+        std::printf("%s: estimate %llu bytes, memUsage() %llu bytes (%.3f)\n", name,
+                    static_cast<unsigned long long>(estimate),
+                    static_cast<unsigned long long>(used), double(estimate) / double(used));
+    }
 }
 
 } // namespace

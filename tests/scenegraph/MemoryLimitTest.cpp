@@ -1,5 +1,7 @@
 #include "scenegraph/MemoryLimit.h"
 
+#include "ScopedMemoryLimit.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdint>
@@ -11,17 +13,7 @@
 namespace texsplat {
 namespace {
 
-// Sets the process's limit for one test and restores it after.
-class ScopedMemoryLimit {
-public:
-    explicit ScopedMemoryLimit(std::uint64_t bytes) : mPrevious(setMemoryLimit(bytes)) {}
-    ~ScopedMemoryLimit() { setMemoryLimit(mPrevious); }
-    ScopedMemoryLimit(const ScopedMemoryLimit&) = delete;
-    ScopedMemoryLimit& operator=(const ScopedMemoryLimit&) = delete;
-
-private:
-    std::uint64_t mPrevious;
-};
+using test::ScopedMemoryLimit;
 
 std::string errorOf(std::string_view text) {
     try {

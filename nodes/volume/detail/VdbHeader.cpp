@@ -3,6 +3,7 @@
 #include "nodes/volume/detail/DeclaredSizes.h"
 #include "nodes/volume/detail/Printable.h"
 #include "nodes/volume/detail/VdbTree.h"
+#include "nodes/volume/detail/VdbTreeMemory.h"
 #include "scenegraph/Error.h"
 
 #include <openvdb/Metadata.h>
@@ -29,19 +30,27 @@ constexpr std::uint32_t kUuidLength = 36;           // the UUID as text
 constexpr std::string_view kHalfFloatSuffix = "_HalfFloat"; // a grid type saved as half floats
 constexpr char kUniqueNameSeparator = '\x1e';       // "name\x1e1": the second grid named "name"
 
-// The trees whose leaves hold values (not bool, mask or point grids): their type names, and the
-// bytes of a value in full and as a half float where OpenVDB saves one so.
-std::optional<VdbValueSizes> valueSizes(std::string type) {
+// A tree whose leaves hold values (not a bool, mask or point grid's): the bytes of a value in full
+// and as a half float where OpenVDB saves one so, and what OpenVDB allocates to read it.
+struct TreeType {
+    VdbValueSizes values;
+    std::uint64_t (*bytes)(const VdbNodeCounts&);
+};
+
+std::optional<TreeType> treeType(std::string type) {
     const bool half = type.size() > kHalfFloatSuffix.size() &&
                       type.compare(type.size() - kHalfFloatSuffix.size(), std::string::npos,
                                    kHalfFloatSuffix) == 0;
     if (half)
         type.erase(type.size() - kHalfFloatSuffix.size());
-    const std::map<std::string, VdbValueSizes> trees = {
-        {"Tree_float_5_4_3", {4, half ? 2u : 4u}},   {"Tree_double_5_4_3", {8, half ? 2u : 8u}},
-        {"Tree_vec3s_5_4_3", {12, half ? 6u : 12u}}, {"Tree_vec3d_5_4_3", {24, half ? 6u : 24u}},
-        {"Tree_int32_5_4_3", {4, 4}},                {"Tree_int64_5_4_3", {8, 8}},
-        {"Tree_vec3i_5_4_3", {12, 12}}};
+    const std::map<std::string, TreeType> trees = {
+        {"Tree_float_5_4_3", {{4, half ? 2u : 4u}, &vdbTreeBytes<openvdb::FloatTree>}},
+        {"Tree_double_5_4_3", {{8, half ? 2u : 8u}, &vdbTreeBytes<openvdb::DoubleTree>}},
+        {"Tree_vec3s_5_4_3", {{12, half ? 6u : 12u}, &vdbTreeBytes<openvdb::Vec3STree>}},
+        {"Tree_vec3d_5_4_3", {{24, half ? 6u : 24u}, &vdbTreeBytes<openvdb::Vec3DTree>}},
+        {"Tree_int32_5_4_3", {{4, 4}, &vdbTreeBytes<openvdb::Int32Tree>}},
+        {"Tree_int64_5_4_3", {{8, 8}, &vdbTreeBytes<openvdb::Int64Tree>}},
+        {"Tree_vec3i_5_4_3", {{12, 12}, &vdbTreeBytes<openvdb::Vec3ITree>}}};
     const auto found = trees.find(type);
     return found == trees.end() ? std::nullopt : std::optional(found->second);
 }
@@ -71,7 +80,7 @@ class VdbWalk {
 public:
     VdbWalk(DeclaredSizes& file, const std::string& path) : mFile(file), mPath(path) {}
 
-    void walk() {
+    VdbFileTrees walk() {
         const std::uint64_t version = mFile.littleEndian(4, "the file version");
         if (version < kFirstCheckedVersion)
             throw IoError(mPath + ": VDB file format " + std::to_string(version) +
@@ -79,6 +88,7 @@ public:
                           "OpenVDB reads it; write the file again with a newer OpenVDB");
         mFile.skip(8, "the library version");
         const bool hasGridOffsets = mFile.littleEndian(1, "the grid offsets flag") != 0;
+        mTrees.streamed = !hasGridOffsets;
         mFile.skip(kUuidLength, "the file's UUID");
         metadata("the file's metadata");
         const std::uint64_t grids = mFile.littleEndian(4, "the grid count");
@@ -104,13 +114,14 @@ public:
             // A transform OpenVDB does not know: it reports that itself, when it opens a stream
             // or lists this grid; the other grids of a file with positions are read on their own.
             if (!gridData(grid, !hasGridOffsets) && !hasGridOffsets)
-                return;
+                return mTrees;
             if (hasGridOffsets)
                 mFile.seek(end);
             mFile.setContext("");
             descriptors.push_back(grid);
         }
         checkInstances(descriptors);
+        return mTrees;
     }
 
 private:
@@ -124,10 +135,11 @@ private:
             return false;
         if (!grid.instanceParent.empty())
             return true; // its parent's tree, walked as that grid
-        const std::optional<VdbValueSizes> values = valueSizes(grid.type);
-        if (values)
-            checkVdbTree(mFile, *values, compression);
-        else if (streamed)
+        const std::optional<TreeType> tree = treeType(grid.type);
+        if (tree) {
+            const VdbNodeCounts nodes = checkVdbTree(mFile, tree->values, compression);
+            keepLargest(baseName(grid.name), {nodes, tree->bytes(nodes)});
+        } else if (streamed)
             throw IoError(mPath + ": grid '" + printable(grid.name) + "' is a " +
                           printable(grid.type) +
                           " grid in a VDB file written as a stream, which OpenVDB reads whole "
@@ -155,15 +167,27 @@ private:
 
     // A grid that shares the tree of another is read with that grid's tree, walked under the
     // other grid's type: the types must be the same, as OpenVDB writes them.
-    void checkInstances(const std::vector<Descriptor>& descriptors) const {
+    void checkInstances(const std::vector<Descriptor>& descriptors) {
         for (const Descriptor& instance : descriptors)
-            for (const Descriptor& parent : descriptors)
-                if (!instance.instanceParent.empty() &&
-                    baseName(parent.name) == baseName(instance.instanceParent) &&
-                    parent.type != instance.type)
+            for (const Descriptor& parent : descriptors) {
+                if (instance.instanceParent.empty() ||
+                    baseName(parent.name) != baseName(instance.instanceParent))
+                    continue;
+                if (parent.type != instance.type)
                     mFile.corrupt("grid '" + printable(instance.name) + "' of type " +
                                   printable(instance.type) + " shares the tree of grid '" +
                                   printable(parent.name) + "' of type " + printable(parent.type));
+                const auto tree = mTrees.grids.find(baseName(parent.name));
+                if (tree != mTrees.grids.end())
+                    keepLargest(baseName(instance.name), VdbTreeSize(tree->second));
+            }
+    }
+
+    // OpenVDB reads the first of the grids of one name that it finds: count the largest.
+    void keepLargest(const std::string& name, const VdbTreeSize& tree) {
+        VdbTreeSize& kept = mTrees.grids[name];
+        if (tree.bytes > kept.bytes)
+            kept = tree;
     }
 
     // A string: its length (4 bytes), then its bytes.
@@ -220,14 +244,21 @@ private:
 
     DeclaredSizes& mFile;
     const std::string& mPath;
+    VdbFileTrees mTrees;
 };
 
 } // namespace
 
-void checkVdbDeclaredSizes(const std::string& path) {
+const VdbTreeSize* VdbFileTrees::find(const std::string& gridName) const {
+    const auto found = grids.find(baseName(gridName));
+    return found == grids.end() ? nullptr : &found->second;
+}
+
+VdbFileTrees checkVdbDeclaredSizes(const std::string& path) {
     DeclaredSizes file(path, "truncated or corrupt VDB file");
     if (file.startsWith(std::string(" BDV\0\0\0\0", 8)))
-        VdbWalk(file, path).walk();
+        return VdbWalk(file, path).walk();
+    return {};
 }
 
 } // namespace texsplat::volume::detail

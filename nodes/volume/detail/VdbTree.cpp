@@ -48,7 +48,7 @@ public:
     TreeWalk(DeclaredSizes& file, VdbValueSizes values, std::uint32_t compression)
         : mFile(file), mValues(values), mCompression(compression) {}
 
-    void walk() {
+    VdbNodeCounts walk() {
         mFile.skip(4, "the tree's buffer count");
         mFile.skip(mValues.full, "the tree's background value");
         const std::uint64_t tiles = mFile.littleEndian(4, "the root's tile count");
@@ -61,6 +61,8 @@ public:
         }
         mFile.sized(children, kCoordBytes + 2 * maskBytes(kUpperLog2Dim) + 1,
                     "the root's child nodes");
+        mNodes.rootEntries = tiles + children;
+        mNodes.upper = children;
         // OpenVDB keeps the root's children in a map by origin (a repeated origin replaces the
         // child before it) and reads their leaves' values in that map's order: the active voxel
         // count of each leaf, per child, says how many values its block holds.
@@ -76,6 +78,7 @@ public:
                 mFile.skip(maskBytes(kLeafLog2Dim), "a leaf's value mask");
                 values(valueCount(kLeafLog2Dim), active);
             }
+        return mNodes;
     }
 
 private:
@@ -104,6 +107,7 @@ private:
         const std::uint64_t active =
             bitsSet(mFile.bytes(maskBytes(log2Dim), "an internal node's value mask"));
         values(valueCount(log2Dim), active);
+        (log2Dim == kLowerLog2Dim ? mNodes.leaves : mNodes.lower) += children;
         for (std::uint64_t i = 0; i < children; ++i) {
             if (log2Dim == kLowerLog2Dim)
                 leafActiveVoxels.push_back(static_cast<std::uint16_t>(
@@ -159,6 +163,7 @@ private:
     DeclaredSizes& mFile;
     VdbValueSizes mValues;
     std::uint32_t mCompression;
+    VdbNodeCounts mNodes;
 };
 
 } // namespace
@@ -186,8 +191,8 @@ void checkBloscBlock(DeclaredSizes& file, std::uint64_t size, std::uint64_t byte
     file.skip(size - kBloscHeaderBytes, "a compressed block");
 }
 
-void checkVdbTree(DeclaredSizes& file, VdbValueSizes values, std::uint32_t compression) {
-    TreeWalk(file, values, compression).walk();
+VdbNodeCounts checkVdbTree(DeclaredSizes& file, VdbValueSizes values, std::uint32_t compression) {
+    return TreeWalk(file, values, compression).walk();
 }
 
 } // namespace texsplat::volume::detail

@@ -14,6 +14,14 @@ struct VdbValueSizes {
     std::uint64_t block;
 };
 
+/// @brief The nodes of a tree as OpenVDB reads it, by level: what it allocates for them.
+struct VdbNodeCounts {
+    std::uint64_t rootEntries = 0; ///< the root's tiles and children, each an entry of its map
+    std::uint64_t upper = 0;       ///< internal nodes of 32³ (the root's children)
+    std::uint64_t lower = 0;       ///< internal nodes of 16³
+    std::uint64_t leaves = 0;      ///< leaves of 8³ values
+};
+
 /// @brief Walks an OpenVDB tree of the standard configuration (internal nodes of 32³ and 16³,
 /// leaves of 8³) from its start, as OpenVDB reads a grid of format 222 and later: the topology
 /// (the root's tiles and children, each node's child and value masks and its values), then the
@@ -23,9 +31,11 @@ struct VdbValueSizes {
 /// size became `new char[2^56]`; an uncompressed size other than the node's would overrun its
 /// buffer). `compression` is the grid's flags (io::COMPRESS_ZIP, _ACTIVE_MASK, _BLOSC). Leaves
 /// that OpenVDB reads in another form than values (bool and mask grids, points) are not walked.
+/// @return The nodes OpenVDB makes as it reads the tree: every child read, a repeated origin's
+/// too (OpenVDB replaces it in the root's map without deleting it).
 /// @throws IoError "path: truncated or corrupt VDB file: grid 'density': a compressed block at
 /// byte 8457 needs 72057594037927936 bytes, but the file ends at byte 10175".
-void checkVdbTree(DeclaredSizes& file, VdbValueSizes values, std::uint32_t compression);
+VdbNodeCounts checkVdbTree(DeclaredSizes& file, VdbValueSizes values, std::uint32_t compression);
 
 /// @brief Checks a blosc block of `size` bytes at the walk's position that must hold `bytes` once
 /// uncompressed, and walks past it. OpenVDB gives blosc the block without its size, and reserves
