@@ -122,19 +122,9 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                 meshes.draw(planes, bands.begin(band), bands.end(band, frame.height));
             });
         }
-        // Several batches: one depth order across them (as GlRenderer merges its batches).
-        std::vector<render::detail::SplatRun> runs;
-        if (batches.size() == 1) {
-            runs.push_back({0, 0, batches.front().splats->splats->size()});
-        } else if (batches.size() > 1) {
-            const Clock::time_point orderStart = Clock::now();
-            std::vector<std::vector<float>> depths;
-            for (const PreparedBatch& batch : batches) {
-                depths.push_back(batch.splats->cameraDepths());
-            }
-            runs = render::detail::depthOrderedRuns(depths);
-            statistics.addTime(sg::RenderPhase::Order, secondsSince(orderStart));
-        }
+        // The splats of all batches in one depth order, as GlRenderer draws them.
+        const std::vector<render::detail::SplatRun> runs =
+            render::detail::frameRuns(frame, statistics);
         std::vector<SplatRaster> rasters(kChunk);
         std::vector<RowSpan> rows(kChunk);
         for (const render::detail::SplatRun& run : runs) {

@@ -1,6 +1,29 @@
 #include "nodes/render/detail/DepthOrderedRuns.h"
 
+#include "nodes/render/Frame.h"
+#include "octree/Splat.h"
+#include "scenegraph/actions/RenderStatistics.h"
+
+#include <chrono>
+
 namespace texsplat::render::detail {
+
+std::vector<SplatRun> frameRuns(const Frame& frame, sg::RenderStatistics& statistics) {
+    if (frame.splats.size() == 1) {
+        return {{0, 0, frame.splats.front().splats->size()}};
+    }
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::vector<float>> depths;
+    depths.reserve(frame.splats.size());
+    for (const FrameSplats& splats : frame.splats) {
+        depths.push_back(splats.cameraDepths());
+    }
+    std::vector<SplatRun> runs = depthOrderedRuns(depths);
+    statistics.addTime(sg::RenderPhase::Order,
+                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+                           .count());
+    return runs;
+}
 
 std::vector<SplatRun> depthOrderedRuns(const std::vector<std::vector<float>>& depths) {
     const std::size_t batches = depths.size();

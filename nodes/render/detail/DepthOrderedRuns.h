@@ -3,6 +3,14 @@
 #include <cstddef>
 #include <vector>
 
+namespace texsplat::sg {
+struct RenderStatistics;
+} // namespace texsplat::sg
+
+namespace texsplat::render {
+struct Frame;
+} // namespace texsplat::render
+
 namespace texsplat::render::detail {
 
 /// A run of consecutive splats of one batch: splats [begin, end) of batch `batch`.
@@ -26,5 +34,10 @@ struct SplatRun {
 /// that share space (the paper's figure 8: clouds and winds) interleave splat by splat.
 /// O(splats × batches).
 std::vector<SplatRun> depthOrderedRuns(const std::vector<std::vector<float>>& depths);
+
+/// The runs both backends draw `frame`'s splat batches in: its only batch whole, or its batches
+/// merged by depthOrderedRuns() over their camera depths (the time counting as
+/// RenderPhase::Order in `statistics`); none without splat batches.
+std::vector<SplatRun> frameRuns(const Frame& frame, sg::RenderStatistics& statistics);
 
 } // namespace texsplat::render::detail

@@ -50,22 +50,6 @@ struct PassState {
 constexpr gl::FramebufferColor kColor = gl::FramebufferColor::Rgba32F;
 constexpr gl::FramebufferDepth kDepth = gl::FramebufferDepth::Depth32F;
 
-// The frame's batches merged into one depth order: one run for a single batch.
-std::vector<detail::SplatRun> splatRuns(const Frame& frame, sg::RenderStatistics& statistics) {
-    if (frame.splats.size() == 1) {
-        return {{0, 0, frame.splats.front().splats->size()}};
-    }
-    const Clock::time_point start = Clock::now();
-    std::vector<std::vector<float>> depths;
-    depths.reserve(frame.splats.size());
-    for (const FrameSplats& splats : frame.splats) {
-        depths.push_back(splats.cameraDepths());
-    }
-    std::vector<detail::SplatRun> runs = detail::depthOrderedRuns(depths);
-    statistics.addTime(sg::RenderPhase::Order, secondsSince(start));
-    return runs;
-}
-
 // Light as the read-back returns it: scaled back from what GL drew (kLightScale, a power of
 // two: exact) and clamped to FLT_MAX (+Inf beyond it), as on the CPU backend and in the ray
 // caster; alpha is not scaled.
@@ -162,7 +146,7 @@ GlRenderer::Prepared GlRenderer::prepare(const Frame& frame, sg::RenderStatistic
     statistics.builds.splatBatches += mBatches->made() - madeBefore;
     statistics.addTime(sg::RenderPhase::Upload, secondsSince(start));
     if (!frame.splats.empty()) {
-        prepared.runs = splatRuns(frame, statistics);
+        prepared.runs = detail::frameRuns(frame, statistics);
     }
     return prepared;
 }
