@@ -21,6 +21,7 @@
 #ifdef TEXSPLAT_WITH_GL
 #include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/gl/EglContext.h"
+#include "scenegraph/actions/Seconds.h"
 #endif
 
 #include <CLI/CLI.hpp>
@@ -43,11 +44,8 @@
 namespace texsplat::apps {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = sg::TimingClock;
+using sg::secondsSince;
 
 constexpr int kMaxFrames = 1000000;
 constexpr int kMaxThreads = 1024;

@@ -269,8 +269,8 @@ template <class Y> bool isZeroBetween(const detail::PiecewiseLinear<Y>& map, flo
     if (map(t0) != Y(0.0f) || map(t1) != Y(0.0f)) {
         return false;
     }
-    for (std::size_t i = 0; i < map.x().size(); ++i) {
-        if (map.x()[i] >= t0 && map.x()[i] <= t1 && map.y()[i] != Y(0.0f)) {
+    for (std::size_t i = 0; i < map.x.size(); ++i) {
+        if (map.x[i] >= t0 && map.x[i] <= t1 && map.y[i] != Y(0.0f)) {
             return false;
         }
     }
@@ -342,7 +342,9 @@ classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
                     continue;
                 }
                 const float value = voxels.values[v];
-                range = glm::vec2(std::min(range.x, value), std::max(range.y, value));
+                if (recording != nullptr) {
+                    range = glm::vec2(std::min(range.x, value), std::max(range.y, value));
+                }
                 if (!wanted) {
                     continue;
                 }

@@ -30,6 +30,7 @@
 #include "nodes/bench/detail/SamplesPassed.h"
 #include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/gl/Context.h"
+#include "scenegraph/actions/Seconds.h"
 #endif
 
 #include <algorithm>
@@ -44,11 +45,8 @@
 namespace texsplat::bench {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = sg::TimingClock;
+using sg::secondsSince;
 
 double median(std::vector<double> values) {
     std::sort(values.begin(), values.end());

@@ -9,71 +9,37 @@
 #include <algorithm>
 #include <cstdint>
 #include <iterator>
-#include <utility>
 
 namespace texsplat::nodes::detail {
 
-template <class Y>
-PiecewiseLinear<Y>::PiecewiseLinear(std::vector<float> x, std::vector<Y> y)
-    : mX(std::move(x)), mY(std::move(y)) {
-    TEXSPLAT_ASSERT(mX.size() == mY.size(), "PiecewiseLinear: control points unpaired");
-    const double width = mX.empty() ? 0.0 : double(mX.back()) - mX.front();
-    if (!(width > 0.0) || mX.size() < 3) {
-        return; // at most one segment, or a single step: nothing to index
-    }
-    // About four cells per segment: one or two steps from a cell's start to the segment.
-    const std::size_t cells = std::min<std::size_t>(4 * mX.size(), 1 << 16);
-    mCellsPerUnit = static_cast<float>(static_cast<double>(cells) / width);
-    mCellStart.resize(cells);
-    for (std::size_t cell = 0; cell < cells; ++cell) {
-        const float edge = mX.front() + static_cast<float>(cell) / mCellsPerUnit;
-        mCellStart[cell] = static_cast<std::uint32_t>(
-            std::distance(mX.begin(), std::upper_bound(mX.begin(), mX.end(), edge)));
-    }
-}
-
 template <class Y> Y PiecewiseLinear<Y>::operator()(float t) const {
-    TEXSPLAT_ASSERT(!mX.empty() && mX.size() == mY.size(),
+    TEXSPLAT_ASSERT(!x.empty() && x.size() == y.size(),
                     "PiecewiseLinear::operator(): control points missing or unpaired");
-    if (!(t > mX.front())) {
-        return mY.front();
+    if (!(t > x.front())) {
+        return y.front();
     }
-    if (t >= mX.back()) {
-        return mY.back();
+    if (t >= x.back()) {
+        return y.back();
     }
-    // i: the first point beyond t (std::upper_bound's answer), 1 <= i < size.
-    std::size_t i = 0;
-    if (mCellStart.empty()) {
-        i = static_cast<std::size_t>(
-            std::distance(mX.begin(), std::upper_bound(mX.begin(), mX.end(), t)));
-    } else {
-        const auto cell = std::min(static_cast<std::size_t>((t - mX.front()) * mCellsPerUnit),
-                                   mCellStart.size() - 1);
-        // From the cell's start, both ways: rounding may put t's cell one off.
-        i = std::max<std::size_t>(mCellStart[cell], 1);
-        while (mX[i - 1] > t) {
-            --i;
-        }
-        while (mX[i] <= t) {
-            ++i;
-        }
-    }
-    const float weight = (t - mX[i - 1]) / (mX[i] - mX[i - 1]);
-    return mY[i - 1] + weight * (mY[i] - mY[i - 1]);
+    const auto upper = std::upper_bound(x.begin(), x.end(), t);
+    const std::size_t i = static_cast<std::size_t>(std::distance(x.begin(), upper));
+    const float weight = (t - x[i - 1]) / (x[i] - x[i - 1]);
+    return y[i - 1] + weight * (y[i] - y[i - 1]);
 }
 
-template class PiecewiseLinear<float>;
-template class PiecewiseLinear<glm::vec3>;
+template struct PiecewiseLinear<float>;
+template struct PiecewiseLinear<glm::vec3>;
 
 namespace {
 
 PiecewiseLinear<glm::vec3> evenlySpaced(std::vector<glm::vec3> colors) {
+    PiecewiseLinear<glm::vec3> map;
     const std::size_t last = colors.size() - 1;
-    std::vector<float> x;
     for (std::size_t i = 0; i <= last; ++i) {
-        x.push_back(static_cast<float>(i) / static_cast<float>(last));
+        map.x.push_back(static_cast<float>(i) / static_cast<float>(last));
     }
-    return {std::move(x), std::move(colors)};
+    map.y = std::move(colors);
+    return map;
 }
 
 // A listed colour map's 256 entries as control points at t = i / 255.
@@ -116,14 +82,13 @@ PiecewiseLinear<glm::vec3> presetColors(int preset) {
     case ColorPreset::Viridis: {
         // The image library's viridis interpolates matplotlib's 256-entry table between every
         // 8th entry and the last: sample it exactly there to get the same map.
-        std::vector<float> x;
-        std::vector<glm::vec3> y;
+        PiecewiseLinear<glm::vec3> map;
         for (int entry = 0;; entry = std::min(entry + 8, 255)) {
             const float t = static_cast<float>(entry) / 255.0f;
-            x.push_back(t);
-            y.push_back(image::detail::viridis(t));
+            map.x.push_back(t);
+            map.y.push_back(image::detail::viridis(t));
             if (entry == 255) {
-                return {std::move(x), std::move(y)};
+                return map;
             }
         }
     }

@@ -4,6 +4,7 @@
 
 #ifdef TEXSPLAT_WITH_GL
 #include "scenegraph/gl/EglContext.h"
+#include "scenegraph/actions/Seconds.h"
 #endif
 
 #include <chrono>
@@ -12,11 +13,8 @@ namespace texsplat::render {
 #ifdef TEXSPLAT_WITH_GL
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = sg::TimingClock;
+using sg::secondsSince;
 
 } // namespace
 #endif

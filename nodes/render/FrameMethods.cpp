@@ -7,6 +7,7 @@
 #include "nodes/TriangleMesh.h"
 #include "nodes/render/CameraView.h"
 #include "nodes/render/FrameAction.h"
+#include "scenegraph/actions/Seconds.h"
 
 #include <chrono>
 #include <memory>
@@ -15,11 +16,8 @@
 namespace texsplat::render {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = sg::TimingClock;
+using sg::secondsSince;
 
 void addMesh(FrameAction& action, const sg::Node& node,
              std::shared_ptr<const nodes::TriangleMesh> mesh) {

@@ -141,10 +141,9 @@ TEST(TransferFunction, repeatedPositionsMakeAStep) {
     EXPECT_EQ(tf->classify(0.51f).extinction, 4.0f);
 }
 
-TEST(TransferFunction, indexedLookupsFindTheBinarySearchesSegment) {
-    // Lookups find their segment from a uniform index and a step or two, not a binary search;
-    // the value must be the binary search's bit for bit, at and next to every control point and
-    // step, on maps of 2 to 300 points with repeated positions.
+TEST(TransferFunction, lookupsInterpolateInTheBinarySearchesSegment) {
+    // A lookup is the interpolation in the segment a binary search finds, bit for bit, at and
+    // next to every control point and step, on maps of 2 to 300 points with repeated positions.
     std::mt19937 random(20261126);
     for (const std::size_t points : {2, 3, 7, 64, 256, 300}) {
         std::uniform_real_distribution<float> position(-3.0f, 5.0f);
@@ -160,7 +159,7 @@ TEST(TransferFunction, indexedLookupsFindTheBinarySearchesSegment) {
         for (float& value : y) {
             value = position(random);
         }
-        const nodes::detail::PiecewiseLinear<float> map(x, y);
+        const nodes::detail::PiecewiseLinear<float> map{x, y};
         const auto searched = [&](float t) {
             if (!(t > x.front())) {
                 return y.front();

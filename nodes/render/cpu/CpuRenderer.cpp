@@ -10,6 +10,7 @@
 #include "octree/Splat.h"
 #include "scenegraph/Error.h"
 #include "nodes/render/detail/DepthOrderedRuns.h"
+#include "scenegraph/actions/Seconds.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -24,11 +25,8 @@
 namespace texsplat::render::cpu {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = sg::TimingClock;
+using sg::secondsSince;
 
 // Splats set up at a time: their rasters (about 90 bytes each) stay in the caches while the
 // bands composite them, and memory does not grow with the splat count.

@@ -3,8 +3,7 @@
 #include "nodes/render/Frame.h"
 #include "octree/Splat.h"
 #include "scenegraph/actions/RenderStatistics.h"
-
-#include <chrono>
+#include "scenegraph/actions/Seconds.h"
 
 namespace texsplat::render::detail {
 
@@ -12,16 +11,14 @@ std::vector<SplatRun> frameRuns(const Frame& frame, sg::RenderStatistics& statis
     if (frame.splats.size() == 1) {
         return {{0, 0, frame.splats.front().splats->size()}};
     }
-    const auto start = std::chrono::steady_clock::now();
+    const sg::TimingClock::time_point start = sg::TimingClock::now();
     std::vector<std::vector<float>> depths;
     depths.reserve(frame.splats.size());
     for (const FrameSplats& splats : frame.splats) {
         depths.push_back(splats.cameraDepths());
     }
     std::vector<SplatRun> runs = depthOrderedRuns(depths);
-    statistics.addTime(sg::RenderPhase::Order,
-                       std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
-                           .count());
+    statistics.addTime(sg::RenderPhase::Order, sg::secondsSince(start));
     return runs;
 }
 

@@ -10,6 +10,7 @@
 #include "scenegraph/gl/Context.h"
 #include "scenegraph/gl/LightScale.h"
 #include "scenegraph/gl/ObjectName.h"
+#include "scenegraph/actions/Seconds.h"
 
 #include <epoxy/gl.h>
 
@@ -21,11 +22,8 @@
 namespace texsplat::render {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-}
+using Clock = sg::TimingClock;
+using sg::secondsSince;
 
 // Leaves the GL state as it found it for the caller (a viewer may draw its UI after the frame, a
 // test its own quads): the depth test, blending and depth writes are what the passes change.
