@@ -2,6 +2,7 @@
 
 #include "nodes/render/SplatFootprint.h"
 #include "nodes/render/cpu/SplatRaster.h"
+#include "nodes/render/detail/KeptPerObject.h"
 
 #include <memory>
 #include <vector>
@@ -20,17 +21,10 @@ public:
     std::shared_ptr<const MarkPlanes> marks(const SplatFootprint& footprint);
 
 private:
-    struct FootprintEntry {
-        std::weak_ptr<const SplatFootprint> key;
-        std::shared_ptr<const FootprintSampler> sampler;
-    };
-    struct MarkEntry {
-        std::weak_ptr<const kernel::VectorSplatTable> key;
-        std::shared_ptr<const MarkPlanes> planes;
-    };
-
-    std::vector<FootprintEntry> mFootprints;
-    std::vector<MarkEntry> mMarks;
+    render::detail::KeptPerObject<SplatFootprint, std::shared_ptr<const FootprintSampler>>
+        mFootprints;
+    render::detail::KeptPerObject<kernel::VectorSplatTable, std::shared_ptr<const MarkPlanes>>
+        mMarks;
 };
 
 } // namespace texsplat::render::cpu::detail

@@ -2,8 +2,6 @@
 
 #include "nodes/render/gl/SplatBatch.h"
 
-#include <algorithm>
-
 namespace texsplat::render::detail {
 
 SplatBatchCache::SplatBatchCache() = default;
@@ -11,18 +9,9 @@ SplatBatchCache::~SplatBatchCache() = default;
 
 SplatBatch& SplatBatchCache::batch(const std::shared_ptr<const SplatFootprint>& footprint,
                                    std::uint64_t context) {
-    mEntries.erase(std::remove_if(mEntries.begin(), mEntries.end(),
-                                  [](const Entry& entry) { return entry.key.expired(); }),
-                   mEntries.end());
-    for (const Entry& entry : mEntries) {
-        if (entry.context == context && entry.key.lock() == footprint) {
-            return *entry.batch;
-        }
-    }
-    mEntries.push_back(
-        {footprint, context, std::make_unique<SplatBatch>(SplatBatch::create(*footprint))});
-    ++mMade;
-    return *mEntries.back().batch;
+    return *mBatches.get(footprint, context, [&] {
+        return std::make_unique<SplatBatch>(SplatBatch::create(*footprint));
+    });
 }
 
 } // namespace texsplat::render::detail

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/render/SplatFootprint.h"
+#include "nodes/render/detail/KeptPerObject.h"
 
 #include <cstdint>
 #include <memory>
@@ -24,17 +25,10 @@ public:
                       std::uint64_t context);
 
     /// Batches made so far.
-    std::size_t made() const { return mMade; }
+    std::size_t made() const { return mBatches.made(); }
 
 private:
-    struct Entry {
-        std::weak_ptr<const SplatFootprint> key;
-        std::uint64_t context;
-        std::unique_ptr<SplatBatch> batch;
-    };
-
-    std::vector<Entry> mEntries;
-    std::size_t mMade = 0;
+    KeptPerObject<SplatFootprint, std::unique_ptr<SplatBatch>> mBatches;
 };
 
 } // namespace texsplat::render::detail
