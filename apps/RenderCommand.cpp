@@ -14,6 +14,7 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/MemoryLimit.h"
 #include "scenegraph/actions/RayCastAction.h"
+#include "scenegraph/actions/Seconds.h"
 #include "scenegraph/engines/TimeInputs.h"
 #include "scenegraph/sensors/SensorQueue.h"
 #include "scenegraph/sensors/SimulatedClock.h"
@@ -21,7 +22,6 @@
 #ifdef TEXSPLAT_WITH_GL
 #include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/gl/EglContext.h"
-#include "scenegraph/actions/Seconds.h"
 #endif
 
 #include <CLI/CLI.hpp>

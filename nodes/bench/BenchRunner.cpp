@@ -24,13 +24,13 @@
 #include "scenegraph/actions/Path.h"
 #include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/actions/Seconds.h"
 
 #ifdef TEXSPLAT_WITH_GL
 #include "nodes/bench/FillRateCeiling.h"
 #include "nodes/bench/detail/SamplesPassed.h"
 #include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/gl/Context.h"
-#include "scenegraph/actions/Seconds.h"
 #endif
 
 #include <algorithm>
