@@ -154,6 +154,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     const auto emit = [&] {
         const octree::View order = result.view.octreeView();
         if (fullResolution) {
+            mDepthSorter = {}; // slice order needs no sort
             octree::emitVoxelSplats(*classified, order, *splats, emission);
             return;
         }
@@ -172,7 +173,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         // The traversal keeps subtrees contiguous: where the eye lies on a split plane the two
         // sides' splats overlap on screen at every depth, and drawing one side wholly before the
         // other leaves a bright seam down the plane. Centre depth interleaves them.
-        octree::sortByDepth(*splats, order);
+        mDepthSorter.sort(*splats, order);
     };
     timed(statistics, sg::RenderPhase::Order, [&] {
         detail::withNodeContext(*this, [&] {
@@ -189,7 +190,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
     bytes.classified += classified->memoryBytes() + mCache->valueRangeBytes();
     bytes.octree += fullResolution ? 0 : mCache->octree().memoryBytes();
-    bytes.splats += splats->memoryBytes();
+    bytes.splats += splats->memoryBytes() + mDepthSorter.memoryBytes();
     result.splats = splats;
     return result;
 }

@@ -2,6 +2,7 @@
 
 #include "nodes/Fwd.h"
 #include "nodes/render/MarkDrawing.h"
+#include "octree/DepthSort.h"
 #include "octree/SplatEmission.h"
 #include "scenegraph/Declare.h"
 #include "scenegraph/Node.h"
@@ -153,6 +154,7 @@ private:
     std::unique_ptr<render::detail::ClassificationCache> mCache;
     std::shared_ptr<const render::SplatFootprint> mFootprint;
     std::shared_ptr<octree::SplatList> mSplatList; // the last frame's, refilled when free
+    octree::DepthSorter mDepthSorter; // its buffers, kept while octree cuts are drawn
 };
 
 } // namespace texsplat::nodes

@@ -327,30 +327,9 @@ int Octree::children(const NodeRef& node, std::array<NodeRef, 8>& children) cons
     return count;
 }
 
-glm::u64vec3 Octree::voxelBegin(const NodeRef& node) const {
-    return node.coord << glm::u64vec3(node.level);
-}
-
-glm::u64vec3 Octree::voxelEnd(const NodeRef& node) const {
-    return glm::min((node.coord + std::uint64_t{1}) << glm::u64vec3(node.level), mGrid->dims());
-}
-
 std::uint64_t Octree::voxelCount(const NodeRef& node) const {
     const glm::u64vec3 extent = voxelEnd(node) - voxelBegin(node);
     return extent.x * extent.y * extent.z;
-}
-
-glm::dvec3 Octree::center(const NodeRef& node) const {
-    return mGrid->toWorld(
-        (glm::dvec3(voxelBegin(node)) + glm::dvec3(voxelEnd(node)) - 1.0) * 0.5);
-}
-
-glm::dvec3 Octree::cellMin(const NodeRef& node) const {
-    return mGrid->toWorld(glm::dvec3(voxelBegin(node)) - 0.5);
-}
-
-glm::dvec3 Octree::cellMax(const NodeRef& node) const {
-    return mGrid->toWorld(glm::dvec3(voxelEnd(node)) - 0.5);
 }
 
 glm::dvec3 Octree::splitPlanes(const NodeRef& node) const {

@@ -5,6 +5,7 @@
 #include "octree/OctreeNode.h"
 #include "scenegraph/WorkProgress.h"
 
+#include <glm/common.hpp>
 #include <glm/ext/vector_double3.hpp>
 #include <glm/ext/vector_uint3_sized.hpp>
 
@@ -85,22 +86,34 @@ public:
     int children(const NodeRef& node, std::array<NodeRef, 8>& children) const;
 
     /// @brief First voxel (index coordinates) of @p node's block.
-    [[nodiscard]] glm::u64vec3 voxelBegin(const NodeRef& node) const;
+    [[nodiscard]] glm::u64vec3 voxelBegin(const NodeRef& node) const {
+        return node.coord << glm::u64vec3(node.level);
+    }
 
     /// @brief One past the last voxel of @p node's block, clipped to the grid.
-    [[nodiscard]] glm::u64vec3 voxelEnd(const NodeRef& node) const;
+    [[nodiscard]] glm::u64vec3 voxelEnd(const NodeRef& node) const {
+        return glm::min((node.coord + std::uint64_t{1}) << glm::u64vec3(node.level),
+                        mGrid->dims());
+    }
 
     /// @brief Number of voxels (empty or not) in @p node's block.
     [[nodiscard]] std::uint64_t voxelCount(const NodeRef& node) const;
 
     /// @brief World-space centre of @p node's voxels: where its splat goes.
-    [[nodiscard]] glm::dvec3 center(const NodeRef& node) const;
+    [[nodiscard]] glm::dvec3 center(const NodeRef& node) const {
+        return mGrid->toWorld(
+            (glm::dvec3(voxelBegin(node)) + glm::dvec3(voxelEnd(node)) - 1.0) * 0.5);
+    }
 
     /// @brief Lower world-space corner of the cells of @p node's voxels.
-    [[nodiscard]] glm::dvec3 cellMin(const NodeRef& node) const;
+    [[nodiscard]] glm::dvec3 cellMin(const NodeRef& node) const {
+        return mGrid->toWorld(glm::dvec3(voxelBegin(node)) - 0.5);
+    }
 
     /// @brief Upper world-space corner of the cells of @p node's voxels.
-    [[nodiscard]] glm::dvec3 cellMax(const NodeRef& node) const;
+    [[nodiscard]] glm::dvec3 cellMax(const NodeRef& node) const {
+        return mGrid->toWorld(glm::dvec3(voxelEnd(node)) - 0.5);
+    }
 
     /// @brief World-space positions of the three planes that separate @p node's child octants
     /// (level >= 1); an axis the node does not split has its plane at the block's upper face.

@@ -66,12 +66,21 @@ double Refiner::priority(const NodeRef& node) const {
         const double distance = glm::distance(octree.center(node), mView.eye());
         size /= std::max(distance, 0.5 * size);
     }
-    return static_cast<double>(octree.node(node).error) * size;
+    // Candidates are never voxels: the record holds the error.
+    return static_cast<double>(octree.nodes()[static_cast<std::size_t>(node.index)].error) * size;
 }
 
 void Refiner::push(const NodeRef& node) {
     if (node.level > 0) {
-        mCandidates.push(Candidate{priority(node), node});
+        std::size_t place = mWaiting.size();
+        if (mFreePlaces.empty()) {
+            mWaiting.push_back(node);
+        } else {
+            place = mFreePlaces.back();
+            mFreePlaces.pop_back();
+            mWaiting[place] = node;
+        }
+        mCandidates.push(Candidate{priority(node), node.index, place});
     }
 }
 
@@ -84,12 +93,16 @@ std::uint64_t Refiner::refine(const RefineBudget& budget) {
     std::uint64_t splits = 0;
     std::array<NodeRef, 8> children;
     while (splits < budget.maxSplits && !isComplete()) {
-        const NodeRef node = mCandidates.top().node;
-        const std::uint64_t added = std::bitset<8>(octree.node(node).childMask).count() - 1;
+        const std::size_t place = mCandidates.top().place;
+        const NodeRef node = mWaiting[place];
+        const std::uint64_t added =
+            std::bitset<8>(octree.nodes()[static_cast<std::size_t>(node.index)].childMask).count() -
+            1;
         if (mCut.splatCount() + added > budget.maxSplats) {
             break;
         }
         mCandidates.pop();
+        mFreePlaces.push_back(place);
         mCut.split(node);
         ++splits;
         const int count = octree.children(node, children);

@@ -51,10 +51,6 @@ View View::perspective(glm::dvec3 eye, glm::dvec3 direction) {
     return View(Projection::Perspective, checkedDirection(direction), eye);
 }
 
-double View::depth(glm::dvec3 point) const {
-    return glm::dot(point - mEye, mDirection);
-}
-
 glm::dvec3 View::farthestCorner(glm::dvec3 low, glm::dvec3 high) const {
     // Per axis, the upper face when the direction's component is positive.
     return {mDirection.x > 0.0 ? high.x : low.x, mDirection.y > 0.0 ? high.y : low.y,

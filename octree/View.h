@@ -1,6 +1,7 @@
 #pragma once
 
 #include <glm/ext/vector_double3.hpp>
+#include <glm/geometric.hpp>
 
 namespace texsplat::octree {
 
@@ -41,7 +42,9 @@ public:
 
     /// @brief Signed distance of @p point in front of the eye plane along the view direction
     /// (perspective) or its depth along the direction (orthographic, from the world origin).
-    [[nodiscard]] double depth(glm::dvec3 point) const;
+    [[nodiscard]] double depth(glm::dvec3 point) const {
+        return glm::dot(point - mEye, mDirection);
+    }
 
     /// @brief Whether the axis-aligned box [@p low, @p high] lies wholly behind the eye plane of
     /// a perspective view (never for an orthographic view): nothing in it can be projected.

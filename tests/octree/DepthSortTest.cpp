@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include <vector>
 
 using texsplat::octree::Cut;
+using texsplat::octree::DepthSorter;
 using texsplat::octree::Octree;
 using texsplat::octree::Splat;
 using texsplat::octree::SplatList;
@@ -121,4 +124,91 @@ TEST(DepthSort, overlappingSplatsComeFarthestCentreFirst) {
         sortByDepth(splats, view);
         EXPECT_EQ(centreOrderViolations(splats, view), 0u);
     }
+}
+
+namespace {
+
+// @p count splats whose depths along z take only @p depths values (so most of them tie), each
+// carrying its index in the list (colour red) and, with vectors, in its vector's row.
+SplatList tiedSplats(std::size_t count, int depths, bool withVectors) {
+    SplatList splats;
+    for (std::size_t i = 0; i < count; ++i) {
+        Splat splat;
+        splat.position = glm::vec3(static_cast<float>(i % 7), 0.0f,
+                                   static_cast<float>((i * 7919) % static_cast<std::size_t>(depths)));
+        splat.color.r = static_cast<float>(i);
+        if (withVectors) {
+            SplatVector vector;
+            vector.row = static_cast<std::uint16_t>(i % 65536);
+            splats.add(splat, vector);
+        } else {
+            splats.add(splat);
+        }
+    }
+    return splats;
+}
+
+// The indices (colour red) of @p splats after a std::stable_sort by decreasing depth.
+std::vector<float> stableSortedIndices(const SplatList& splats, const View& view) {
+    std::vector<Splat> sorted = splats.splats();
+    std::stable_sort(sorted.begin(), sorted.end(), [&](const Splat& a, const Splat& b) {
+        return static_cast<float>(centreDepth(a, view)) >
+               static_cast<float>(centreDepth(b, view));
+    });
+    std::vector<float> indices;
+    for (const Splat& splat : sorted) {
+        indices.push_back(splat.color.r);
+    }
+    return indices;
+}
+
+std::vector<float> indicesOf(const SplatList& splats) {
+    std::vector<float> indices;
+    for (const Splat& splat : splats.splats()) {
+        indices.push_back(splat.color.r);
+    }
+    return indices;
+}
+
+} // namespace
+
+TEST(DepthSorter, sortsTiesAcrossChunksStablyOnAnyNumberOfThreads) {
+    // 100 000 splats make four chunks of the parallel radix passes; 37 depths make long runs of
+    // ties that cross the chunks' borders.
+    const View view = View::orthographic({0.0, 0.0, 1.0});
+    const SplatList unsorted = tiedSplats(100000, 37, true);
+    const std::vector<float> expected = stableSortedIndices(unsorted, view);
+    for (const int threads : {1, 2, 7}) {
+        SplatList splats = unsorted;
+        tbb::task_arena(threads).execute([&] { DepthSorter().sort(splats, view); });
+        EXPECT_EQ(indicesOf(splats), expected) << threads << " threads";
+        ASSERT_TRUE(splats.hasVectors());
+        for (std::size_t i = 0; i < splats.size(); ++i) {
+            ASSERT_EQ(splats.vectors()[i].row,
+                      static_cast<std::uint16_t>(static_cast<std::size_t>(expected[i]) % 65536));
+        }
+    }
+}
+
+TEST(DepthSorter, keepsItsBuffersAndSortsEachListAnew) {
+    // One sorter, as a splat node keeps it: lists shrinking, growing, losing and gaining their
+    // vectors, each sorted as a fresh sortByDepth() sorts it.
+    DepthSorter sorter;
+    const View view = View::perspective({3.0, -2.0, -5.0}, {0.0, 0.0, 1.0});
+    for (const auto& [count, withVectors] : {std::pair<std::size_t, bool>{70000, false},
+                                             {5, true},
+                                             {0, false},
+                                             {40000, true},
+                                             {33000, false}}) {
+        SplatList splats = tiedSplats(count, 11, withVectors);
+        SplatList expected = splats;
+        sortByDepth(expected, view);
+        const std::uint64_t revision = splats.revision();
+        sorter.sort(splats, view);
+        EXPECT_EQ(indicesOf(splats), indicesOf(expected)) << count << " splats";
+        EXPECT_EQ(splats.hasVectors(), withVectors && count > 0);
+        EXPECT_GT(splats.revision(), revision) << "a backend must see the list changed";
+        EXPECT_EQ(indicesOf(expected), stableSortedIndices(tiedSplats(count, 11, withVectors), view));
+    }
+    EXPECT_GE(sorter.memoryBytes(), 70000u * 2 * sizeof(std::uint64_t)) << "the keys are kept";
 }
