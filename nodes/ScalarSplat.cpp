@@ -163,11 +163,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                                              errorThreshold.value())
                               : octree::Cut(mCache->octree());
         if (maxSplats.value() > 0) {
-            octree::Refiner refiner(std::move(cut), order);
-            octree::RefineBudget budget;
-            budget.maxSplats = static_cast<std::uint64_t>(maxSplats.value());
-            refiner.refine(budget);
-            cut = refiner.cut();
+            cut = octree::Refiner::refineAtOnce(std::move(cut), order,
+                                                static_cast<std::uint64_t>(maxSplats.value()));
         }
         octree::emitSplats(cut, order, *splats, emission);
         // The traversal keeps subtrees contiguous: where the eye lies on a split plane the two

@@ -56,8 +56,13 @@ Cut Cut::byRelativeError(const Octree& octree, double fraction) {
 void Cut::split(const NodeRef& node) {
     TEXSPLAT_ASSERT(node.level > 0, "Cut::split(): a voxel cannot be split");
     TEXSPLAT_ASSERT(!isSplit(node), "Cut::split(): node is already split");
-    mSplit[static_cast<std::size_t>(node.index)] = true;
-    const std::bitset<8> children(mOctree->node(node).childMask);
+    splitRecord(node.index);
+}
+
+void Cut::splitRecord(std::uint64_t record) {
+    const auto index = static_cast<std::size_t>(record);
+    mSplit[index] = true;
+    const std::bitset<8> children(mOctree->nodes()[index].childMask);
     mSplatCount += children.count() - 1;
 }
 

@@ -54,6 +54,10 @@ public:
     /// @brief Whether the cuts differ.
     [[nodiscard]] bool operator!=(const Cut& other) const { return !(*this == other); }
 
+    /// @brief split() for the node whose record is @p record (in `Octree::nodes()`): for a
+    /// caller that knows nodes by their records alone, e.g. Refiner::refineAtOnce().
+    void splitRecord(std::uint64_t record);
+
 private:
     const Octree* mOctree;
     std::vector<bool> mSplit;

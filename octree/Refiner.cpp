@@ -5,10 +5,18 @@
 
 #include <glm/geometric.hpp>
 
+#include <tbb/blocked_range.h>
+#include <tbb/combinable.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <array>
 #include <bitset>
 #include <cmath>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <queue>
 #include <sstream>
 #include <utility>
 
@@ -53,21 +61,185 @@ Refiner::Refiner(Cut cut, const View& view) : mCut(std::move(cut)), mView(view) 
     }
 }
 
-double Refiner::priority(const NodeRef& node) const {
-    const Octree& octree = mCut.octree();
+namespace {
+
+// Refiner::priority() of @p node, a node of level >= 1.
+double priorityOf(const Octree& octree, const View& view, const NodeRef& node) {
     const glm::dvec3 low = octree.cellMin(node);
     const glm::dvec3 high = octree.cellMax(node);
     const glm::dvec3 extent = high - low;
     double size = std::max({extent.x, extent.y, extent.z});
-    if (mView.isBoxBehindEye(low, high)) {
+    if (view.isBoxBehindEye(low, high)) {
         return 0.0;
     }
-    if (mView.isPerspective()) {
-        const double distance = glm::distance(octree.center(node), mView.eye());
+    if (view.isPerspective()) {
+        const double distance = glm::distance(octree.center(node), view.eye());
         size /= std::max(distance, 0.5 * size);
     }
     // Candidates are never voxels: the record holds the error.
     return static_cast<double>(octree.nodes()[static_cast<std::size_t>(node.index)].error) * size;
+}
+
+std::uint64_t addedSplats(const Octree& octree, std::uint64_t record) {
+    return std::bitset<8>(octree.nodes()[static_cast<std::size_t>(record)].childMask).count() - 1;
+}
+
+// Nodes of this level and above hand their children to parallel tasks.
+constexpr int kParallelLevel = 5;
+
+// Writes the bottleneck of @p node (level >= 1) and of its descendants of level >= 1: the
+// smallest priority on the path down from the start cut, infinity for the nodes the start cut
+// splits (their ancestors are split too, so @p above is infinity there). Below a bottleneck of
+// 0 (a node never split) the records keep their 0.
+void writeBottlenecks(const Cut& start, const View& view, const NodeRef& node, double above,
+                      std::vector<double>& bottlenecks) {
+    const Octree& octree = start.octree();
+    const double bottleneck =
+        start.isSplit(node) ? above : std::min(above, priorityOf(octree, view, node));
+    bottlenecks[static_cast<std::size_t>(node.index)] = bottleneck;
+    if (node.level == 1 || !(bottleneck > 0.0)) {
+        return; // voxels below, or nothing that will be split
+    }
+    std::array<NodeRef, 8> children;
+    const int count = octree.children(node, children);
+    const auto visit = [&](int i) {
+        writeBottlenecks(start, view, children[static_cast<std::size_t>(i)], bottleneck,
+                         bottlenecks);
+    };
+    if (node.level >= kParallelLevel) {
+        tbb::parallel_for(0, count, visit);
+    } else {
+        for (int i = 0; i < count; ++i) {
+            visit(i);
+        }
+    }
+}
+
+// A positive double's bits, which order as the double does.
+std::uint64_t keyOf(double bottleneck) {
+    std::uint64_t key = 0;
+    std::memcpy(&key, &bottleneck, sizeof key);
+    return key;
+}
+
+// Where the budget runs out in the order of decreasing bottleneck: the key of the bottleneck
+// whose nodes together no longer fit in @p left added splats while all larger ones do, and how
+// many splats are left for those nodes; no key when every candidate fits. Most significant
+// 11-bit digit first: the records whose digit lies above the crossing bucket fit, those below
+// do not, and the next digit looks only inside the crossing bucket.
+struct Crossing {
+    std::uint64_t key;
+    std::uint64_t left;
+    std::size_t tied; // candidates with that bottleneck
+};
+std::optional<Crossing> findCrossing(const Octree& octree, std::vector<std::uint64_t> records,
+                                     const std::vector<double>& bottlenecks,
+                                     std::uint64_t left) {
+    constexpr int kDigitBits = 11;
+    constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
+    std::uint64_t prefix = 0;
+    for (int shift = 64 - kDigitBits; shift > -kDigitBits; shift -= kDigitBits) {
+        const int low = std::max(shift, 0);
+        const int bits = shift >= 0 ? kDigitBits : kDigitBits + shift;
+        const auto digitOf = [&](std::uint64_t record) {
+            return static_cast<std::size_t>(
+                (keyOf(bottlenecks[static_cast<std::size_t>(record)]) >> low) &
+                ((std::uint64_t{1} << bits) - 1));
+        };
+        using Histogram = std::vector<std::uint64_t>;
+        tbb::combinable<Histogram> partial([] { return Histogram(kBuckets, 0); });
+        using Range = tbb::blocked_range<std::size_t>;
+        tbb::parallel_for(Range(0, records.size(), 4096), [&](const Range& range) {
+            Histogram& histogram = partial.local();
+            for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                histogram[digitOf(records[i])] += addedSplats(octree, records[i]);
+            }
+        });
+        Histogram weights(kBuckets, 0);
+        partial.combine_each([&](const Histogram& histogram) {
+            for (std::size_t bucket = 0; bucket < kBuckets; ++bucket) {
+                weights[bucket] += histogram[bucket];
+            }
+        });
+        std::size_t crossing = kBuckets;
+        for (std::size_t bucket = kBuckets; bucket-- > 0;) {
+            if (weights[bucket] > left) {
+                crossing = bucket;
+                break;
+            }
+            left -= weights[bucket];
+        }
+        if (crossing == kBuckets) {
+            return std::nullopt; // what was left of the candidates fits whole
+        }
+        prefix |= static_cast<std::uint64_t>(crossing) << low;
+        records.erase(std::remove_if(records.begin(), records.end(),
+                                     [&](std::uint64_t record) {
+                                         return digitOf(record) != crossing;
+                                     }),
+                      records.end());
+    }
+    return Crossing{prefix, left, records.size()};
+}
+
+double bottleneckOf(std::uint64_t key) {
+    double bottleneck = 0.0;
+    std::memcpy(&bottleneck, &key, sizeof bottleneck);
+    return bottleneck;
+}
+
+// Among the nodes whose bottleneck is exactly @p threshold, splits those the queue splits
+// before its first split that does not fit. They leave the queue after every node of a larger
+// bottleneck and before every other node (whose priorities are below @p threshold), in the
+// queue's own order: priority, then record.
+void splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
+               double threshold, std::uint64_t maxSplats) {
+    const Octree& octree = cut.octree();
+    struct Tied {
+        double priority;
+        std::uint64_t index;
+        NodeRef node;
+    };
+    const auto lower = [](const Tied& a, const Tied& b) {
+        return a.priority < b.priority || (a.priority == b.priority && a.index > b.index);
+    };
+    std::priority_queue<Tied, std::vector<Tied>, decltype(lower)> queue(lower);
+    const auto offer = [&](const NodeRef& node) {
+        if (node.level > 0 && bottlenecks[static_cast<std::size_t>(node.index)] == threshold) {
+            queue.push(Tied{priorityOf(octree, view, node), node.index, node});
+        }
+    };
+    // The tied nodes the queue holds first: those whose parent the cut splits.
+    std::vector<NodeRef> pending{octree.root()};
+    std::array<NodeRef, 8> children;
+    while (!pending.empty()) {
+        const NodeRef node = pending.back();
+        pending.pop_back();
+        if (!cut.isSplit(node)) {
+            offer(node);
+            continue;
+        }
+        const int count = octree.children(node, children);
+        pending.insert(pending.end(), children.begin(), children.begin() + count);
+    }
+    while (!queue.empty()) {
+        const Tied top = queue.top();
+        if (cut.splatCount() + addedSplats(octree, top.index) > maxSplats) {
+            return;
+        }
+        queue.pop();
+        cut.splitRecord(top.index);
+        const int count = octree.children(top.node, children);
+        for (int i = 0; i < count; ++i) {
+            offer(children[static_cast<std::size_t>(i)]);
+        }
+    }
+}
+
+} // namespace
+
+double Refiner::priority(const NodeRef& node) const {
+    return priorityOf(mCut.octree(), mView, node);
 }
 
 void Refiner::push(const NodeRef& node) {
@@ -82,6 +254,35 @@ void Refiner::push(const NodeRef& node) {
         }
         mCandidates.push(Candidate{priority(node), node.index, place});
     }
+}
+
+Cut Refiner::refineAtOnce(Cut start, const View& view, std::uint64_t maxSplats) {
+    const Octree& octree = start.octree();
+    if (octree.isEmpty() || octree.rootLevel() == 0 || start.splatCount() > maxSplats) {
+        return start; // nothing to split, or the queue's first split would not fit
+    }
+    std::vector<double> bottlenecks(octree.nodes().size(), 0.0);
+    constexpr double kInfinity = std::numeric_limits<double>::infinity();
+    writeBottlenecks(start, view, octree.root(), kInfinity, bottlenecks);
+    std::vector<std::uint64_t> candidates; // what the queue would split, given the budget
+    for (std::size_t record = 0; record < bottlenecks.size(); ++record) {
+        if (bottlenecks[record] > 0.0 && bottlenecks[record] < kInfinity) {
+            candidates.push_back(record);
+        }
+    }
+    const std::optional<Crossing> crossing =
+        findCrossing(octree, candidates, bottlenecks, maxSplats - start.splatCount());
+    const double threshold = crossing ? bottleneckOf(crossing->key) : 0.0;
+    Cut cut = std::move(start);
+    for (const std::uint64_t record : candidates) {
+        if (bottlenecks[static_cast<std::size_t>(record)] > threshold) {
+            cut.splitRecord(record);
+        }
+    }
+    if (crossing && crossing->tied > 1) {
+        splitTied(cut, view, bottlenecks, threshold, maxSplats);
+    }
+    return cut;
 }
 
 bool Refiner::isComplete() const {

@@ -49,6 +49,14 @@ public:
     /// @return the number of splits made.
     std::uint64_t refine(const RefineBudget& budget);
 
+    /// @brief The cut that `Refiner(start, view).refine({maxSplats})` reaches, the same bit for
+    /// bit, made without the queue and on all threads (oneTBB): the refiner splits nodes in
+    /// non-increasing order of their bottleneck, the smallest priority on their path from the
+    /// start cut, so its cut is every node whose bottleneck exceeds the one at which the budget
+    /// runs out, plus, among the nodes of exactly that bottleneck, what the queue would have
+    /// split of them before its first split that does not fit. For a frame's cut from scratch;
+    /// a refinement in steps (an idle callback) keeps a Refiner.
+    [[nodiscard]] static Cut refineAtOnce(Cut start, const View& view, std::uint64_t maxSplats);
     /// @brief Whether no node is left worth splitting (every candidate has priority 0).
     [[nodiscard]] bool isComplete() const;
 

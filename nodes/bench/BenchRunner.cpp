@@ -93,11 +93,9 @@ void emitFor(SplatSource& source, std::size_t maxSplats, octree::SplatList& spla
     if (!source.octree) {
         source.octree.emplace(source.classified);
     }
-    octree::Refiner refiner(octree::Cut(*source.octree), order);
-    octree::RefineBudget budget;
-    budget.maxSplats = maxSplats;
-    refiner.refine(budget);
-    octree::emitSplats(refiner.cut(), order, splats);
+    const octree::Cut cut = octree::Refiner::refineAtOnce(octree::Cut(*source.octree), order,
+                                                          maxSplats);
+    octree::emitSplats(cut, order, splats);
     octree::sortByDepth(splats, order); // as ScalarSplat draws a cut
 }
 

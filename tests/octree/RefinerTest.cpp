@@ -7,7 +7,13 @@
 
 #include <gtest/gtest.h>
 
+#include <tbb/task_arena.h>
+
+#include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
+#include <utility>
 #include <vector>
 
 using texsplat::octree::ClassifiedGrid;
@@ -158,5 +164,84 @@ TEST(Refiner, timeBudgetBecomesASplatBudget) {
     } catch (const texsplat::DataError& error) {
         EXPECT_STREQ(error.what(), "RefineBudget: time budget needs finite seconds >= 0 and a "
                                    "finite rate > 0, got -1 s at 1e+06 splats/s");
+    }
+}
+
+namespace {
+
+// A grid that is mirror-symmetric about its centre on every axis: symmetric views see many nodes
+// of exactly equal priority, so the queue's ties decide which of them a budget splits.
+std::shared_ptr<ClassifiedGrid> symmetricGrid(glm::u64vec3 dims) {
+    auto grid = std::make_shared<ClassifiedGrid>(dims, glm::dvec3(1.0), glm::dvec3(0.0));
+    const glm::dvec3 centre = (glm::dvec3(dims) - 1.0) * 0.5;
+    for (std::uint64_t k = 0; k < dims.z; ++k) {
+        for (std::uint64_t j = 0; j < dims.y; ++j) {
+            for (std::uint64_t i = 0; i < dims.x; ++i) {
+                const glm::dvec3 offset = glm::abs(glm::dvec3(i, j, k) - centre);
+                const double ring = std::fmod(offset.x * 0.7 + offset.y * 1.3 + offset.z, 3.0);
+                if (ring < 0.8) {
+                    continue;
+                }
+                const auto value = static_cast<float>(ring);
+                grid->setVoxel({i, j, k}, glm::vec3(value, 0.5f * value, 1.0f), value);
+            }
+        }
+    }
+    return grid;
+}
+
+// Every budget from 0 to past the finest cut (or a spread of them), from @p start.
+void expectRefineAtOnceLikeTheQueue(const Cut& start, const View& view, const std::string& what) {
+    Refiner unlimited(start, view);
+    unlimited.refine(RefineBudget{});
+    const std::uint64_t finest = unlimited.cut().splatCount();
+    const std::uint64_t step = std::max<std::uint64_t>(1, finest / 300);
+    for (std::uint64_t budget = 0; budget <= finest + 1; budget += step) {
+        Refiner queue(start, view);
+        queue.refine(splats(budget));
+        const Cut atOnce = Refiner::refineAtOnce(start, view, budget);
+        ASSERT_TRUE(atOnce == queue.cut()) << what << ", budget " << budget;
+        ASSERT_EQ(atOnce.splatCount(), queue.cut().splatCount()) << what << ", budget " << budget;
+    }
+}
+
+} // namespace
+
+TEST(Refiner, refineAtOnceMakesTheQueuesCutForEveryBudget) {
+    const std::vector<std::pair<std::string, View>> views = {
+        {"orthographic oblique", View::orthographic({0.3, -0.5, 0.8})},
+        {"orthographic along z", View::orthographic({0.0, 0.0, 1.0})},
+        {"perspective outside", View::perspective({-9.0, 4.0, 30.0}, {0.3, 0.0, -1.0})},
+        {"perspective inside", View::perspective({5.2, 6.1, 4.9}, {0.0, 1.0, 0.0})},
+        {"perspective on the axis", View::perspective({7.5, 7.5, -20.0}, {0.0, 0.0, 1.0})},
+    };
+    const std::vector<std::pair<std::string, std::shared_ptr<ClassifiedGrid>>> grids = {
+        {"random 16^3", randomGrid(glm::u64vec3(16), 5)},
+        {"random 37x5x20, one-voxel-thick splits", randomGrid(glm::u64vec3(37, 5, 20), 6, 0.5f)},
+        {"random 9x1x13 anisotropic",
+         randomGrid(glm::u64vec3(9, 1, 13), 7, 0.2f, false, glm::dvec3(0.5, 2.0, 1.0))},
+        {"symmetric 16^3", symmetricGrid(glm::u64vec3(16))},
+        {"symmetric 24x16x8", symmetricGrid(glm::u64vec3(24, 16, 8))},
+    };
+    for (const auto& [gridName, grid] : grids) {
+        const Octree octree(grid);
+        for (const auto& [viewName, view] : views) {
+            expectRefineAtOnceLikeTheQueue(Cut(octree), view, gridName + ", " + viewName);
+            expectRefineAtOnceLikeTheQueue(Cut::byRelativeError(octree, 0.5), view,
+                                           gridName + ", " + viewName + ", from a threshold cut");
+        }
+    }
+}
+
+TEST(Refiner, refineAtOnceIsTheSameOnAnyNumberOfThreads) {
+    const Octree octree(randomGrid(glm::u64vec3(64, 48, 40), 8));
+    const View view = View::perspective({20.0, -60.0, 90.0}, {0.0, 0.6, -1.0});
+    Refiner queue(octree, view);
+    queue.refine(splats(30000));
+    for (const int threads : {1, 2, 7}) {
+        tbb::task_arena(threads).execute([&] {
+            EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, 30000) == queue.cut())
+                << threads << " threads";
+        });
     }
 }
