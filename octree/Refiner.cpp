@@ -22,6 +22,27 @@
 
 namespace texsplat::octree {
 
+namespace {
+
+// Visits the nodes of @p cut (of a non-empty octree), walking its split nodes down from the root.
+template <class Visit> void forEachNodeOf(const Cut& cut, Visit&& visit) {
+    const Octree& octree = cut.octree();
+    std::vector<NodeRef> pending{octree.root()};
+    std::array<NodeRef, 8> children;
+    while (!pending.empty()) {
+        const NodeRef node = pending.back();
+        pending.pop_back();
+        if (!cut.isSplit(node)) {
+            visit(node);
+            continue;
+        }
+        const int count = octree.children(node, children);
+        pending.insert(pending.end(), children.begin(), children.begin() + count);
+    }
+}
+
+} // namespace
+
 RefineBudget RefineBudget::forTime(double seconds, double splatsPerSecond) {
     if (!std::isfinite(seconds) || seconds < 0.0 || !std::isfinite(splatsPerSecond) ||
         !(splatsPerSecond > 0.0)) {
@@ -42,22 +63,8 @@ RefineBudget RefineBudget::forTime(double seconds, double splatsPerSecond) {
 Refiner::Refiner(const Octree& octree, const View& view) : Refiner(Cut(octree), view) {}
 
 Refiner::Refiner(Cut cut, const View& view) : mCut(std::move(cut)), mView(view) {
-    const Octree& octree = mCut.octree();
-    if (octree.isEmpty()) {
-        return;
-    }
-    // Seed the queue with the nodes of the given cut: walk the split nodes down to it.
-    std::vector<NodeRef> pending{octree.root()};
-    std::array<NodeRef, 8> children;
-    while (!pending.empty()) {
-        const NodeRef node = pending.back();
-        pending.pop_back();
-        if (!mCut.isSplit(node)) {
-            push(node);
-            continue;
-        }
-        const int count = octree.children(node, children);
-        pending.insert(pending.end(), children.begin(), children.begin() + count);
+    if (!mCut.octree().isEmpty()) {
+        forEachNodeOf(mCut, [this](const NodeRef& node) { push(node); });
     }
 }
 
@@ -210,18 +217,8 @@ void splitTied(Cut& cut, const View& view, const std::vector<double>& bottleneck
         }
     };
     // The tied nodes the queue holds first: those whose parent the cut splits.
-    std::vector<NodeRef> pending{octree.root()};
+    forEachNodeOf(cut, offer);
     std::array<NodeRef, 8> children;
-    while (!pending.empty()) {
-        const NodeRef node = pending.back();
-        pending.pop_back();
-        if (!cut.isSplit(node)) {
-            offer(node);
-            continue;
-        }
-        const int count = octree.children(node, children);
-        pending.insert(pending.end(), children.begin(), children.begin() + count);
-    }
     while (!queue.empty()) {
         const Tied top = queue.top();
         if (cut.splatCount() + addedSplats(octree, top.index) > maxSplats) {
