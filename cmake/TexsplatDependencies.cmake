@@ -7,8 +7,6 @@ find_package(glm REQUIRED)
 # AVX-512 where present), oneTBB for its threads (OpenVDB already depends on it).
 find_package(hwy REQUIRED)
 find_package(TBB REQUIRED)
-# Boost's headers: the octree refiner's d-ary heap (Boost.Heap; Boost comes with OpenVDB anyway).
-find_package(Boost 1.74 REQUIRED)
 # zlib: the gzip encoding of NRRD volumes (it comes with OpenVDB, OpenEXR and Boost anyway).
 find_package(ZLIB REQUIRED)
 if(TEXSPLAT_WITH_GL)

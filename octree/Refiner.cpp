@@ -16,7 +16,6 @@
 #include <cstring>
 #include <limits>
 #include <optional>
-#include <queue>
 #include <sstream>
 #include <utility>
 
@@ -195,44 +194,6 @@ double bottleneckOf(std::uint64_t key) {
     return bottleneck;
 }
 
-// Among the nodes whose bottleneck is exactly @p threshold, splits those the queue splits
-// before its first split that does not fit. They leave the queue after every node of a larger
-// bottleneck and before every other node (whose priorities are below @p threshold), in the
-// queue's own order: priority, then record.
-void splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
-               double threshold, std::uint64_t maxSplats) {
-    const Octree& octree = cut.octree();
-    struct Tied {
-        double priority;
-        std::uint64_t index;
-        NodeRef node;
-    };
-    const auto lower = [](const Tied& a, const Tied& b) {
-        return a.priority < b.priority || (a.priority == b.priority && a.index > b.index);
-    };
-    std::priority_queue<Tied, std::vector<Tied>, decltype(lower)> queue(lower);
-    const auto offer = [&](const NodeRef& node) {
-        if (node.level > 0 && bottlenecks[static_cast<std::size_t>(node.index)] == threshold) {
-            queue.push(Tied{priorityOf(octree, view, node), node.index, node});
-        }
-    };
-    // The tied nodes the queue holds first: those whose parent the cut splits.
-    forEachNodeOf(cut, offer);
-    std::array<NodeRef, 8> children;
-    while (!queue.empty()) {
-        const Tied top = queue.top();
-        if (cut.splatCount() + addedSplats(octree, top.index) > maxSplats) {
-            return;
-        }
-        queue.pop();
-        cut.splitRecord(top.index);
-        const int count = octree.children(top.node, children);
-        for (int i = 0; i < count; ++i) {
-            offer(children[static_cast<std::size_t>(i)]);
-        }
-    }
-}
-
 } // namespace
 
 double Refiner::priority(const NodeRef& node) const {
@@ -241,15 +202,37 @@ double Refiner::priority(const NodeRef& node) const {
 
 void Refiner::push(const NodeRef& node) {
     if (node.level > 0) {
-        std::size_t place = mWaiting.size();
-        if (mFreePlaces.empty()) {
-            mWaiting.push_back(node);
-        } else {
-            place = mFreePlaces.back();
-            mFreePlaces.pop_back();
-            mWaiting[place] = node;
+        mCandidates.push(Candidate{priority(node), node});
+    }
+}
+
+// Among the nodes whose bottleneck is exactly @p threshold, splits those the queue splits
+// before its first split that does not fit. They leave the queue after every node of a larger
+// bottleneck and before every other node (whose priorities are below @p threshold), in the
+// queue's own order: priority, then record.
+void Refiner::splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
+                        double threshold, std::uint64_t maxSplats) {
+    const Octree& octree = cut.octree();
+    Queue queue;
+    const auto offer = [&](const NodeRef& node) {
+        if (node.level > 0 && bottlenecks[static_cast<std::size_t>(node.index)] == threshold) {
+            queue.push(Candidate{priorityOf(octree, view, node), node});
         }
-        mCandidates.push(Candidate{priority(node), node.index, place});
+    };
+    // The tied nodes the queue holds first: those whose parent the cut splits.
+    forEachNodeOf(cut, offer);
+    std::array<NodeRef, 8> children;
+    while (!queue.empty()) {
+        const Candidate top = queue.top();
+        if (cut.splatCount() + addedSplats(octree, top.node.index) > maxSplats) {
+            return;
+        }
+        queue.pop();
+        cut.splitRecord(top.node.index);
+        const int count = octree.children(top.node, children);
+        for (int i = 0; i < count; ++i) {
+            offer(children[static_cast<std::size_t>(i)]);
+        }
     }
 }
 
@@ -291,16 +274,11 @@ std::uint64_t Refiner::refine(const RefineBudget& budget) {
     std::uint64_t splits = 0;
     std::array<NodeRef, 8> children;
     while (splits < budget.maxSplits && !isComplete()) {
-        const std::size_t place = mCandidates.top().place;
-        const NodeRef node = mWaiting[place];
-        const std::uint64_t added =
-            std::bitset<8>(octree.nodes()[static_cast<std::size_t>(node.index)].childMask).count() -
-            1;
-        if (mCut.splatCount() + added > budget.maxSplats) {
+        const NodeRef node = mCandidates.top().node;
+        if (mCut.splatCount() + addedSplats(octree, node.index) > budget.maxSplats) {
             break;
         }
         mCandidates.pop();
-        mFreePlaces.push_back(place);
         mCut.split(node);
         ++splits;
         const int count = octree.children(node, children);

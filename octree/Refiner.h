@@ -4,10 +4,9 @@
 #include "octree/NodeRef.h"
 #include "octree/View.h"
 
-#include <boost/heap/d_ary_heap.hpp>
-
 #include <cstdint>
 #include <limits>
+#include <queue>
 #include <vector>
 
 namespace texsplat::octree {
@@ -69,30 +68,26 @@ public:
     [[nodiscard]] double priority(const NodeRef& node) const;
 
 private:
-    // A node waiting in the queue names its place in mWaiting rather than holding the node, so
-    // that the heap moves 24 bytes instead of 48 (a 300 000-splat cut's heap outgrows the caches).
     struct Candidate {
         double priority;
-        std::uint64_t index; // the node's record, which breaks ties
-        std::size_t place;
+        NodeRef node;
     };
     struct LowerPriority {
         bool operator()(const Candidate& a, const Candidate& b) const {
-            return a.priority < b.priority || (a.priority == b.priority && a.index > b.index);
+            return a.priority < b.priority ||
+                   (a.priority == b.priority && a.node.index > b.node.index);
         }
     };
+    using Queue = std::priority_queue<Candidate, std::vector<Candidate>, LowerPriority>;
 
     void push(const NodeRef& node);
+    // refineAtOnce()'s replay of the queue over the nodes tied at the budget's bottleneck.
+    static void splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
+                          double threshold, std::uint64_t maxSplats);
 
     Cut mCut;
     View mView;
-    // Four children per heap node: half the levels of a binary heap, each level's children in
-    // two cache lines; a pop is a miss per level. (Ties are broken by index, so any heap pops
-    // the same sequence.)
-    boost::heap::d_ary_heap<Candidate, boost::heap::arity<4>, boost::heap::compare<LowerPriority>>
-        mCandidates;
-    std::vector<NodeRef> mWaiting;        // the queued nodes
-    std::vector<std::size_t> mFreePlaces; // places in mWaiting of nodes split since
+    Queue mCandidates;
 };
 
 } // namespace texsplat::octree

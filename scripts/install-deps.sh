@@ -6,7 +6,7 @@ export DEBIAN_FRONTEND=noninteractive
 packages=(
     cmake ninja-build g++ pkg-config
     libglm-dev libhwy-dev libtbb-dev libepoxy-dev libegl-dev libgl-dev libgl1-mesa-dri libegl-mesa0
-    libopenvdb-dev libboost-dev libboost-iostreams-dev libtinygltf-dev nlohmann-json3-dev libopenexr-dev
+    libopenvdb-dev libboost-iostreams-dev libtinygltf-dev nlohmann-json3-dev libopenexr-dev
     libstb-dev fonts-dejavu-core
     libcli11-dev libglfw3-dev libimgui-dev
     libgtest-dev libbenchmark-dev libcoin-dev
