@@ -6,6 +6,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <tbb/parallel_for.h>
+#include <tbb/task_group.h>
 
 #include <algorithm>
 #include <utility>
@@ -104,8 +105,8 @@ namespace {
 
 constexpr const char* kBuildStep = "building the octree";
 // Blocks built in parallel between two progress reports (2^19 voxels, as classification's
-// batches): few enough that a cancel is prompt and the slots stay small (3 MiB), enough that the
-// threads share the work evenly.
+// batches): few enough that a cancel is prompt and the slots of two batches stay small (6 MiB, 8
+// with vectors), enough that the threads share the work evenly.
 constexpr std::size_t kBlocksPerBatch = 1024;
 // Records of a block's subtree at most: 8 of level 2 and 64 of level 1.
 constexpr std::size_t kBlockRecords = 8 + 64;
@@ -124,94 +125,126 @@ std::size_t nodeIndex(glm::u64vec3 dims, int level, glm::u64vec3 node) {
     return static_cast<std::size_t>(node.x + count.x * (node.y + count.y * node.z));
 }
 
-// A subtree built into a slot numbers its records from the slot's start; moved to `offset` in
-// `nodes`, the records that point at records (those of level >= 2) point `offset` further. From
-// `record` of `level`, whose children already lie in `nodes`.
+// A subtree built into a slot numbers its records from the slot's start; to be moved to
+// `offset` in the octree's records, those that point at records (of level >= 2) must point
+// `offset` further. From `record` of `level`, whose descendants' records are `slot`.
 void shiftChildIndices(OctreeNode& record, int level, std::uint64_t offset,
-                       std::vector<OctreeNode>& nodes) {
+                       std::vector<OctreeNode>& slot) {
     if (level < 2) {
         return;
     }
+    const std::uint64_t first = record.firstChild;
     record.firstChild += offset;
     const std::size_t count = std::bitset<8>(record.childMask).count();
     for (std::size_t rank = 0; rank < count; ++rank) {
-        shiftChildIndices(nodes[static_cast<std::size_t>(record.firstChild + rank)], level - 1,
-                          offset, nodes);
+        shiftChildIndices(slot[static_cast<std::size_t>(first + rank)], level - 1, offset, slot);
     }
 }
 
 } // namespace
 
 /// The subtrees of the blocks, built in parallel (oneTBB) a batch at a time, each into a slot of
-/// its own, and handed to the serial build of the levels above in build order. Each block's
-/// subtree is made by the same code in the same order whatever thread makes it, and the levels
-/// above are built in one order on one thread, so the octree is the same for any number of
-/// threads. Between two batches the calling thread tells the progress callback how many blocks
-/// are done: the callback runs on that thread only, and a cancel stops the build within a batch.
+/// its own, and handed to the serial build of the levels above in build order; while the calling
+/// thread places one batch, the other threads build the next. Each block's subtree is made by the
+/// same code in the same order whatever thread makes it, and the levels above are built in one
+/// order on one thread, so the octree is the same for any number of threads. Between two batches
+/// the calling thread tells the progress callback how many blocks are built: the callback runs on
+/// that thread only, and a cancel stops the build within a batch.
 class Octree::BlockBatches {
 public:
     // `blocks`: the nodes of `level` holding an allocated block, in build order.
     BlockBatches(const Octree& octree, int level, std::vector<glm::u64vec3> blocks,
                  const sg::WorkProgress& progress)
         : mOctree(octree), mLevel(level), mBlocks(std::move(blocks)), mProgress(progress) {
-        const std::size_t slots = std::min(mBlocks.size(), kBlocksPerBatch);
-        mStatistics.resize(slots);
-        mNodes.resize(slots);
-        mMeanVectors.resize(octree.mGrid->hasVectors() ? slots : 0);
-        for (std::size_t slot = 0; slot < slots; ++slot) {
-            mNodes[slot].reserve(kBlockRecords);
-            if (octree.mGrid->hasVectors()) {
-                mMeanVectors[slot].reserve(kBlockRecords);
+        const std::size_t count = std::min(mBlocks.size(), kBlocksPerBatch);
+        for (Slots& slots : mSlots) {
+            slots.statistics.resize(count);
+            slots.nodes.resize(count);
+            slots.meanVectors.resize(octree.mGrid->hasVectors() ? count : 0);
+            for (std::size_t slot = 0; slot < count; ++slot) {
+                slots.nodes[slot].reserve(kBlockRecords);
+                if (octree.mGrid->hasVectors()) {
+                    slots.meanVectors[slot].reserve(kBlockRecords);
+                }
             }
         }
     }
 
     // The statistics of the next block in build order, whose subtree's records are appended to
-    // `records` (building the next batch first when this one is used up).
+    // `records` (the next batch is waited for when this one is used up).
     Statistics place(Records& records) {
         if (mNext == mBatchEnd) {
-            buildBatch();
+            nextBatch();
         }
+        Slots& slots = mSlots[mPlacing];
         const std::size_t slot = mNext++ - mBatchBegin;
-        Statistics statistics = mStatistics[slot];
-        const std::uint64_t offset = records.nodes.size();
-        records.nodes.insert(records.nodes.end(), mNodes[slot].begin(), mNodes[slot].end());
+        Statistics statistics = slots.statistics[slot];
+        std::vector<OctreeNode>& nodes = slots.nodes[slot];
+        shiftChildIndices(statistics.record, mLevel, records.nodes.size(), nodes);
+        records.nodes.insert(records.nodes.end(), nodes.begin(), nodes.end());
         if (records.meanVectors != nullptr) {
-            records.meanVectors->insert(records.meanVectors->end(), mMeanVectors[slot].begin(),
-                                        mMeanVectors[slot].end());
+            records.meanVectors->insert(records.meanVectors->end(),
+                                        slots.meanVectors[slot].begin(),
+                                        slots.meanVectors[slot].end());
         }
-        shiftChildIndices(statistics.record, mLevel, offset, records.nodes);
         return statistics;
     }
 
 private:
-    void buildBatch() {
+    // Per block of a batch: its statistics and its subtree's records (and mean vectors), with
+    // firstChild indices into the slot.
+    struct Slots {
+        std::vector<Statistics> statistics;
+        std::vector<std::vector<OctreeNode>> nodes;
+        std::vector<std::vector<glm::vec3>> meanVectors;
+    };
+
+    // Makes the batch after the one placed so far the one to place, and starts building the one
+    // after it. When the progress callback cancels, no batch is being built.
+    void nextBatch() {
+        if (mBatchEnd == 0) {
+            build(mSlots[mPlacing], 0);
+        } else {
+            mBuilding.wait();
+            mPlacing = 1 - mPlacing;
+        }
         mBatchBegin = mBatchEnd;
         mBatchEnd = std::min(mBatchBegin + kBlocksPerBatch, mBlocks.size());
-        tbb::parallel_for(std::size_t{0}, mBatchEnd - mBatchBegin, [this](std::size_t slot) {
-            mNodes[slot].clear();
-            Records records{mNodes[slot], nullptr};
-            if (!mMeanVectors.empty()) {
-                mMeanVectors[slot].clear();
-                records.meanVectors = &mMeanVectors[slot];
-            }
-            mStatistics[slot] = mOctree.buildSubtree(mLevel, mBlocks[mBatchBegin + slot], records);
-        });
         sg::reportWork(mProgress, kBuildStep,
                        static_cast<double>(mBatchEnd) / static_cast<double>(mBlocks.size()));
+        if (mBatchEnd < mBlocks.size()) {
+            mBuilding.run([this, &slots = mSlots[1 - mPlacing], begin = mBatchEnd] {
+                build(slots, begin);
+            });
+        }
+    }
+
+    // Builds the batch that starts at block `begin` into `slots`, in parallel.
+    void build(Slots& slots, std::size_t begin) const {
+        const std::size_t count = std::min(kBlocksPerBatch, mBlocks.size() - begin);
+        tbb::parallel_for(std::size_t{0}, count, [&](std::size_t slot) {
+            slots.nodes[slot].clear();
+            Records records{slots.nodes[slot], nullptr};
+            if (!slots.meanVectors.empty()) {
+                slots.meanVectors[slot].clear();
+                records.meanVectors = &slots.meanVectors[slot];
+            }
+            slots.statistics[slot] = mOctree.buildSubtree(mLevel, mBlocks[begin + slot], records);
+        });
     }
 
     const Octree& mOctree;
     int mLevel;
     std::vector<glm::u64vec3> mBlocks;
     const sg::WorkProgress& mProgress;
-    std::size_t mBatchBegin = 0; // the batch in the slots: blocks [mBatchBegin, mBatchEnd)
+    std::size_t mBatchBegin = 0; // the batch being placed: blocks [mBatchBegin, mBatchEnd)
     std::size_t mBatchEnd = 0;
     std::size_t mNext = 0; // the next block to place
-    // Per slot: the block's statistics and its subtree's records (and mean vectors).
-    std::vector<Statistics> mStatistics;
-    std::vector<std::vector<OctreeNode>> mNodes;
-    std::vector<std::vector<glm::vec3>> mMeanVectors;
+    std::array<Slots, 2> mSlots;
+    int mPlacing = 0; // the slots of the batch being placed; the other ones take the next batch
+    // Builds the next batch. Were the build stopped by an exception while it runs, the group's
+    // destructor cancels and waits for it.
+    tbb::task_group mBuilding;
 };
 
 Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid, const sg::WorkProgress& progress)

@@ -220,6 +220,26 @@ TEST(Octree, reportsOnTheCallingThreadOnly) {
     EXPECT_EQ(fractions.back(), 1.0);
 }
 
+TEST(Octree, stopsBetweenBatchesWhenCancelled) {
+    // Cancelled after the first of three batches, while the threads would build the next ones.
+    const auto grid = sparseGrid({104, 104, 104}, 10, 1.0f, true);
+    std::vector<double> fractions;
+    try {
+        tbb::task_arena(4).execute([&] {
+            const Octree octree(grid, [&fractions](std::string_view, double fraction) {
+                fractions.push_back(fraction);
+                return fraction == 0.0;
+            });
+        });
+        ADD_FAILURE() << "not cancelled";
+    } catch (const texsplat::sg::Cancelled& error) {
+        EXPECT_STREQ(error.what(), "building the octree: cancelled");
+    }
+    ASSERT_EQ(fractions.size(), 2u);
+    EXPECT_GT(fractions.back(), 0.0);
+    EXPECT_LT(fractions.back(), 1.0);
+}
+
 TEST(Octree, summarizesEveryNodeLikeABruteForceComputation) {
     const std::array<glm::u64vec3, 5> sizes{
         {{1, 1, 1}, {1, 9, 9}, {9, 1, 9}, {5, 7, 3}, {16, 16, 16}}};
