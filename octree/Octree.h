@@ -28,7 +28,9 @@ namespace texsplat::octree {
 /// data); voxels are read from the shared grid, and empty subtrees have no nodes at all. The
 /// nodes of level 3 are the grid's 8³ blocks: the build skips the blocks the grid did not
 /// allocate, and the nodes above them that hold none, so its time follows the allocated blocks
-/// (plus an occupancy bit per 4096 voxels of the box).
+/// (plus an occupancy bit per 4096 voxels of the box). The blocks' subtrees are built in
+/// parallel (oneTBB) and the levels above them serially: the same nodes, bit for bit, for any
+/// number of threads.
 class Octree {
 public:
     /// @brief Builds the hierarchy over @p grid in O(voxels) time, telling @p progress (when
@@ -126,6 +128,9 @@ public:
 
 private:
     struct Statistics;
+    struct Children;
+    struct Records;
+    class BlockBatches;
     static glm::u64vec3 childCoord(glm::u64vec3 coord, int octant) {
         const auto bit = static_cast<unsigned>(octant);
         return coord * std::uint64_t{2} +
@@ -135,15 +140,17 @@ private:
     // Per level above the blocks (index: level), whether each node holds an allocated block.
     using Occupancy = std::vector<std::vector<bool>>;
     Occupancy occupancy() const;
-    // What build() tells the progress callback: allocated blocks done, of how many.
-    struct BuildProgress {
-        const sg::WorkProgress& progress;
-        std::size_t blocks;
-        std::size_t done = 0;
-    };
+    // Whether the node of `level` at `coord` holds an allocated block (at or above the blocks).
+    bool holdsBlock(int level, glm::u64vec3 coord, const Occupancy& occupied) const;
+    // Calls visit(octant, childCoord) for the children of the node that lie inside the grid.
+    template <typename Visit> void forEachChild(int level, glm::u64vec3 coord, Visit&& visit) const;
+    // The block nodes (level min(rootLevel, 3)) holding an allocated block, in build order.
+    void collectBlocks(int level, glm::u64vec3 coord, const Occupancy& occupied,
+                       std::vector<glm::u64vec3>& blocks) const;
     Statistics build(int level, glm::u64vec3 coord, const Occupancy& occupied,
-                     BuildProgress& progress);
-    Statistics buildBlock(glm::u64vec3 block);
+                     BlockBatches& blocks);
+    Statistics buildSubtree(int level, glm::u64vec3 coord, Records& records) const;
+    Statistics buildBlock(glm::u64vec3 block, Records& records) const;
     Statistics voxelStatistics(glm::u64vec3 voxel) const;
 
     std::shared_ptr<const ClassifiedGrid> mGrid;

@@ -4,11 +4,15 @@
 #include "scenegraph/Error.h"
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
+#include <random>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 using texsplat::octree::ClassifiedGrid;
@@ -16,6 +20,7 @@ using texsplat::octree::NodeRef;
 using texsplat::octree::Octree;
 using texsplat::octree::OctreeNode;
 using texsplat::octree::test::randomGrid;
+using texsplat::octree::test::unitRandom;
 
 namespace {
 
@@ -93,7 +98,147 @@ std::uint64_t checkAllNodes(const Octree& octree) {
     return interiorNodes;
 }
 
+// A box of `dims` in which about `blockFraction` of the 8³ blocks hold random voxels and the
+// rest are not allocated; with vectors (some zero) when `withVectors`.
+std::shared_ptr<ClassifiedGrid> sparseGrid(glm::u64vec3 dims, unsigned seed, float blockFraction,
+                                           bool withVectors) {
+    auto grid = std::make_shared<ClassifiedGrid>(dims, glm::dvec3(1.0), glm::dvec3(0.0));
+    if (withVectors) {
+        grid->enableVectors();
+    }
+    std::mt19937 engine(seed);
+    const glm::u64vec3 blocks = grid->blockDims();
+    for (std::uint64_t bz = 0; bz < blocks.z; ++bz)
+        for (std::uint64_t by = 0; by < blocks.y; ++by)
+            for (std::uint64_t bx = 0; bx < blocks.x; ++bx) {
+                if (unitRandom(engine) >= blockFraction) {
+                    continue;
+                }
+                const glm::u64vec3 begin = glm::u64vec3(bx, by, bz) * ClassifiedGrid::kBlockSize;
+                const glm::u64vec3 end = glm::min(begin + ClassifiedGrid::kBlockSize, dims);
+                for (std::uint64_t k = begin.z; k < end.z; ++k)
+                    for (std::uint64_t j = begin.y; j < end.y; ++j)
+                        for (std::uint64_t i = begin.x; i < end.x; ++i) {
+                            if (unitRandom(engine) < 0.4f) {
+                                continue;
+                            }
+                            grid->setVoxel({i, j, k}, glm::vec3(unitRandom(engine), 0.5f, 0.0f),
+                                           unitRandom(engine));
+                            if (withVectors && unitRandom(engine) < 0.9f) {
+                                grid->setVector({i, j, k},
+                                                glm::vec3(unitRandom(engine) - 0.5f, 1.0f,
+                                                          unitRandom(engine) - 0.5f));
+                            }
+                        }
+            }
+    return grid;
+}
+
+// The same nodes, field by field and bit for bit (OctreeNode's padding bytes are not data), and
+// the same mean vectors, scale and root.
+void expectSameOctree(const Octree& expected, const Octree& actual) {
+    const auto sameBytes = [](const auto& a, const auto& b) {
+        return std::memcmp(&a, &b, sizeof(a)) == 0;
+    };
+    EXPECT_EQ(actual.isEmpty(), expected.isEmpty());
+    EXPECT_EQ(actual.rootLevel(), expected.rootLevel());
+    EXPECT_TRUE(sameBytes(actual.valueScale(), expected.valueScale()));
+    ASSERT_EQ(actual.nodes().size(), expected.nodes().size());
+    for (std::size_t i = 0; i < expected.nodes().size(); ++i) {
+        const OctreeNode& a = expected.nodes()[i];
+        const OctreeNode& b = actual.nodes()[i];
+        ASSERT_TRUE(sameBytes(a.meanColor, b.meanColor) &&
+                    sameBytes(a.meanExtinction, b.meanExtinction) && sameBytes(a.error, b.error) &&
+                    a.childMask == b.childMask && a.firstChild == b.firstChild &&
+                    a.nonEmptyCount == b.nonEmptyCount)
+            << "record " << i;
+        if (expected.grid().hasVectors()) {
+            NodeRef node;
+            node.level = 1; // any level >= 1 names a record
+            node.index = i;
+            ASSERT_TRUE(sameBytes(actual.meanVector(node), expected.meanVector(node)))
+                << "mean vector " << i;
+        }
+    }
+}
+
 } // namespace
+
+TEST(Octree, isTheSameForAnyNumberOfThreads) {
+    // Blocks are built in parallel and the levels above serially: the records must not depend on
+    // which thread built which block. The sparse grids hold more blocks than one batch.
+    auto oneVoxel = std::make_shared<ClassifiedGrid>(glm::u64vec3(1), glm::dvec3(1.0),
+                                                     glm::dvec3(0.0));
+    oneVoxel->setVoxel({0, 0, 0}, glm::vec3(0.5f), 1.0f);
+    const std::vector<std::shared_ptr<const ClassifiedGrid>> grids{
+        sparseGrid({37, 5, 70}, 1, 0.8f, false),
+        sparseGrid({37, 5, 70}, 2, 0.8f, true),
+        sparseGrid({1, 33, 9}, 3, 1.0f, true),
+        sparseGrid({17, 1, 1}, 4, 1.0f, false),
+        sparseGrid({3, 4, 2}, 5, 1.0f, true), // the root below the blocks' level
+        sparseGrid({200, 130, 180}, 6, 0.15f, false),
+        sparseGrid({130, 201, 90}, 7, 0.3f, true),
+        randomGrid({40, 40, 40}, 8),
+        oneVoxel,
+        std::make_shared<ClassifiedGrid>(glm::u64vec3(90, 7, 100), glm::dvec3(1.0),
+                                         glm::dvec3(0.0)), // empty
+    };
+    for (const auto& grid : grids) {
+        const glm::u64vec3 dims = grid->dims();
+        SCOPED_TRACE(::testing::Message() << dims.x << "x" << dims.y << "x" << dims.z
+                                          << (grid->hasVectors() ? " with vectors" : ""));
+        const auto buildWith = [&grid](int threads) {
+            std::unique_ptr<Octree> octree;
+            tbb::task_arena(threads).execute([&] { octree = std::make_unique<Octree>(grid); });
+            return octree;
+        };
+        const std::unique_ptr<Octree> serial = buildWith(1);
+        for (const int threads : {2, 7}) {
+            SCOPED_TRACE(::testing::Message() << threads << " threads");
+            expectSameOctree(*serial, *buildWith(threads));
+        }
+    }
+}
+
+TEST(Octree, reportsOnTheCallingThreadOnly) {
+    // 2,197 blocks: three batches built by several threads; the viewer polls its window inside
+    // the callback, which only the thread that asked for the octree may do.
+    const auto grid = sparseGrid({104, 104, 104}, 9, 1.0f, false);
+    const std::thread::id caller = std::this_thread::get_id();
+    std::vector<double> fractions;
+    bool onOtherThread = false;
+    tbb::task_arena(4).execute([&] {
+        const Octree octree(grid, [&](std::string_view, double fraction) {
+            onOtherThread = onOtherThread || std::this_thread::get_id() != caller;
+            fractions.push_back(fraction);
+            return true;
+        });
+    });
+    EXPECT_FALSE(onOtherThread);
+    ASSERT_GE(fractions.size(), 4u);
+    EXPECT_TRUE(std::is_sorted(fractions.begin(), fractions.end()));
+    EXPECT_EQ(fractions.back(), 1.0);
+}
+
+TEST(Octree, stopsBetweenBatchesWhenCancelled) {
+    // Cancelled after the first of three batches, while the threads would build the next ones.
+    const auto grid = sparseGrid({104, 104, 104}, 10, 1.0f, true);
+    std::vector<double> fractions;
+    try {
+        tbb::task_arena(4).execute([&] {
+            const Octree octree(grid, [&fractions](std::string_view, double fraction) {
+                fractions.push_back(fraction);
+                return fraction == 0.0;
+            });
+        });
+        ADD_FAILURE() << "not cancelled";
+    } catch (const texsplat::sg::Cancelled& error) {
+        EXPECT_STREQ(error.what(), "building the octree: cancelled");
+    }
+    ASSERT_EQ(fractions.size(), 2u);
+    EXPECT_GT(fractions.back(), 0.0);
+    EXPECT_LT(fractions.back(), 1.0);
+}
 
 TEST(Octree, summarizesEveryNodeLikeABruteForceComputation) {
     const std::array<glm::u64vec3, 5> sizes{
