@@ -184,7 +184,8 @@ public:
     /// cloud.vdb") with the fraction done, from 0 to 1, at most once per percent (docs/data.md says
     /// how finely each format reports). Generators and a grid that another node sharing the
     /// file holds report nothing. Without `progress` (empty) the load logs as the accessors do.
-    /// Calls `progress` only on the calling thread.
+    /// Calls `progress` only on the calling thread, with the node locked: the callback must not
+    /// use this node.
     /// @throws sg::Cancelled ("VolumeData 'cloud': reading from cloud.raw: cancelled") when
     /// `progress` answered false: nothing read is kept, here or in the grids shared with other
     /// nodes, so the next use loads again; else as scalarGrid().
