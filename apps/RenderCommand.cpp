@@ -3,6 +3,7 @@
 #include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
 #include "apps/ThreadLimit.h"
+#include "apps/WorkProgressPrinter.h"
 
 #include "nodes/image/ImageIo.h"
 #include "nodes/render/BackendChoice.h"
@@ -375,39 +376,6 @@ private:
     int mLastPercent = -1;
 };
 
-// Progress of a frame's long steps (classifying, building the octree) on stderr: one updating
-// line on a terminal once a step has run half a second (quick steps stay quiet); otherwise, once
-// it has run for a few seconds, a line every 10 %.
-class WorkProgressPrinter {
-public:
-    WorkProgressPrinter() : mTerminal(isatty(STDERR_FILENO) == 1) {}
-
-    bool operator()(std::string_view step, double fraction) {
-        if (step != mStep) {
-            mStep = std::string(step);
-            mStart = Clock::now();
-            mLastPercent = -1;
-        }
-        const int percent = static_cast<int>(fraction * 100.0);
-        if (mTerminal) {
-            if (percent != mLastPercent && secondsSince(mStart) > 0.5) {
-                std::fprintf(stderr, "\r%s: %3d%%%s", mStep.c_str(), percent,
-                             fraction >= 1.0 ? "\n" : "");
-            }
-        } else if (secondsSince(mStart) > 2.0 && percent / 10 != mLastPercent / 10) {
-            std::fprintf(stderr, "%s: %d%%\n", mStep.c_str(), percent / 10 * 10);
-        }
-        mLastPercent = percent;
-        return true;
-    }
-
-private:
-    bool mTerminal;
-    std::string mStep;
-    Clock::time_point mStart;
-    int mLastPercent = -1;
-};
-
 // The reference images of --raycast: no GL context; the same camera, size and background as
 // the GL render, so the two images compare pixel by pixel.
 void runRayCast(const RenderArguments& arguments, const Animation& animation, sg::Node& root,
@@ -504,7 +472,10 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     // Framing takes the bounding box, which reads the volumes.
     const sg::Node::Ptr root =
         withMemoryStage("reading the scene's volumes", 0, kReadAdvice,
-                        [&] { return withCamera(scene, framingOf(arguments), aspect); });
+                        [&] {
+                            return withCamera(scene, framingOf(arguments), aspect,
+                                              WorkProgressPrinter());
+                        });
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 

@@ -273,7 +273,8 @@ void addViewOptions(CLI::App& command, Framing& framing) {
         ->type_name("F");
 }
 
-sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect) {
+sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect,
+                         const sg::WorkProgress& progress) {
     if (nodes::Camera* camera = render::findCamera(*scene)) {
         if (!framing.camera.empty()) {
             throw DataError("--camera: the scene has its own camera (" + camera->describe() +
@@ -288,6 +289,7 @@ sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, flo
                       : framing.sceneName.empty() ? kDefaultSceneDirection
                                                   : glm::vec3(0.0f, 0.0f, -1.0f);
     frame.name = framing.sceneName.empty() ? "default scene" : framing.sceneName;
+    frame.progress = progress;
     sg::Node::Ptr root = render::framedScene(scene, aspect, frame);
     adjustCamera(*render::findCamera(*root), framing, false);
     return root;

@@ -2,6 +2,7 @@
 
 #include "nodes/render/SceneFraming.h"
 #include "scenegraph/Node.h"
+#include "scenegraph/WorkProgress.h"
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
@@ -77,8 +78,10 @@ void addViewOptions(CLI::App& command, Framing& framing);
 /// framing camera it is the direction framed from), `azimuth` and `elevation` orbit it about its
 /// focal point (ParaView's and the viewer's orbit), `zoom` magnifies (a narrower opening angle,
 /// or a smaller orthographic height). Framing takes the scene's bounding box, which loads (or
-/// generates) its volumes: callers that time loading count this call in.
-/// @throws DataError for a bad option, or a scene with neither geometry nor camera.
-sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect);
+/// generates) its volumes, telling `progress`: callers that time loading count this call in.
+/// @throws DataError for a bad option, or a scene with neither geometry nor camera;
+/// sg::Cancelled when `progress` cancelled a load.
+sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect,
+                         const sg::WorkProgress& progress = {});
 
 } // namespace texsplat::apps

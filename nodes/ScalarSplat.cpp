@@ -102,7 +102,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     // Loading counts as such, not as classification.
     timed(statistics, sg::RenderPhase::Load, [&] {
         withMemoryStage("reading the volume of " + detail::nodeContext(volume), 0,
-                        detail::kSplatMemoryAdvice, [&volume] { volume.bounds(); });
+                        detail::kSplatMemoryAdvice, [&] { volume.load(action.workProgress()); });
     });
     std::optional<octree::VectorEmission> vectors = vectorEmission();
     const bool fullResolution = errorThreshold.value() == 0.0f && maxSplats.value() == 0;
@@ -218,6 +218,7 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
     const TransferFunction& transfer = inputs.second;
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
+    volume.load(action.workProgress());
     const volume::ScalarGridPtr grid = volume.scalarGrid();
     mCache->setWorkProgress(action.workProgress());
     const std::shared_ptr<const octree::ClassifiedGrid> classified =

@@ -22,16 +22,39 @@
 #include <initializer_list>
 #include <map>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <variant>
 
 namespace texsplat::nodes {
 namespace {
 
-// Progress of reading `path` for the user, through texsplat::log and named like the node's
-// errors ("VolumeData 'cloud': cloud.raw: reading 40%"); volume::logProgress() decides when a
-// load is long enough to be worth it.
-volume::ProgressCallback loadProgress(const VolumeData& node, const std::string& path) {
+// Loads report to a traversal's progress at most once per this fraction of a step (and at its
+// start and end): the viewer polls its window's events in that callback.
+constexpr double kReportInterval = 0.01;
+
+// The loader's progress for `path`: to the traversal's `work` when there is one, as the step
+// "<the loader's message> from <file name>" ("reading from cloud.raw"), where a false answer
+// throws sg::Cancelled out of the loader; else for the user through texsplat::log, named like the
+// node's errors ("VolumeData 'cloud': cloud.raw: reading 40%"), when volume::logProgress() finds
+// the load long enough to be worth it.
+volume::ProgressCallback loadProgress(const VolumeData& node, const std::string& path,
+                                      const sg::WorkProgress& work) {
+    if (work) {
+        return [&work, file = std::filesystem::path(path).filename().string(),
+                step = std::string(), reported = 0.0](double fraction,
+                                                      std::string_view message) mutable {
+            std::string current = std::string(message) + " from " + file;
+            const bool done = fraction >= 1.0 && reported < 1.0;
+            if (current == step && !done && fraction < reported + kReportInterval) {
+                return true;
+            }
+            step = std::move(current);
+            reported = fraction;
+            sg::reportWork(work, step, fraction);
+            return true;
+        };
+    }
     std::error_code error; // a missing file fails in the loader, with the loader's message
     const std::uintmax_t bytes = std::filesystem::file_size(path, error);
     return volume::logProgress(detail::nodeContext(node) + ": " + path,
@@ -116,14 +139,15 @@ volume::RawHeader VolumeData::headerlessLayout() const {
     return layout;
 }
 
-std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
+std::shared_ptr<const VolumeData::Loaded>
+VolumeData::loadShared(const sg::WorkProgress& progress) const {
     const auto kind = source.as<VolumeSource>();
     const bool readsFile = kind == VolumeSource::FileRaw ||
                            kind == VolumeSource::FileRawHeaderless ||
                            kind == VolumeSource::FileNpy || kind == VolumeSource::FileNrrd ||
                            kind == VolumeSource::FileNetCdf || kind == VolumeSource::FileVdb;
     if (!readsFile || fileName.value().empty()) {
-        return read();
+        return read(progress);
     }
     // Everything that shapes what is read, so that only equal loads share.
     std::string key =
@@ -133,10 +157,12 @@ std::shared_ptr<const VolumeData::Loaded> VolumeData::load() const {
     for (const sg::Field* field : shaping) {
         key += "\n" + field->valueText();
     }
-    return detail::sharedLoad<Loaded>(key, [this] { return read(); });
+    // A cancelled or failed read throws before anything is shared: the next load reads again.
+    return detail::sharedLoad<Loaded>(key, [this, &progress] { return read(progress); });
 }
 
-std::shared_ptr<const VolumeData::Loaded> VolumeData::read() const {
+std::shared_ptr<const VolumeData::Loaded>
+VolumeData::read(const sg::WorkProgress& progress) const {
     auto result = std::make_shared<Loaded>();
     const auto kind = source.as<VolumeSource>();
     const auto requireFile = [this]() -> std::string {
@@ -149,30 +175,30 @@ std::shared_ptr<const VolumeData::Loaded> VolumeData::read() const {
     switch (kind) {
     case VolumeSource::FileRaw: {
         const std::string path = requireFile();
-        result->grid = volume::readRawVolume(path, loadProgress(*this, path));
+        result->grid = volume::readRawVolume(path, loadProgress(*this, path, progress));
         break;
     }
     case VolumeSource::FileRawHeaderless: {
         const std::string path = requireFile();
         result->grid = volume::readHeaderlessRawVolume(path, headerlessLayout(),
                                                        headerBytes.value(),
-                                                       loadProgress(*this, path));
+                                                       loadProgress(*this, path, progress));
         break;
     }
     case VolumeSource::FileNpy: {
         const std::string path = requireFile();
-        result->grid = volume::readNpyVolume(path, loadProgress(*this, path));
+        result->grid = volume::readNpyVolume(path, loadProgress(*this, path, progress));
         break;
     }
     case VolumeSource::FileNrrd: {
         const std::string path = requireFile();
-        result->grid = volume::readNrrdVolume(path, loadProgress(*this, path));
+        result->grid = volume::readNrrdVolume(path, loadProgress(*this, path, progress));
         break;
     }
     case VolumeSource::FileNetCdf: {
         const std::string path = requireFile();
         result->grid = volume::readNetCdfVariable(path, gridName.value(), timeStep.value(),
-                                                  loadProgress(*this, path));
+                                                  loadProgress(*this, path, progress));
         break;
     }
     case VolumeSource::FileVdb: {
@@ -194,7 +220,7 @@ std::shared_ptr<const VolumeData::Loaded> VolumeData::read() const {
             }
             name = grids.front().name;
         }
-        result->grid = volume::readVdbGrid(path, name, loadProgress(*this, path));
+        result->grid = volume::readVdbGrid(path, name, loadProgress(*this, path, progress));
         break;
     }
     case VolumeSource::Tornado:
@@ -243,12 +269,18 @@ std::shared_ptr<const VolumeData::Loaded> VolumeData::read() const {
     return result;
 }
 
-std::shared_ptr<const VolumeData::Loaded> VolumeData::loaded() const {
-    // Called with mMutex held.
+std::shared_ptr<const VolumeData::Loaded>
+VolumeData::loaded(const sg::WorkProgress& progress) const {
     if (!mLoaded) {
-        mLoaded = detail::withNodeContext(*this, [this] { return load(); });
+        mLoaded =
+            detail::withNodeContext(*this, [this, &progress] { return loadShared(progress); });
     }
     return mLoaded;
+}
+
+void VolumeData::load(const sg::WorkProgress& progress) const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    loaded(progress);
 }
 
 volume::ScalarGridPtr VolumeData::scalarGrid() const {
@@ -325,6 +357,8 @@ bool VolumeData::isLoaded() const {
 void VolumeData::getBoundingBox(sg::BoundingBoxAction& action) {
     // Also the element: shapes after it (Fibers) bound what they draw from this volume.
     doAction(action);
+    // Framing a scene is often what reads its volumes first.
+    load(action.workProgress());
     action.extendBy(bounds());
 }
 

@@ -7,6 +7,7 @@
 #include "scenegraph/Declare.h"
 #include "scenegraph/EnumNames.h"
 #include "scenegraph/Node.h"
+#include "scenegraph/WorkProgress.h"
 #include "scenegraph/fields/Fields.h"
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/io/RelativeFileNames.h"
@@ -82,7 +83,9 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 /// one load and one grid while any of them holds it (a changed file is read again); the grid is
 /// released when the last holder drops it. Errors name the node and then the source:
 /// "VolumeData 'cloud': cloud.raw: cannot open file (No such file or directory)".
-/// A long file load logs its progress at LogLevel::Info, named the same way
+/// Splat nodes load through load() with their action's sg::WorkProgress, which is told how
+/// reading the file goes and may cancel it. A load without one (the accessors below, called first)
+/// logs its progress at LogLevel::Info when it is long, named like the errors
 /// ("VolumeData 'cloud': cloud.raw: reading 40%"; when, see volume::logProgress()).
 ///
 /// Fields:
@@ -173,6 +176,21 @@ public:
     /// MEMORY`, and reading it back gives a node whose use throws DataError.
     void setGrid(volume::AnyGrid grid);
 
+    /// @brief Loads the source now unless the node holds it already: what the accessors would
+    /// do on first use, but reporting to `progress` (a traversal's Action::workProgress()).
+    ///
+    /// Reading a file tells `progress` the reader's step and the file's name ("reading from
+    /// cloud.raw", "reading grid 'density' from cloud.vdb", then "copying grid 'density' from
+    /// cloud.vdb") with the fraction done, from 0 to 1, at most once per percent (docs/data.md says
+    /// how finely each format reports). Generators and a grid that another node sharing the
+    /// file holds report nothing. Without `progress` (empty) the load logs as the accessors do.
+    /// Calls `progress` only on the calling thread, with the node locked: the callback must not
+    /// use this node.
+    /// @throws sg::Cancelled ("VolumeData 'cloud': reading from cloud.raw: cancelled") when
+    /// `progress` answered false: nothing read is kept, here or in the grids shared with other
+    /// nodes, so the next use loads again; else as scalarGrid().
+    void load(const sg::WorkProgress& progress) const;
+
     /// @brief Whether the source is loaded now (the cache holds it).
     bool isLoaded() const;
 
@@ -191,12 +209,14 @@ protected:
 private:
     struct Loaded;
 
-    std::shared_ptr<const Loaded> loaded() const;
+    // The cached data, loaded first when there is none (reporting to `progress`); called with
+    // mMutex held.
+    std::shared_ptr<const Loaded> loaded(const sg::WorkProgress& progress = {}) const;
     // The source's data: a file load shared with other nodes loading the same (detail::sharedLoad),
     // or read().
-    std::shared_ptr<const Loaded> load() const;
+    std::shared_ptr<const Loaded> loadShared(const sg::WorkProgress& progress) const;
     // Reads or generates the source's data.
-    std::shared_ptr<const Loaded> read() const;
+    std::shared_ptr<const Loaded> read(const sg::WorkProgress& progress) const;
     glm::i64vec3 dims() const;
     volume::RawHeader headerlessLayout() const;
 

@@ -1,5 +1,6 @@
 #include "apps/viewer/Viewer.h"
 
+#include "apps/WorkProgressPrinter.h"
 #include "apps/viewer/FramePresenter.h"
 #include "apps/viewer/GlfwWindow.h"
 #include "apps/viewer/OrbitController.h"
@@ -88,8 +89,7 @@ std::string title(const ViewerOptions& options) {
 } // namespace
 
 Viewer::Viewer(ViewerOptions options) : mOptions(std::move(options)) {
-    const float aspect = static_cast<float>(mOptions.size.x) / static_cast<float>(mOptions.size.y);
-    mScene = withCamera(loadScene(mOptions.scene), mOptions.framing, aspect);
+    mScene = loadScene(mOptions.scene);
     if (!mOptions.screenshot.empty()) {
         // Refuse a bad file name before the window opens.
         image::imageFormatOf(mOptions.screenshot);
@@ -97,16 +97,39 @@ Viewer::Viewer(ViewerOptions options) : mOptions(std::move(options)) {
 }
 
 void Viewer::run() {
-    sg::Node& root = *mScene;
     GlfwWindow window(mOptions.size, title(mOptions));
     Pointer pointer;
     glfwSetWindowUserPointer(window.handle(), &pointer);
     glfwSetScrollCallback(window.handle(), onScroll); // before ImGui, which chains to them
     glfwSetMouseButtonCallback(window.handle(), onMouseButton);
     glfwSetKeyCallback(window.handle(), onKey);
+    // A long step (reading a volume file, classifying, building the octree) shows on stderr and
+    // keeps the window's events flowing, and Esc or q cancels it (and quits, as it does between
+    // frames).
+    const sg::WorkProgress progress = [printer = WorkProgressPrinter(),
+                                       handle = window.handle()](std::string_view step,
+                                                                 double fraction) mutable {
+        printer(step, fraction);
+        glfwPollEvents();
+        return glfwGetKey(handle, GLFW_KEY_ESCAPE) != GLFW_PRESS &&
+               glfwGetKey(handle, GLFW_KEY_Q) != GLFW_PRESS;
+    };
 
+    // The window is open before the volumes load (framing a scene without a camera reads them),
+    // so that a long load can be cancelled.
+    sg::Node::Ptr scene;
     sg::BoundingBoxAction boxAction;
-    boxAction.apply(root);
+    boxAction.setWorkProgress(progress);
+    try {
+        const glm::ivec2 size = mOptions.size;
+        scene = withCamera(mScene, mOptions.framing,
+                           static_cast<float>(size.x) / static_cast<float>(size.y), progress);
+        boxAction.apply(*scene);
+    } catch (const sg::Cancelled& error) {
+        std::fprintf(stderr, "texsplat view: %s\n", error.what());
+        return;
+    }
+    sg::Node& root = *scene;
     OrbitController controller(cameraOf(root), boxAction.boundingBox());
     ProgressiveRefinement refinement(root, mOptions.interactiveBudget);
 
@@ -131,13 +154,7 @@ void Viewer::run() {
     ViewerPanel panel(window.handle());
     ViewerFrames frames(mOptions.backend, window.info().summary(), mOptions.background,
                         mOptions.threads);
-    // A long classification or octree build keeps the window's events flowing, and Esc or q
-    // cancels it (and quits, as it does between frames).
-    frames.setWorkProgress([handle = window.handle()](std::string_view, double) {
-        glfwPollEvents();
-        return glfwGetKey(handle, GLFW_KEY_ESCAPE) != GLFW_PRESS &&
-               glfwGetKey(handle, GLFW_KEY_Q) != GLFW_PRESS;
-    });
+    frames.setWorkProgress(progress);
     PanelReport report;
     report.renderer = frames.description();
 

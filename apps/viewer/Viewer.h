@@ -34,13 +34,15 @@ struct ViewerOptions {
 /// scene only after a change (a NodeSensor on the root), so an idle viewer costs nothing.
 class Viewer {
 public:
-    /// @brief Reads the scene (before any window opens, so a bad file is reported first).
-    /// @throws what loadScene() and withCamera() throw.
+    /// @brief Reads the scene file (before any window opens, so a bad file is reported first).
+    /// @throws what loadScene() throws.
     explicit Viewer(ViewerOptions options);
 
-    /// @brief Opens the window and runs until it is closed (or `frames` frames were shown),
-    /// then writes the screenshot if one was asked for.
-    /// @throws GlError when no window can be opened; what rendering throws.
+    /// @brief Opens the window, frames the scene (withCamera(), which may read its volumes: Esc or
+    /// q cancels that as it cancels a frame's long steps, and the viewer quits), and runs until
+    /// the window is closed (or `frames` frames were shown), then writes the screenshot if one was
+    /// asked for.
+    /// @throws GlError when no window can be opened; what withCamera() and rendering throw.
     void run();
 
 private:

@@ -40,6 +40,7 @@ sg::Node::Ptr framedScene(const sg::Node::Ptr& scene, float aspect, const Framin
     }
     camera->orientation.setValue(rotationLookingAlong(framing.direction));
     sg::BoundingBoxAction box;
+    box.setWorkProgress(framing.progress);
     box.apply(*scene);
     if (box.boundingBox().isEmpty()) {
         throw DataError(framing.name +

@@ -6,15 +6,18 @@
 #include "nodes/volume/SparseGrid.h"
 #include "nodes/volume/VdbGrid.h"
 #include "nodes/volume/detail/Printable.h"
+#include "nodes/volume/detail/ReportingFileStream.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "nodes/volume/detail/VdbHeader.h"
 #include "scenegraph/MemoryLimit.h"
 
+#include <openvdb/io/GridDescriptor.h>
 #include <openvdb/openvdb.h>
 
 #include <exception>
 #include <memory>
 #include <new>
+#include <vector>
 #endif
 
 namespace texsplat::volume {
@@ -95,6 +98,77 @@ std::vector<VdbGridInfo> gridInfos(openvdb::io::File& file, const std::string& p
         infos.push_back({grid->getName(), grid->valueType()});
     return infos;
 }
+
+// Reads one grid as openvdb::io::File::readGrid() does, through a ReportingFileStream, so that
+// `progress` learns how much of the grid's bytes OpenVDB has read and can stop it: io::File reads
+// from an ifstream of its own that no one else sees. For a file written with grid offsets (by
+// io::File), which lets it skip the other grids; io::File reads a file written as a stream whole
+// on opening.
+class ReportingGridReader : public openvdb::io::Archive {
+public:
+    openvdb::GridBase::Ptr read(const std::string& path, const std::string& gridName,
+                                const ProgressCallback& progress, const std::string& message) {
+        detail::ReportingFileStream in(path, progress, message);
+        readHeader(in);
+        // What io::File::open() tells the stream about the file, for the grid's readers.
+        auto metadata = std::make_shared<openvdb::io::StreamMetadata>();
+        metadata->setSeekable(true);
+        openvdb::io::setStreamMetadataPtr(in, metadata, /*transfer=*/false);
+        setFormatVersion(in);
+        setLibraryVersion(in);
+        setDataCompression(in);
+        openvdb::MetaMap().readMeta(in);
+        std::vector<openvdb::io::GridDescriptor> descriptors;
+        for (std::int32_t i = 0, count = readGridCount(in); i < count; ++i) {
+            descriptors.emplace_back().read(in);
+            descriptors.back().seekToEnd(in);
+        }
+        const openvdb::io::GridDescriptor& descriptor = find(descriptors, gridName);
+        if (!descriptor.isInstance()) {
+            in.reportRange(descriptor.getGridPos(), descriptor.getEndPos());
+            return readOne(in, descriptor);
+        }
+        // An instance holds its metadata and transform; the tree is its parent's.
+        openvdb::GridBase::Ptr grid = readOne(in, descriptor);
+        const openvdb::io::GridDescriptor& parent =
+            findUnique(descriptors, descriptor.instanceParentName());
+        in.reportRange(parent.getGridPos(), parent.getEndPos());
+        grid->setTree(readOne(in, parent)->baseTreePtr());
+        return grid;
+    }
+
+private:
+    static openvdb::GridBase::Ptr readOne(std::istream& in,
+                                          const openvdb::io::GridDescriptor& descriptor) {
+        openvdb::GridBase::Ptr grid = openvdb::GridBase::createGrid(descriptor.gridType());
+        grid->setSaveFloatAsHalf(descriptor.saveFloatAsHalf());
+        descriptor.seekToGrid(in);
+        Archive::readGrid(grid, descriptor, in);
+        return grid;
+    }
+
+    // The descriptor io::File::readGrid() takes for `name`: the first grid of that name, or the
+    // one with that unique name ("density[1]", the second grid named "density").
+    static const openvdb::io::GridDescriptor&
+    find(const std::vector<openvdb::io::GridDescriptor>& descriptors, const std::string& name) {
+        const openvdb::Name unique = openvdb::io::GridDescriptor::stringAsUniqueName(name);
+        for (const openvdb::io::GridDescriptor& descriptor : descriptors)
+            if (name == unique ? descriptor.gridName() == name
+                               : descriptor.uniqueName() == unique)
+                return descriptor;
+        return findUnique(descriptors, unique);
+    }
+
+    static const openvdb::io::GridDescriptor&
+    findUnique(const std::vector<openvdb::io::GridDescriptor>& descriptors,
+               const openvdb::Name& unique) {
+        for (const openvdb::io::GridDescriptor& descriptor : descriptors)
+            if (descriptor.uniqueName() == unique)
+                return descriptor;
+        throw openvdb::KeyError("no grid named \"" +
+                                openvdb::io::GridDescriptor::nameAsString(unique) + "\"");
+    }
+};
 
 // Index (0,0,0) of our grid is the low corner of the active bounding box; its world position and
 // the voxel size come from the OpenVDB transform, which must be diagonal.
@@ -234,10 +308,18 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
         detail::checkFitsInMemory(where + ": reading its tree of " + nodesText(tree.nodes) +
                                       " into OpenVDB",
                                   tree.bytes);
-    // OpenVDB reads and decompresses the whole grid in this one call, often the longest step.
-    reportProgress(progress, path, 0.0, "reading grid '" + gridName + "'");
-    const openvdb::GridBase::Ptr base =
-        callOpenVdb([&] { return file->readGrid(gridName); }, cannotRead);
+    // OpenVDB reads and decompresses the whole grid in one call, often the longest step: read
+    // through a stream that reports the grid's bytes as OpenVDB reads them. A file written as a
+    // stream was read when it was opened.
+    const std::string reading = "reading grid '" + gridName + "'";
+    reportProgress(progress, path, 0.0, reading);
+    const openvdb::GridBase::Ptr base = callOpenVdb(
+        [&] {
+            return trees.streamed ? file->readGrid(gridName)
+                                  : ReportingGridReader().read(path, gridName, progress, reading);
+        },
+        cannotRead);
+    reportProgress(progress, path, 1.0, reading);
     if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
         return ScalarGridPtr(convert(*scalar, path, gridName, progress, tree.bytes));
     if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))

@@ -7,14 +7,18 @@
 #include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/MemoryLimit.h"
+#include "scenegraph/WorkProgress.h"
 #include "scenegraph/io/SceneReader.h"
 #include "tests/scenegraph/TestFifo.h"
 
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <filesystem>
 #include <fstream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace texsplat::volume {
 namespace {
@@ -318,6 +322,43 @@ TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {
                         "variables of numbers\n"),
               std::string::npos)
         << info;
+}
+
+TEST(NetCdfVolume, tellsTheActionsWorkProgressOfEachZSliceReadWhichMayCancel) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("slices", R"(netcdf slices {
+dimensions:
+    z = 10 ; y = 1 ; x = 2 ;
+variables:
+    float v(z, y, x) ;
+data:
+    v = 0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15, 16, 17, 18, 19 ;
+}
+)");
+    const std::string step =
+        "reading variable 'v' from " + std::filesystem::path(path).filename().string();
+    const auto volume = nodes::VolumeData::create();
+    volume->source.setValue(nodes::VolumeSource::FileNetCdf);
+    volume->fileName = path;
+    std::vector<double> fractions;
+    const auto recording = [&](double cancelAt) {
+        return [&fractions, &step, cancelAt](std::string_view told, double fraction) {
+            EXPECT_EQ(told, step);
+            fractions.push_back(fraction);
+            return fraction < cancelAt;
+        };
+    };
+    EXPECT_EQ(errorOf<sg::Cancelled>([&] { volume->load(recording(0.3)); }),
+              "VolumeData: " + step + ": cancelled");
+    EXPECT_EQ(fractions.size(), 4u); // 0, then after each of the slices 0, 1 and 2
+    EXPECT_FALSE(volume->isLoaded());
+
+    fractions.clear();
+    volume->load(recording(2.0));
+    ASSERT_EQ(fractions.size(), 11u);
+    for (std::size_t slices = 0; slices <= 10; ++slices)
+        EXPECT_DOUBLE_EQ(fractions[slices], double(slices) / 10.0);
+    EXPECT_EQ(volume->scalarGrid()->value({1, 0, 9}), 19.0f);
 }
 
 #else

@@ -294,6 +294,65 @@ TEST(VdbVolume, sizesInTheHeaderAreCheckedAgainstTheFileBeforeOpenVdbAllocates) 
                      "bytes, but the file ends at byte " + std::to_string(bytes.size()));
 }
 
+// A float grid of `count`^3 voxels with values that do not compress, so that the file holds
+// about 4 count^3 bytes of it.
+openvdb::FloatGrid::Ptr incompressible(int count) {
+    auto grid = openvdb::FloatGrid::create(0.0f);
+    auto accessor = grid->getAccessor();
+    std::uint32_t random = 1;
+    for (int z = 0; z < count; ++z)
+        for (int y = 0; y < count; ++y)
+            for (int x = 0; x < count; ++x) {
+                random = random * 1664525u + 1013904223u;
+                accessor.setValue({x, y, z}, static_cast<float>(random >> 8) + 1.0f);
+            }
+    return grid;
+}
+
+TEST(VdbVolume, reportsTheBytesOpenVdbReadsAndStopsItWhenCancelled) {
+    openvdb::initialize();
+    auto density = incompressible(96); // about 3.4 MiB
+    density->setName("density");
+    const std::string path = testPath("big.vdb");
+    openvdb::io::File(path).write({density});
+    std::vector<double> fractions;
+    readVdbGrid(path, "density", [&fractions](double fraction, std::string_view message) {
+        if (message == "reading grid 'density'")
+            fractions.push_back(fraction);
+        return true;
+    });
+    // 0, once per MiB read, then 1.
+    ASSERT_EQ(fractions.size(), 5u);
+    EXPECT_EQ(fractions.front(), 0.0);
+    EXPECT_EQ(fractions.back(), 1.0);
+    for (std::size_t i = 1; i < fractions.size(); ++i)
+        EXPECT_GT(fractions[i], fractions[i - 1]) << i;
+
+    // Cancelled from inside OpenVDB's read: the exception leaves it (ASan: nothing leaks).
+    EXPECT_EQ(errorOf<LoadCancelled>([&] {
+                  readVdbGrid(path, "density", [&](double fraction, std::string_view message) {
+                      return message != "reading grid 'density'" || fraction < 0.3;
+                  });
+              }),
+              path + ": loading cancelled");
+    const ScalarGridPtr grid = std::get<ScalarGridPtr>(readVdbGrid(path, "density"));
+    EXPECT_EQ(grid->statistics().finiteCount, 96 * 96 * 96);
+}
+
+TEST(VdbVolume, readsTheGridOfARepeatedNameThatOpenVdbWouldRead) {
+    openvdb::initialize();
+    auto first = openvdb::FloatGrid::create(0.0f);
+    first->setName("density");
+    first->getAccessor().setValue({0, 0, 0}, 1.0f);
+    auto second = openvdb::FloatGrid::create(0.0f);
+    second->setName("density");
+    second->getAccessor().setValue({0, 0, 0}, 2.0f);
+    const std::string path = testPath("twice.vdb");
+    openvdb::io::File(path).write({first, second});
+    EXPECT_EQ(std::get<ScalarGridPtr>(readVdbGrid(path, "density"))->value({0, 0, 0}), 1.0f);
+    EXPECT_EQ(std::get<ScalarGridPtr>(readVdbGrid(path, "density[1]"))->value({0, 0, 0}), 2.0f);
+}
+
 TEST(VdbVolume, refusesAFifoBeforeOpeningIt) {
     const texsplat::test::TestFifo pipe(testPath("grids.vdb"));
     const std::string& fifo = pipe.path();
