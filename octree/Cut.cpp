@@ -1,11 +1,11 @@
 #include "octree/Cut.h"
 
 #include "octree/Octree.h"
+#include "octree/detail/BitCount.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
 
 #include <array>
-#include <bitset>
 #include <cmath>
 #include <sstream>
 
@@ -62,8 +62,8 @@ void Cut::split(const NodeRef& node) {
 void Cut::splitRecord(std::uint64_t record) {
     const auto index = static_cast<std::size_t>(record);
     mSplit[index] = true;
-    const std::bitset<8> children(mOctree->nodes()[index].childMask);
-    mSplatCount += children.count() - 1;
+    mSplatCount +=
+        static_cast<std::uint64_t>(detail::bitCount(mOctree->nodes()[index].childMask)) - 1;
 }
 
 } // namespace texsplat::octree

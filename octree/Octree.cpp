@@ -135,7 +135,7 @@ void shiftChildIndices(OctreeNode& record, int level, std::uint64_t offset,
     }
     const std::uint64_t first = record.firstChild;
     record.firstChild += offset;
-    const std::size_t count = std::bitset<8>(record.childMask).count();
+    const auto count = static_cast<std::size_t>(detail::bitCount(record.childMask));
     for (std::size_t rank = 0; rank < count; ++rank) {
         shiftChildIndices(slot[static_cast<std::size_t>(first + rank)], level - 1, offset, slot);
     }

@@ -3,6 +3,7 @@
 #include "octree/ClassifiedGrid.h"
 #include "octree/NodeRef.h"
 #include "octree/OctreeNode.h"
+#include "octree/detail/BitCount.h"
 #include "scenegraph/WorkProgress.h"
 
 #include <glm/common.hpp>
@@ -10,7 +11,6 @@
 #include <glm/ext/vector_uint3_sized.hpp>
 
 #include <array>
-#include <bitset>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -78,7 +78,7 @@ public:
         result.level = node.level - 1;
         // Children are stored in octant order, so a child's rank is the number of lower bits.
         const auto rank = static_cast<std::uint64_t>(
-            std::bitset<8>(record.childMask & ((1u << bit) - 1u)).count());
+            detail::bitCount(static_cast<std::uint8_t>(record.childMask & ((1u << bit) - 1u))));
         result.index = result.level == 0 ? mGrid->index(result.coord) : record.firstChild + rank;
         return result;
     }

@@ -1,6 +1,7 @@
 #include "octree/Refiner.h"
 
 #include "octree/Octree.h"
+#include "octree/detail/BitCount.h"
 #include "scenegraph/Error.h"
 
 #include <glm/geometric.hpp>
@@ -11,7 +12,6 @@
 
 #include <algorithm>
 #include <array>
-#include <bitset>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -87,7 +87,9 @@ double priorityOf(const Octree& octree, const View& view, const NodeRef& node) {
 }
 
 std::uint64_t addedSplats(const Octree& octree, std::uint64_t record) {
-    return std::bitset<8>(octree.nodes()[static_cast<std::size_t>(record)].childMask).count() - 1;
+    return static_cast<std::uint64_t>(
+               detail::bitCount(octree.nodes()[static_cast<std::size_t>(record)].childMask)) -
+           1;
 }
 
 // Nodes of this level and above hand their children to parallel tasks.

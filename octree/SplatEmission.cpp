@@ -12,8 +12,10 @@
 #include <glm/geometric.hpp>
 
 #include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <vector>
@@ -63,34 +65,121 @@ SplatVector vectorSplat(const VectorEmission& emission, glm::vec3 position, glm:
     return result;
 }
 
+namespace {
+
+// The splat of `node`, a node of the cut.
+Splat splatOf(const Octree& octree, const NodeRef& node) {
+    Splat splat;
+    if (node.level == 0) {
+        // Voxels are most of a fine cut: read them straight from the grid.
+        const ClassifiedGrid& grid = octree.grid();
+        const glm::vec4 value = grid.voxel(node.coord);
+        splat.position = glm::vec3(grid.toWorld(glm::dvec3(node.coord)));
+        splat.color = glm::vec3(value);
+        splat.extinction = value.w;
+    } else {
+        const OctreeNode& summary = octree.nodes()[static_cast<std::size_t>(node.index)];
+        const glm::u64vec3 extent = octree.voxelEnd(node) - octree.voxelBegin(node);
+        splat.position = glm::vec3(octree.center(node));
+        splat.size = static_cast<float>(std::max({extent.x, extent.y, extent.z}));
+        splat.color = summary.meanColor;
+        splat.extinction = summary.meanExtinction;
+    }
+    return splat;
+}
+
+// Where one task's part of the traversal goes before it is laid into the list.
+struct Piece {
+    std::vector<Splat> splats;
+    std::vector<SplatVector> vectors;
+};
+
+// Splits the back-to-front traversal of the cut into consecutive pieces: the nodes from which
+// `forEachBackToFrontFrom()` walks one piece each, so that the pieces' splats, end to end, are
+// the traversal's. Split nodes are replaced by their children in the traversal's order, a level
+// at a time, until there are `target` pieces or none left to split above the voxels' parents.
+std::vector<NodeRef> traversalPieces(const detail::BackToFrontDescent& descent,
+                                     std::size_t target) {
+    const Cut& cut = descent.cut();
+    std::vector<NodeRef> pieces{cut.octree().root()};
+    std::vector<NodeRef> next;
+    std::array<NodeRef, 8> children;
+    const auto isDivided = [&](const NodeRef& node) { return node.level > 1 && cut.isSplit(node); };
+    while (pieces.size() < target && std::any_of(pieces.begin(), pieces.end(), isDivided)) {
+        next.clear();
+        for (const NodeRef& node : pieces) {
+            if (!isDivided(node)) {
+                next.push_back(node);
+            } else if (descent.isEntered(node)) {
+                const int count = descent.children(node, children);
+                next.insert(next.end(), children.begin(), children.begin() + count);
+            }
+        }
+        pieces.swap(next);
+    }
+    return pieces;
+}
+
+} // namespace
+
 void emitSplats(const Cut& cut, const View& view, SplatList& splats,
                 const VectorEmission* vectors) {
     const Octree& octree = cut.octree();
+    TEXSPLAT_ASSERT(!vectors || octree.grid().hasVectors(),
+                    "emitSplats(): vector splats need vectors");
     splats.clear();
-    splats.reserve(static_cast<std::size_t>(cut.splatCount()), vectors != nullptr);
-    const ClassifiedGrid& grid = octree.grid();
-    TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitSplats(): vector splats need vectors");
-    detail::forEachBackToFront(cut, view, [&](const NodeRef& node) {
-        Splat splat;
-        if (node.level == 0) {
-            // Voxels are most of a fine cut: read them straight from the grid.
-            const glm::vec4 value = grid.voxel(node.coord);
-            splat.position = glm::vec3(grid.toWorld(glm::dvec3(node.coord)));
-            splat.color = glm::vec3(value);
-            splat.extinction = value.w;
-        } else {
-            const OctreeNode& summary = octree.nodes()[static_cast<std::size_t>(node.index)];
-            const glm::u64vec3 extent = octree.voxelEnd(node) - octree.voxelBegin(node);
-            splat.position = glm::vec3(octree.center(node));
-            splat.size = static_cast<float>(std::max({extent.x, extent.y, extent.z}));
-            splat.color = summary.meanColor;
-            splat.extinction = summary.meanExtinction;
-        }
+    if (octree.isEmpty()) {
+        return;
+    }
+    const detail::BackToFrontDescent descent(cut, view);
+    const auto emit = [&](const NodeRef& start, auto&& add) {
+        detail::forEachBackToFrontFrom(descent, start, [&](const NodeRef& node) {
+            const Splat splat = splatOf(octree, node);
+            if (vectors) {
+                add(splat, vectorSplat(*vectors, splat.position, octree.meanVector(node),
+                                       nodeKey(node)));
+            } else {
+                add(splat, SplatVector{});
+            }
+        });
+    };
+    const auto threads = static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
+    if (threads == 1) {
+        splats.reserve(static_cast<std::size_t>(cut.splatCount()), vectors != nullptr);
+        emit(octree.root(), [&](const Splat& splat, const SplatVector& vector) {
+            if (vectors) {
+                splats.add(splat, vector);
+            } else {
+                splats.add(splat);
+            }
+        });
+        return;
+    }
+    // Pieces of the traversal on all threads, each into its own arrays, then laid end to end:
+    // the serial traversal's list for any number of threads. Many more pieces than threads, as
+    // subtrees differ in size.
+    const std::vector<NodeRef> starts = traversalPieces(descent, 32 * threads);
+    std::vector<Piece> pieces(starts.size());
+    tbb::parallel_for(std::size_t{0}, starts.size(), [&](std::size_t i) {
+        Piece& piece = pieces[i];
+        emit(starts[i], [&](const Splat& splat, const SplatVector& vector) {
+            piece.splats.push_back(splat);
+            if (vectors) {
+                piece.vectors.push_back(vector);
+            }
+        });
+    });
+    std::vector<std::size_t> offsets(pieces.size() + 1, 0);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        offsets[i + 1] = offsets[i] + pieces[i].splats.size();
+    }
+    splats.resize(offsets.back(), vectors != nullptr);
+    Splat* const out = splats.writableSplats();
+    SplatVector* const outVectors = splats.writableVectors();
+    tbb::parallel_for(std::size_t{0}, pieces.size(), [&](std::size_t i) {
+        std::copy(pieces[i].splats.begin(), pieces[i].splats.end(), out + offsets[i]);
         if (vectors) {
-            splats.add(splat, vectorSplat(*vectors, splat.position, octree.meanVector(node),
-                                          nodeKey(node)));
-        } else {
-            splats.add(splat);
+            std::copy(pieces[i].vectors.begin(), pieces[i].vectors.end(), outVectors + offsets[i]);
         }
     });
 }

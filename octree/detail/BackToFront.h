@@ -4,6 +4,7 @@
 #include "octree/Octree.h"
 #include "octree/View.h"
 
+#include <array>
 #include <vector>
 
 namespace texsplat::octree::detail {
@@ -20,59 +21,108 @@ inline int farOctant(const Octree& octree, const NodeRef& node, const View& view
     return far;
 }
 
-/// @brief The traversal behind `traverseBackToFront()`, inlined for the per-frame splat
-/// emission so that visiting a node costs no indirect call.
+/// @brief How a cut's back-to-front traversal for one view goes down the octree: which split
+/// nodes it enters and in which order it takes their children. `forEachBackToFront()` and the
+/// parallel emission's split of the traversal into pieces (SplatEmission.cpp) share it, so
+/// both give the same order.
 ///
-/// Visiting children by increasing `key = octant ^ far` puts first the child that is far on every
+/// Taking children by increasing `key = octant ^ far` puts first the child that is far on every
 /// axis (key 0) and last the one that is near on every axis (key 7); in general a child comes
 /// before every sibling that is nearer on all the axes where the two differ, and siblings that
 /// are nearer on one such axis and farther on another are never crossed by a common ray.
-template <typename Visit> void forEachBackToFront(const Cut& cut, const View& view, Visit&& visit) {
-    const Octree& octree = cut.octree();
-    if (octree.isEmpty()) {
-        return;
+class BackToFrontDescent {
+public:
+    BackToFrontDescent(const Cut& cut, const View& view)
+        : mCut(cut), mOctree(cut.octree()), mView(view), mPerspective(view.isPerspective()) {
+        // An orthographic view has the same far octant for every node, whatever its planes.
+        for (int axis = 0; axis < 3 && !mPerspective; ++axis) {
+            mOrthographicFar |= view.isUpperSideFar(axis, 0.0) ? 1 << axis : 0;
+        }
     }
-    const bool perspective = view.isPerspective();
-    // An orthographic view has the same far octant for every node.
-    const int orthographicFar = perspective ? 0 : farOctant(octree, octree.root(), view);
-    std::vector<NodeRef> pending{octree.root()};
+
+    /// @brief Whether @p node, a node of the cut, is drawn: its centre is in front of the eye.
+    [[nodiscard]] bool isDrawn(const NodeRef& node) const {
+        return !mPerspective || mView.depth(mOctree.center(node)) > 0.0;
+    }
+
+    /// @brief Whether the traversal enters @p node, a split node: not when its cells lie wholly
+    /// behind the eye (a box behind the eye has its centre behind it too, so only split nodes
+    /// need this test).
+    [[nodiscard]] bool isEntered(const NodeRef& node) const {
+        return !(mPerspective &&
+                 mView.isBoxBehindEye(mOctree.cellMin(node), mOctree.cellMax(node)));
+    }
+
+    /// @brief Writes the children of @p node, a split node, back to front to @p children and
+    /// returns how many there are.
+    int children(const NodeRef& node, std::array<NodeRef, 8>& children) const {
+        const int far = mPerspective ? farOctant(mOctree, node, mView) : mOrthographicFar;
+        const unsigned mask = mOctree.nodes()[static_cast<std::size_t>(node.index)].childMask;
+        int count = 0;
+        for (int key = 0; key < 8; ++key) {
+            const int octant = key ^ far;
+            if ((mask & (1u << octant)) != 0) {
+                children[static_cast<std::size_t>(count++)] = mOctree.child(node, octant);
+            }
+        }
+        return count;
+    }
+
+    [[nodiscard]] const Cut& cut() const { return mCut; }
+
+private:
+    const Cut& mCut;
+    const Octree& mOctree;
+    const View& mView;
+    bool mPerspective;
+    int mOrthographicFar = 0;
+};
+
+/// @brief The traversal behind `traverseBackToFront()` from @p start (a node of the cut or a
+/// split node above it), inlined for the per-frame splat emission so that visiting a node costs
+/// no indirect call.
+template <typename Visit>
+void forEachBackToFrontFrom(const BackToFrontDescent& descent, const NodeRef& start,
+                            Visit&& visit) {
+    const Cut& cut = descent.cut();
+    std::vector<NodeRef> pending{start};
+    std::array<NodeRef, 8> children;
     while (!pending.empty()) {
         const NodeRef node = pending.back();
         pending.pop_back();
         if (!cut.isSplit(node)) {
-            if (!perspective || view.depth(octree.center(node)) > 0.0) {
+            if (descent.isDrawn(node)) {
                 visit(node);
             }
             continue;
         }
-        // A box behind the eye has its centre behind it too, so only subtrees need this test.
-        if (perspective && view.isBoxBehindEye(octree.cellMin(node), octree.cellMax(node))) {
+        if (!descent.isEntered(node)) {
             continue;
         }
-        const int far = perspective ? farOctant(octree, node, view) : orthographicFar;
-        const unsigned mask = octree.nodes()[static_cast<std::size_t>(node.index)].childMask;
+        const int count = descent.children(node, children);
         if (node.level == 1) {
             // Voxel children are never split: visit them at once instead of through the stack.
-            for (int key = 0; key < 8; ++key) {
-                const int octant = key ^ far;
-                if ((mask & (1u << octant)) == 0) {
-                    continue;
-                }
-                const NodeRef voxel = octree.child(node, octant);
-                if (!perspective || view.depth(octree.center(voxel)) > 0.0) {
-                    visit(voxel);
+            for (int i = 0; i < count; ++i) {
+                if (descent.isDrawn(children[static_cast<std::size_t>(i)])) {
+                    visit(children[static_cast<std::size_t>(i)]);
                 }
             }
             continue;
         }
-        // The stack pops last-in first: push the nearest child (largest key) first.
-        for (int key = 7; key >= 0; --key) {
-            const int octant = key ^ far;
-            if ((mask & (1u << octant)) != 0) {
-                pending.push_back(octree.child(node, octant));
-            }
+        // The stack pops last-in first: push the nearest child first.
+        for (int i = count - 1; i >= 0; --i) {
+            pending.push_back(children[static_cast<std::size_t>(i)]);
         }
     }
+}
+
+/// @brief The whole traversal behind `traverseBackToFront()`, from the root.
+template <typename Visit> void forEachBackToFront(const Cut& cut, const View& view, Visit&& visit) {
+    if (cut.octree().isEmpty()) {
+        return;
+    }
+    forEachBackToFrontFrom(BackToFrontDescent(cut, view), cut.octree().root(),
+                           std::forward<Visit>(visit));
 }
 
 } // namespace texsplat::octree::detail

@@ -29,9 +29,11 @@ void RatioReporter::ReportRuns(const std::vector<Run>& runs) {
             continue;
         }
         // CPU time rather than wall time: on a shared machine it does not count the time the
-        // thread waited for a core.
-        const double seconds =
-            run.GetAdjustedCPUTime() / benchmark::GetTimeUnitMultiplier(run.time_unit);
+        // thread waited for a core. Benchmarks of work on several threads (UseRealTime(): the
+        // main thread's CPU time would miss the others') give wall time.
+        const double time = run.run_name.time_type == "real_time" ? run.GetAdjustedRealTime()
+                                                                  : run.GetAdjustedCPUTime();
+        const double seconds = time / benchmark::GetTimeUnitMultiplier(run.time_unit);
         if (run.run_type == Run::RT_Iteration) {
             measured.iterationSeconds += seconds;
             ++measured.iterationRuns;
@@ -144,8 +146,9 @@ void RatioReporter::printRatios(std::ostream& out, const std::string& filter) co
         rows.push_back({measured.name, baselineName, ratioText(measured, baselineName, filter)});
     }
 
-    out << "\nTime ratios against the baselines, measured in this run (CPU time per iteration; "
-           "the median over repetitions if any; below 1: faster than its baseline):\n";
+    out << "\nTime ratios against the baselines, measured in this run (CPU time per iteration, wall "
+           "time for */real_time; the median over repetitions if any; below 1: faster than its "
+           "baseline):\n";
     if (rows.size() == 1) {
         out << "(no benchmark with a baseline ran)\n";
     } else {

@@ -149,7 +149,58 @@ void OctreeBudgetCut(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(splits));
     state.counters["splits"] = static_cast<double>(splits);
 }
-BENCHMARK(OctreeBudgetCut)->Arg(100000)->Arg(283000)->Unit(benchmark::kMillisecond);
+BENCHMARK(OctreeBudgetCut)
+    ->Arg(100000)
+    ->Arg(283000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime(); // as its parallel counterpart below
+
+// The cut of the same budget made at once, on all threads (what a splat node does every frame),
+// against the queue above.
+void OctreeBudgetCutAtOnce(benchmark::State& state) {
+    const auto grid = classifiedMarschnerLobb(128);
+    const texsplat::octree::Octree octree(grid);
+    const View view = obliqueView();
+    const auto maxSplats = static_cast<std::uint64_t>(state.range(0));
+    for (auto _ : state) {
+        const texsplat::octree::Cut cut = texsplat::octree::Refiner::refineAtOnce(
+            texsplat::octree::Cut(octree), view, maxSplats);
+        benchmark::DoNotOptimize(cut.splatCount());
+    }
+}
+BENCHMARK(OctreeBudgetCutAtOnce)
+    ->Arg(100000)
+    ->Arg(283000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+TEXSPLAT_BENCHMARK_BASELINE(OctreeBudgetCutAtOnce, OctreeBudgetCut);
+
+// The back-to-front emission of a cut of a quarter of Marschner-Lobb 128^3's voxels, on all
+// threads, against the same emission on one.
+void emitCutSplats(benchmark::State& state, int threads) {
+    const auto grid = classifiedMarschnerLobb(128);
+    const texsplat::octree::Octree octree(grid);
+    const View view = obliqueView();
+    const texsplat::octree::Cut cut = texsplat::octree::Refiner::refineAtOnce(
+        texsplat::octree::Cut(octree), view, static_cast<std::uint64_t>(state.range(0)));
+    tbb::task_arena arena(threads);
+    SplatList splats;
+    for (auto _ : state) {
+        arena.execute([&] { texsplat::octree::emitSplats(cut, view, splats); });
+        benchmark::DoNotOptimize(splats.splats().data());
+    }
+    state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(splats.size()));
+}
+void EmitCutSplats(benchmark::State& state) {
+    emitCutSplats(state, tbb::task_arena::automatic);
+}
+BENCHMARK(EmitCutSplats)->Arg(283000)->Unit(benchmark::kMillisecond)->UseRealTime();
+void EmitCutSplatsBaselineOneThread(benchmark::State& state) { emitCutSplats(state, 1); }
+BENCHMARK(EmitCutSplatsBaselineOneThread)
+    ->Arg(283000)
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+TEXSPLAT_BENCHMARK_BASELINE(EmitCutSplats, EmitCutSplatsBaselineOneThread);
 
 // The centre-depth sort of an octree cut (what a splat node drawing a cut pays every frame):
 // the radix sort with kept buffers against std::stable_sort by the same depths, both on one

@@ -135,6 +135,66 @@ TEST(SplatEmission, voxelSplatsAreTheSameForAnyNumberOfThreads) {
     }
 }
 
+TEST(SplatEmission, cutSplatsAreTheSerialTraversalsForAnyNumberOfThreads) {
+    // Pieces of the traversal are emitted in parallel and laid end to end: the list must be the
+    // one-thread traversal's, splat for splat, for coarse and fine cuts, culled or not.
+    auto grid = randomGrid({45, 38, 29}, 11, 0.25f, true, {1.0, 0.6, 1.4}, {-3.0, 2.0, 0.5});
+    grid->enableVectors();
+    const glm::u64vec3 dims = grid->dims();
+    for (std::uint64_t k = 0; k < dims.z; ++k) {
+        for (std::uint64_t j = 0; j < dims.y; ++j) {
+            for (std::uint64_t i = 0; i < dims.x; ++i) {
+                if (!grid->isEmptyVoxel({i, j, k})) {
+                    grid->setVector({i, j, k}, glm::vec3(static_cast<float>(i % 5) - 2.0f, 1.0f,
+                                                         static_cast<float>(j % 3)));
+                }
+            }
+        }
+    }
+    const Octree octree(grid);
+    const std::vector<View> views{
+        View::orthographic({0.4, -1.0, 0.3}),
+        View::perspective({-30.0, 50.0, 70.0}, {0.5, -0.6, -0.7}),
+        View::perspective({18.0, 14.0, 20.0}, {0.3, 0.8, -0.2}), // the eye inside: culled nodes
+    };
+    for (std::size_t v = 0; v < views.size(); ++v) {
+        const View& view = views[v];
+        for (const std::uint64_t budget : {1u, 300u, 6000u, 40000u}) {
+            const Cut cut = texsplat::octree::Refiner::refineAtOnce(Cut(octree), view, budget);
+            std::vector<NodeRef> nodes;
+            traverseBackToFront(cut, view, [&](const NodeRef& node) { nodes.push_back(node); });
+            const auto emitWith = [&](int threads) {
+                SplatList splats;
+                tbb::task_arena(threads).execute([&] {
+                    texsplat::octree::VectorEmission vectors;
+                    vectors.rows = 9;
+                    vectors.columns = 4;
+                    emitSplats(cut, view, splats, &vectors);
+                });
+                return splats;
+            };
+            const SplatList serial = emitWith(1);
+            ASSERT_EQ(serial.size(), nodes.size()) << "view " << v << ", budget " << budget;
+            for (std::size_t i = 0; i < nodes.size(); ++i) {
+                ASSERT_EQ(serial.splats()[i].position, glm::vec3(octree.center(nodes[i])))
+                    << "view " << v << ", budget " << budget << ", splat " << i;
+            }
+            for (const int threads : {2, 7}) {
+                const SplatList parallel = emitWith(threads);
+                ASSERT_EQ(parallel.size(), serial.size()) << threads << " threads";
+                EXPECT_EQ(std::memcmp(parallel.splats().data(), serial.splats().data(),
+                                      serial.size() * sizeof(Splat)),
+                          0)
+                    << "view " << v << ", budget " << budget << ", " << threads << " threads";
+                EXPECT_EQ(std::memcmp(parallel.vectors().data(), serial.vectors().data(),
+                                      serial.size() * sizeof(texsplat::octree::SplatVector)),
+                          0)
+                    << "view " << v << ", budget " << budget << ", " << threads << " threads";
+            }
+        }
+    }
+}
+
 // The example of docs/octree.md, compiled here so that it cannot rot.
 TEST(SplatEmission, documentationExample) {
     auto grid = std::make_shared<ClassifiedGrid>(glm::u64vec3(64, 64, 32), glm::dvec3(1.0),
