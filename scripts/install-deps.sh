@@ -10,7 +10,7 @@ packages=(
     libstb-dev fonts-dejavu-core
     libcli11-dev libglfw3-dev libimgui-dev
     libgtest-dev libbenchmark-dev libcoin-dev
-    clang libclang-rt-14-dev xvfb xauth locales
+    clang libclang-rt-14-dev xvfb xauth xdotool locales
     python3-numpy
     libnetcdf-dev zlib1g-dev
     # ncgen and unu write the NetCDF and NRRD files of the readers' tests; pyopenvdb the .vdb of

@@ -68,6 +68,10 @@ GlfwWindow::GlfwWindow(const glm::ivec2& size, const std::string& title) {
         glfwTerminate();
         fail(reason + " (asked for an OpenGL 3.3 core context)");
     }
+    // Keys are read by polling (glfwGetKey) between frames and during long steps: a key pressed
+    // and released while a frame renders arrives with its release in one poll and would read as
+    // released. Sticky keys keep the press until it is read, so a quick Esc still quits.
+    glfwSetInputMode(mWindow, GLFW_STICKY_KEYS, GLFW_TRUE);
     makeCurrent();
     keepLoadedLibrariesMapped();
     glfwSwapInterval(1);

@@ -95,6 +95,33 @@ TEST_F(ViewCommandTest, showsTheSameFramesWithEitherBackend) {
     EXPECT_LE(largest, 2.0f / 255.0f) << "the PNGs' 8 bits, but for rounding";
 }
 
+TEST_F(ViewCommandTest, aKeyTappedWhileAFrameRendersIsNotLost) {
+    // The viewer reads keys by polling between frames and during long steps. A tap of Esc while
+    // it is busy arrives with its release in one poll; without sticky keys it read as released
+    // and the viewer went on (a tap during a long frame of a big volume was lost). The viewer is
+    // stopped (SIGSTOP) while the key goes down and up, so the two arrive together every time.
+    if (!hasXvfbRun() || std::system("command -v xdotool > /dev/null 2>&1") != 0) {
+        GTEST_SKIP() << "needs xvfb-run and xdotool (Debian packages xvfb, xdotool)";
+    }
+    const std::string script = write("tap.sh", std::string(R"(
+"$1" view --size 96x80 --frames 0 2> "$2" &
+viewer=$!
+window=$(timeout 60 xdotool search --sync --name texsplat | head -n 1)
+[ -n "$window" ] || { kill $viewer; echo "no window"; exit 3; }
+kill -STOP $viewer
+xdotool key --window "$window" Escape
+kill -CONT $viewer
+for step in $(seq 600); do kill -0 $viewer 2> /dev/null || break; sleep 0.1; done
+if kill -0 $viewer 2> /dev/null; then kill $viewer; echo "still running a minute after Esc"; exit 4; fi
+wait $viewer
+)"));
+    const std::string errors = path("viewer-stderr.txt");
+    const std::string command = "xvfb-run -a sh " + script + " " TEXSPLAT_EXECUTABLE " " +
+                                errors + " > " + path("tap-stdout.txt") + " 2>&1";
+    const int status = std::system(command.c_str());
+    EXPECT_EQ(status, 0) << read(path("tap-stdout.txt")) << read(errors);
+}
+
 TEST_F(ViewCommandTest, withoutADisplayItSaysSoAndWritesNothing) {
     const std::string screenshot = path("view.png");
     const auto output =
