@@ -221,8 +221,10 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
                 return;
             }
             const glm::vec4 value = grid.storedVoxel(stored);
+            // Every member: the list may be refilled over an octree cut's coarse splats.
             Splat& splat = out[next];
             splat.position = glm::vec3(grid.toWorld(glm::dvec3(voxel)));
+            splat.size = 1.0f;
             splat.color = glm::vec3(value);
             splat.extinction = value.w;
             if (vectors) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include <vector>
@@ -89,6 +90,25 @@ TEST(SplatEmission, voxelSplatsBehindTheEyeAreCulled) {
     for (const Splat& splat : splats.splats()) {
         EXPECT_GT(splat.position.x, 2.5f);
     }
+}
+
+TEST(SplatEmission, voxelSplatsRefillAListThatHeldACut) {
+    // A list is refilled frame after frame without clearing it: voxel splats written over a
+    // cut's coarse splats must not keep their sizes.
+    const auto grid = randomGrid({19, 23, 17}, 5, 0.3f, true, {1.0, 0.8, 1.2});
+    const Octree octree(grid);
+    const View view = View::perspective({-20.0, 30.0, 40.0}, {0.4, -0.5, -0.7});
+    SplatList fresh;
+    emitVoxelSplats(*grid, view, fresh);
+    SplatList refilled;
+    emitSplats(Cut::byError(octree, 0.5), view, refilled);
+    ASSERT_TRUE(std::any_of(refilled.splats().begin(), refilled.splats().end(),
+                            [](const Splat& splat) { return splat.size > 1.0f; }));
+    emitVoxelSplats(*grid, view, refilled);
+    ASSERT_EQ(refilled.size(), fresh.size());
+    EXPECT_EQ(std::memcmp(refilled.splats().data(), fresh.splats().data(),
+                          fresh.size() * sizeof(Splat)),
+              0);
 }
 
 TEST(SplatEmission, voxelSplatsAreTheSameForAnyNumberOfThreads) {
