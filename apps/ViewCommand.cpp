@@ -52,6 +52,9 @@ void addViewCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     command->add_option("--screenshot", options.screenshot,
                         "At the end, write the last rendered view (without the panel) as PNG "
                         "or EXR");
+    command->add_flag("--time-report", options.timeReport,
+                      "Print a line per rendered frame on stderr: when it was shown, its "
+                      "refinement stage, splats and where its time went");
     addMemoryLimitOption(*command, arguments->memoryLimit);
     command->callback([arguments, mode, &exitCode] {
         const std::uint64_t memoryLimit = memoryLimitOf(arguments->memoryLimit);

@@ -105,11 +105,11 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                         detail::kSplatMemoryAdvice, [&] { volume.load(action.workProgress()); });
     });
     std::optional<octree::VectorEmission> vectors = vectorEmission();
-    const bool fullResolution = errorThreshold.value() == 0.0f && maxSplats.value() == 0;
+    const bool mayCut = errorThreshold.value() > 0.0f || maxSplats.value() > 0;
     // Every stage's allocation, estimated and refused before the first one is made.
     const detail::SplatMemory memory = detail::withNodeContext(*this, [&] {
         const detail::SplatMemory estimate = detail::estimateSplatMemory(
-            volume, vectors.has_value(), !fullResolution,
+            volume, vectors.has_value(), mayCut,
             static_cast<std::uint64_t>(maxSplats.value()));
         detail::checkSplatMemory(estimate);
         return estimate;
@@ -125,6 +125,13 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                        });
             });
         });
+    // A budget that holds every non-empty voxel draws them all, in slice order: the
+    // full-resolution image is within the budget, and its order costs about a quarter of an
+    // octree cut's as fine (the viewer's last refinement steps of a big volume).
+    const bool fullResolution =
+        errorThreshold.value() == 0.0f &&
+        (maxSplats.value() == 0 ||
+         static_cast<std::uint64_t>(maxSplats.value()) >= classified->nonEmptyVoxelCount());
     if (vectors) {
         vectors->localToCamera = camera.view * model;
         vectors->isPerspective = camera.projection[3][3] == 0.0f;

@@ -8,6 +8,18 @@
 
 namespace texsplat::apps {
 
+const char* ProgressiveRefinement::toString(Stage stage) {
+    switch (stage) {
+    case Stage::FullQuality:
+        return "full quality";
+    case Stage::Interactive:
+        return "interactive (coarse octree cut)";
+    case Stage::Refining:
+        return "refining while idle";
+    }
+    return "";
+}
+
 ProgressiveRefinement::ProgressiveRefinement(sg::Node& root, std::int32_t interactiveBudget)
     : mInteractiveBudget(std::max<std::int32_t>(interactiveBudget, 1)) {
     sg::SearchAction search;
@@ -33,7 +45,7 @@ void ProgressiveRefinement::beginInteraction() {
     apply(mInteractiveBudget);
 }
 
-bool ProgressiveRefinement::refine(std::size_t splatsDrawn) {
+bool ProgressiveRefinement::refine(std::size_t splatsDrawn, double frameSeconds) {
     if (mStage == Stage::FullQuality) {
         return false;
     }
@@ -47,7 +59,7 @@ bool ProgressiveRefinement::refine(std::size_t splatsDrawn) {
     const std::size_t budgets = static_cast<std::size_t>(mBudget) * mSplats.size();
     const bool reachedAll = splatsDrawn + kLargestSplitGrowth * mSplats.size() < budgets ||
                             (mStage == Stage::Refining && splatsDrawn <= mLastDrawn);
-    if (!reachedAll) {
+    if (!reachedAll && frameSeconds <= kQuickStepSeconds) {
         mStage = Stage::Refining;
         mLastDrawn = splatsDrawn;
         // A larger budget that no node takes (the scene's own limits hold them all) is no step.

@@ -22,6 +22,7 @@ struct ViewerOptions {
     glm::vec3 background{0.02f, 0.02f, 0.025f}; ///< linear RGB behind the scene
     render::BackendRequest backend = render::BackendRequest::Auto; ///< what draws the frames
     int threads = 0; ///< CPU backend threads (0: one per hardware thread)
+    bool timeReport = false; ///< a line per rendered frame on stderr: stage, splats, phases
 };
 
 /// @brief The interactive viewer: a GLFW window showing the scene as a backend draws it

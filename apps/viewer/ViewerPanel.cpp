@@ -11,22 +11,6 @@ namespace texsplat::apps {
 
 #ifdef TEXSPLAT_VIEWER_PANEL
 
-namespace {
-
-const char* stageName(ProgressiveRefinement::Stage stage) {
-    switch (stage) {
-    case ProgressiveRefinement::Stage::FullQuality:
-        return "full quality";
-    case ProgressiveRefinement::Stage::Interactive:
-        return "interactive (coarse octree cut)";
-    case ProgressiveRefinement::Stage::Refining:
-        return "refining while idle";
-    }
-    return "";
-}
-
-} // namespace
-
 ViewerPanel::ViewerPanel(GLFWwindow* window) : mWindow(window) {
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
@@ -58,7 +42,7 @@ void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinem
     ImGui::TextUnformatted(report.renderer.c_str());
     ImGui::Text("frame %.1f ms", 1000.0 * report.frameSeconds);
     ImGui::Text("splats %zu, triangles %zu", report.splats, report.triangles);
-    ImGui::Text("%s", stageName(report.stage));
+    ImGui::Text("%s", ProgressiveRefinement::toString(report.stage));
     if (report.budget > 0) {
         ImGui::SameLine();
         ImGui::Text("(budget %d)", report.budget);

@@ -87,6 +87,23 @@ TEST_F(ProgressiveRefinementTest, coarseWhileMovingThenRefinesToTheScenesOwnCut)
     EXPECT_EQ(render(), full);
 }
 
+TEST_F(ProgressiveRefinementTest, aSlowStepIsFollowedByTheFullQualityFrame) {
+    const std::vector<nodes::ScalarSplat*> splats = splatNodes(*mRoot);
+    ASSERT_FALSE(splats.empty());
+    ProgressiveRefinement refinement(*mRoot, 500);
+    refinement.beginInteraction();
+    const std::size_t drawn = render();
+    EXPECT_TRUE(refinement.refine(drawn, ProgressiveRefinement::kQuickStepSeconds))
+        << "a quick frame: the next step";
+    EXPECT_EQ(refinement.stage(), Stage::Refining);
+    EXPECT_FALSE(refinement.refine(render(), 2.0 * ProgressiveRefinement::kQuickStepSeconds))
+        << "a slow one: the scene's own settings";
+    EXPECT_EQ(refinement.stage(), Stage::FullQuality);
+    for (const nodes::ScalarSplat* splat : splats) {
+        EXPECT_EQ(splat->maxSplats.value(), 0);
+    }
+}
+
 TEST_F(ProgressiveRefinementTest, theScenesOwnBudgetStaysTheLimit) {
     const std::vector<nodes::ScalarSplat*> splats = splatNodes(*mRoot);
     ASSERT_FALSE(splats.empty());

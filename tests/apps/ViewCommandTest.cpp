@@ -9,7 +9,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 using texsplat::test::runTexsplat;
@@ -93,6 +95,32 @@ TEST_F(ViewCommandTest, showsTheSameFramesWithEitherBackend) {
     }
     EXPECT_GT(images[0].pixel(32, 24).r, 0.1f) << "the tornado in the middle";
     EXPECT_LE(largest, 2.0f / 255.0f) << "the PNGs' 8 bits, but for rounding";
+}
+
+TEST_F(ViewCommandTest, startsCoarseRefinesToFullQualityAndReportsEachFrame) {
+    if (!hasXvfbRun()) {
+        GTEST_SKIP() << "xvfb-run is not installed (Debian package xvfb)";
+    }
+    // The tornado's 92,297 voxels: 1000 splats first, then 4000, 16000, 64000, 256000 (which
+    // holds them all: the full-resolution list), then the scene's own settings.
+    const auto output = runTexsplat(
+        "view --frames 14 --size 64x48 --interactive-splats 1000 --time-report", "xvfb-run -a");
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    std::istringstream lines(output.standardError);
+    std::vector<std::string> frames;
+    for (std::string line; std::getline(lines, line);) {
+        frames.push_back(line);
+    }
+    ASSERT_GE(frames.size(), 3u) << output.standardError;
+    EXPECT_EQ(frames.front().rfind("frame 0 at ", 0), 0u) << frames.front();
+    EXPECT_NE(frames.front().find(": interactive (coarse octree cut), budget 1000, "),
+              std::string::npos)
+        << frames.front();
+    EXPECT_NE(frames[1].find(": refining while idle, budget 4000, "), std::string::npos)
+        << frames[1];
+    EXPECT_NE(frames.back().find(": full quality, 92297 splats; "), std::string::npos)
+        << output.standardError;
+    EXPECT_NE(frames.back().find(" draw "), std::string::npos) << frames.back();
 }
 
 TEST_F(ViewCommandTest, aKeyTappedWhileAFrameRendersIsNotLost) {

@@ -78,15 +78,43 @@ TEST(BudgetedRender, hasNoSeamDownTheSplitPlaneTheEyeLiesOn) {
     // Before the cut was drawn in centre-depth order, the traversal drew one side of the plane
     // wholly before the other and the overlapping kernels left a bright seam at every budget from
     // 10 000 splats up to all of them: +6.4 / 255 (10k) to +10.8 / 255 (all) in these linear
-    // values (+3.5 to +6 in the 8-bit sRGB PNG); now at most +2.2 / 255.
+    // values (+3.5 to +6 in the 8-bit sRGB PNG); now at most +2.2 / 255. (A budget of all the
+    // voxels or more draws them in slice order: one less is the finest cut.)
     const std::shared_ptr<sg::Separator> root = tornado();
     const Rendered full = render(*root, kSize);
-    for (const int budget : {10000, 20000, 30000, static_cast<int>(full.splats)}) {
+    for (const int budget : {10000, 20000, 30000, static_cast<int>(full.splats) - 1}) {
         splatNode(*root).maxSplats.setValue(budget);
         const Rendered budgeted = render(*root, kSize);
         EXPECT_LE(budgeted.splats, static_cast<std::size_t>(budget));
         EXPECT_LT(seamAtMiddle(full.image, budgeted.image), 4.0f / 255.0f) << budget << " splats";
     }
+}
+
+TEST(BudgetedRender, aBudgetThatHoldsEveryVoxelDrawsTheFullResolutionImage) {
+    const std::shared_ptr<sg::Separator> root = tornado();
+    const Rendered full = render(*root, kSize);
+    for (const std::size_t budget : {full.splats, full.splats + 1000}) {
+        splatNode(*root).maxSplats.setValue(static_cast<std::int32_t>(budget));
+        const Rendered budgeted = render(*root, kSize);
+        EXPECT_EQ(budgeted.splats, full.splats) << budget;
+        EXPECT_EQ(budgeted.image.pixels(), full.image.pixels()) << budget;
+    }
+    // One less: an octree cut within the budget.
+    splatNode(*root).maxSplats.setValue(static_cast<std::int32_t>(full.splats) - 1);
+    EXPECT_LE(render(*root, kSize).splats, full.splats - 1);
+}
+
+TEST(BudgetedRender, aFullFrameAfterACutIsAFreshFullFrame) {
+    // The node refills its last splat list: a full-resolution frame after a cut kept the cut's
+    // coarse sizes on its voxel splats (the viewer's full-quality frame after any interaction).
+    const std::shared_ptr<sg::Separator> root = tornado();
+    const Rendered fresh = render(*tornado(), kSize);
+    splatNode(*root).maxSplats.setValue(50000);
+    render(*root, kSize);
+    splatNode(*root).maxSplats.setValue(0);
+    const Rendered after = render(*root, kSize);
+    EXPECT_EQ(after.splats, fresh.splats);
+    EXPECT_EQ(after.image.pixels(), fresh.image.pixels());
 }
 
 TEST(BudgetedRender, errorThresholdIsRelativeToTheLargestClassifiedValue) {
