@@ -88,12 +88,6 @@ Splat splatOf(const Octree& octree, const NodeRef& node) {
     return splat;
 }
 
-// Where one task's part of the traversal goes before it is laid into the list.
-struct Piece {
-    std::vector<Splat> splats;
-    std::vector<SplatVector> vectors;
-};
-
 // Splits the back-to-front traversal of the cut into consecutive pieces: the nodes from which
 // `forEachBackToFrontFrom()` walks one piece each, so that the pieces' splats, end to end, are
 // the traversal's. Split nodes are replaced by their children in the traversal's order, a level
@@ -155,32 +149,30 @@ void emitSplats(const Cut& cut, const View& view, SplatList& splats,
         });
         return;
     }
-    // Pieces of the traversal on all threads, each into its own arrays, then laid end to end:
-    // the serial traversal's list for any number of threads. Many more pieces than threads, as
-    // subtrees differ in size.
+    // Pieces of the traversal on all threads: each counts its splats, the pieces are laid end to
+    // end, and each writes its splats at its offset. The serial traversal's list for any number of
+    // threads, in the list's own memory (arrays per piece, copied in, held a cut's list twice and
+    // faulted it in anew every frame). Many more pieces than threads, as subtrees differ in size.
     const std::vector<NodeRef> starts = traversalPieces(descent, 32 * threads);
-    std::vector<Piece> pieces(starts.size());
+    std::vector<std::size_t> offsets(starts.size() + 1, 0);
     tbb::parallel_for(std::size_t{0}, starts.size(), [&](std::size_t i) {
-        Piece& piece = pieces[i];
-        emit(starts[i], [&](const Splat& splat, const SplatVector& vector) {
-            piece.splats.push_back(splat);
-            if (vectors) {
-                piece.vectors.push_back(vector);
-            }
-        });
+        std::size_t count = 0;
+        detail::forEachBackToFrontFrom(descent, starts[i], [&](const NodeRef&) { ++count; });
+        offsets[i + 1] = count;
     });
-    std::vector<std::size_t> offsets(pieces.size() + 1, 0);
-    for (std::size_t i = 0; i < pieces.size(); ++i) {
-        offsets[i + 1] = offsets[i] + pieces[i].splats.size();
-    }
+    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
     splats.resize(offsets.back(), vectors != nullptr);
     Splat* const out = splats.writableSplats();
     SplatVector* const outVectors = splats.writableVectors();
-    tbb::parallel_for(std::size_t{0}, pieces.size(), [&](std::size_t i) {
-        std::copy(pieces[i].splats.begin(), pieces[i].splats.end(), out + offsets[i]);
-        if (vectors) {
-            std::copy(pieces[i].vectors.begin(), pieces[i].vectors.end(), outVectors + offsets[i]);
-        }
+    tbb::parallel_for(std::size_t{0}, starts.size(), [&](std::size_t i) {
+        std::size_t next = offsets[i];
+        emit(starts[i], [&](const Splat& splat, const SplatVector& vector) {
+            out[next] = splat;
+            if (vectors) {
+                outVectors[next] = vector;
+            }
+            ++next;
+        });
     });
 }
 
