@@ -202,6 +202,9 @@ TEST(SplatEmission, cutSplatsAreTheSerialTraversalsForAnyNumberOfThreads) {
             for (const int threads : {2, 7}) {
                 const SplatList parallel = emitWith(threads);
                 ASSERT_EQ(parallel.size(), serial.size()) << threads << " threads";
+                if (serial.isEmpty()) {
+                    continue; // the root alone, behind the eye (no data to compare)
+                }
                 EXPECT_EQ(std::memcmp(parallel.splats().data(), serial.splats().data(),
                                       serial.size() * sizeof(Splat)),
                           0)
