@@ -277,20 +277,24 @@ template <class Y> bool isZeroBetween(const detail::PiecewiseLinear<Y>& map, flo
     return true;
 }
 
+// TransferFunction::isTransparentBetween() with the table `checked`.
+bool isTransparentWith(const detail::TransferTable& checked, float minimum, float maximum,
+                       const DataScale& scale) {
+    // normalized() does not decrease with the value, so the range's ends bound every t in it.
+    const float t0 = normalized(scale.range, minimum);
+    const float t1 = normalized(scale.range, maximum);
+    if (!(t0 <= t1) || !isZeroBetween(checked.opacities, t0, t1)) {
+        return false;
+    }
+    // With no extinction, classifyWith() gives colour * emission per unit length.
+    return checked.emission / scale.unitDistance == 0.0f || isZeroBetween(checked.colors, t0, t1);
+}
+
 } // namespace
 
 bool TransferFunction::isTransparentBetween(float minimum, float maximum,
                                             const DataScale& scale) const {
-    const std::shared_ptr<const detail::TransferTable> checked = table();
-    // normalized() does not decrease with the value, so the range's ends bound every t in it.
-    const float t0 = normalized(scale.range, minimum);
-    const float t1 = normalized(scale.range, maximum);
-    if (!(t0 <= t1) || !isZeroBetween(checked->opacities, t0, t1)) {
-        return false;
-    }
-    // With no extinction, classifyWith() gives colour * emission per unit length.
-    return checked->emission / scale.unitDistance == 0.0f ||
-           isZeroBetween(checked->colors, t0, t1);
+    return isTransparentWith(*table(), minimum, maximum, scale);
 }
 
 namespace {
@@ -300,11 +304,33 @@ constexpr const char* kClassifyStep = "classifying";
 // blocks held until the grid takes them.
 constexpr std::size_t kBlocksPerBatch = 1024;
 
+// The smallest and largest of `voxels`' non-empty values (an empty range, min > max, if none).
+glm::vec2 valueRangeOf(const volume::ScalarGrid::VoxelBlock& voxels) {
+    float lowest = std::numeric_limits<float>::infinity();
+    float highest = -std::numeric_limits<float>::infinity();
+    if (voxels.nonEmpty.all()) { // a dense grid's inner block: a loop the compiler vectorizes
+        for (const float value : voxels.values) {
+            lowest = std::min(lowest, value);
+            highest = std::max(highest, value);
+        }
+        return {lowest, highest};
+    }
+    for (std::size_t v = 0; v < voxels.values.size(); ++v) {
+        if (voxels.nonEmpty[v]) {
+            lowest = std::min(lowest, voxels.values[v]);
+            highest = std::max(highest, voxels.values[v]);
+        }
+    }
+    return {lowest, highest};
+}
+
 // Classifies the non-empty voxels of `grid`'s blocks for which `isWanted(block)` holds (block
 // coordinates), telling `progress` the fraction of the blocks done; with `recording`, adds the
-// value range of every block that holds a non-empty voxel to it. The blocks are read and
-// classified in parallel (oneTBB), a batch at a time, and put into the grid in order: the same
-// grid for any number of threads.
+// value range of every block that holds a non-empty voxel to it. A block whose value range the
+// function shows nothing of is not classified voxel by voxel: it would allocate nothing (the
+// test is exact that way round), and most blocks of a thresholded dense volume are such. The
+// blocks are read and classified in parallel (oneTBB), a batch at a time, and put into the grid
+// in order: the same grid for any number of threads.
 template <class IsWanted>
 std::shared_ptr<octree::ClassifiedGrid>
 classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
@@ -333,28 +359,24 @@ classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
             }
             volume::ScalarGrid::VoxelBlock voxels;
             grid.readBlock(blocks[begin + i], voxels);
-            glm::vec2 range(std::numeric_limits<float>::infinity(),
-                            -std::numeric_limits<float>::infinity());
+            const glm::vec2 range = valueRangeOf(voxels);
+            ranges[i] = range;
+            if (!wanted || !(range.x <= range.y) ||
+                isTransparentWith(checked, range.x, range.y, scale)) {
+                return;
+            }
             ClassifiedBlock& out = batch[i];
             for (std::size_t v = 0; v < voxels.values.size(); ++v) {
                 out[v] = glm::vec4(0.0f);
                 if (!voxels.nonEmpty[v]) {
                     continue;
                 }
-                const float value = voxels.values[v];
-                if (recording != nullptr) {
-                    range = glm::vec2(std::min(range.x, value), std::max(range.y, value));
-                }
-                if (!wanted) {
-                    continue;
-                }
-                const Classification result = classifyWith(checked, value, scale);
+                const Classification result = classifyWith(checked, voxels.values[v], scale);
                 if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
                     out[v] = glm::vec4(result.color, result.extinction);
                     ++nonEmpty[i];
                 }
             }
-            ranges[i] = range;
         });
         for (std::size_t i = 0; i < count; ++i) {
             const glm::u64vec3 block(blocks[begin + i]);

@@ -48,6 +48,8 @@ public:
     bool isActive(const glm::i64vec3& index) const override;
     /// @copydoc Grid::forEachStored
     void forEachStored(const typename Grid<T>::VoxelVisitor& visit) const override;
+    /// @copydoc Grid::statistics
+    GridStatistics statistics() const override { return voxels().statistics(); }
     /// @copydoc Grid::readBlock
     void readBlock(const glm::i64vec3& block,
                    typename Grid<T>::VoxelBlock& out) const override {

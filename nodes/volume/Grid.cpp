@@ -1,15 +1,8 @@
 #include "nodes/volume/Grid.h"
 
-#include <algorithm>
-#include <limits>
+#include "nodes/volume/detail/StatisticsAccumulator.h"
 
 namespace texsplat::volume {
-namespace {
-
-double magnitudeOf(float value) { return value; }
-double magnitudeOf(const glm::vec3& value) { return glm::length(glm::dvec3(value)); }
-
-} // namespace
 
 template <typename T>
 void Grid<T>::forEachActive(const VoxelVisitor& visit) const {
@@ -21,24 +14,9 @@ void Grid<T>::forEachActive(const VoxelVisitor& visit) const {
 
 template <typename T>
 GridStatistics Grid<T>::statistics() const {
-    GridStatistics result;
-    double lowest = std::numeric_limits<double>::infinity();
-    double highest = -std::numeric_limits<double>::infinity();
-    forEachStored([&](const glm::i64vec3&, const T& value) {
-        if (!isFiniteValue(value)) {
-            ++result.nonFiniteCount;
-            return;
-        }
-        ++result.finiteCount;
-        const double magnitude = magnitudeOf(value);
-        lowest = std::min(lowest, magnitude);
-        highest = std::max(highest, magnitude);
-    });
-    if (result.finiteCount > 0) {
-        result.minimum = lowest;
-        result.maximum = highest;
-    }
-    return result;
+    detail::StatisticsAccumulator<T> statistics;
+    forEachStored([&](const glm::i64vec3&, const T& value) { statistics.add(value); });
+    return statistics.result();
 }
 
 template <typename T>

@@ -81,7 +81,8 @@ public:
     /// @brief The voxels of block `block` (inside the box's blocks) into `out`.
     virtual void readBlock(const glm::i64vec3& block, VoxelBlock& out) const = 0;
     /// @brief Value range and counts; scans the stored voxels on each call, so cache the result.
-    GridStatistics statistics() const;
+    /// By default through forEachStored(); grids that can walk their values directly do.
+    virtual GridStatistics statistics() const;
 
 protected:
     /// @brief For subclasses: a grid with this geometry whose empty voxels read as `background`.

@@ -12,6 +12,7 @@
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/SceneFraming.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "nodes/volume/DenseGrid.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Separator.h"
@@ -20,6 +21,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <vector>
 
@@ -140,6 +142,46 @@ TEST_F(TransferFunctionEdit, classifyingWithTheValueRangesGivesTheSameGrid) {
         }
     }
     EXPECT_GT(hiddenBlocks, 50u) << "the functions hide whole blocks, which are skipped";
+}
+
+// A grid's first classification (no value ranges yet) skips the blocks whose own values the
+// function hides too: a thresholded dense field, with clipped blocks at the box's far sides and
+// non-finite voxels, classifies voxel for voxel as each value alone does.
+TEST_F(TransferFunctionEdit, aFirstClassificationGivesEveryVoxelWhatItsValueClassifiesTo) {
+    volume::DenseScalarGrid grid(volume::GridGeometry(glm::i64vec3(45, 38, 41)));
+    for (std::int64_t z = 0; z < 41; ++z)
+        for (std::int64_t y = 0; y < 38; ++y)
+            for (std::int64_t x = 0; x < 45; ++x) {
+                const glm::i64vec3 index(x, y, z);
+                const double r = glm::length(glm::dvec3(index) - glm::dvec3(14, 20, 25)) / 30.0;
+                const bool hole = (x * 7 + y * 13 + z * 29) % 101 == 0;
+                grid.setValue(index, hole ? std::numeric_limits<float>::quiet_NaN()
+                                          : static_cast<float>(1.0 - r));
+            }
+    for (const auto& transfer : {ramp({0.0f, 0.7f, 0.7f, 1.0f}, {0.0f, 0.0f, 1.0f, 2.0f}),
+                                 ramp({0.0f, 0.5f, 0.9f}, {0.0f, 1.0f, 0.0f})}) {
+        octree::ValueRanges ranges(glm::u64vec3(45, 38, 41));
+        const auto classified = transfer->classifyRecording(grid, ranges);
+        const DataScale scale = transfer->dataScale(grid);
+        std::size_t visible = 0;
+        std::size_t differing = 0;
+        grid.forEachActive([&](const glm::i64vec3& index, float value) {
+            const Classification alone = transfer->classify(value, scale);
+            const glm::vec4 expected(alone.color, alone.extinction);
+            visible += expected != glm::vec4(0.0f) ? 1 : 0;
+            differing += classified->voxel(glm::u64vec3(index)) != expected ? 1 : 0;
+        });
+        EXPECT_GT(visible, 1000u);
+        EXPECT_EQ(differing, 0u);
+        EXPECT_EQ(classified->nonEmptyVoxelCount(), visible);
+        std::size_t hiddenBlocks = 0;
+        for (const bool shown : ranges.visibleBlocks([&](float low, float high) {
+                 return !transfer->isTransparentBetween(low, high, scale);
+             })) {
+            hiddenBlocks += shown ? 0 : 1;
+        }
+        EXPECT_GT(hiddenBlocks, 10u) << "whole blocks hidden, which classification skips";
+    }
 }
 
 struct Rendered {
