@@ -1,5 +1,6 @@
 #include "nodes/volume/SparseGrid.h"
 
+#include "nodes/volume/detail/StatisticsAccumulator.h"
 #include "scenegraph/Assert.h"
 
 #include <algorithm>
@@ -34,9 +35,7 @@ const typename SparseGrid<T>::Block* SparseGrid<T>::findBlock(const Location& lo
 }
 
 template <typename T>
-void SparseGrid<T>::setValue(const glm::i64vec3& index, const T& value) {
-    TEXSPLAT_ASSERT(this->geometry().contains(index), "SparseGrid::setValue(): index outside grid");
-    const Location location = locate(index);
+typename SparseGrid<T>::Block& SparseGrid<T>::blockAt(const Location& location) {
     auto [found, inserted] = mBlockByKey.try_emplace(location.key, mBlocks.size());
     if (inserted) {
         auto fresh = std::make_unique<Block>();
@@ -44,9 +43,40 @@ void SparseGrid<T>::setValue(const glm::i64vec3& index, const T& value) {
         fresh->values.fill(this->background());
         mBlocks.push_back(std::move(fresh));
     }
-    Block& target = *mBlocks[found->second];
+    return *mBlocks[found->second];
+}
+
+template <typename T>
+void SparseGrid<T>::setValue(const glm::i64vec3& index, const T& value) {
+    TEXSPLAT_ASSERT(this->geometry().contains(index), "SparseGrid::setValue(): index outside grid");
+    const Location location = locate(index);
+    Block& target = blockAt(location);
     target.values[location.slot] = value;
     target.active.set(location.slot);
+}
+
+template <typename T>
+void SparseGrid<T>::setBlock(const glm::i64vec3& first, const BlockVoxels& voxels) {
+    if (voxels.active.none()) {
+        return;
+    }
+    const glm::i64vec3 shifted = first + mBlockOffset;
+    TEXSPLAT_ASSERT(glm::all(glm::equal(shifted % kBlockSize, glm::i64vec3(0))) &&
+                        glm::all(glm::greaterThanEqual(shifted, glm::i64vec3(0))) &&
+                        glm::all(glm::lessThan(shifted, mBlockDims * kBlockSize)),
+                    "SparseGrid::setBlock(): not a block of the grid's lattice");
+    const glm::i64vec3 block = shifted / kBlockSize;
+    Block& target = blockAt({block.x + mBlockDims.x * (block.y + mBlockDims.y * block.z), first, 0});
+    if (target.active.none()) {
+        static_cast<BlockVoxels&>(target) = voxels;
+        return;
+    }
+    for (std::size_t slot = 0; slot < kBlockVoxels; ++slot) { // merging with setValue()'s
+        if (voxels.active.test(slot)) {
+            target.values[slot] = voxels.values[slot];
+        }
+    }
+    target.active |= voxels.active;
 }
 
 template <typename T>
@@ -94,6 +124,19 @@ void SparseGrid<T>::forEachStored(const typename Grid<T>::VoxelVisitor& visit) c
 }
 
 template <typename T>
+GridStatistics SparseGrid<T>::statistics() const {
+    detail::StatisticsAccumulator<T> statistics;
+    for (const auto& block : mBlocks) {
+        for (std::size_t slot = 0; slot < kBlockVoxels; ++slot) {
+            if (block->active[slot]) {
+                statistics.add(block->values[slot]);
+            }
+        }
+    }
+    return statistics.result();
+}
+
+template <typename T>
 std::vector<glm::i64vec3> SparseGrid<T>::occupiedBlocks() const {
     constexpr std::int64_t kEdge = Grid<T>::kBlockEdge;
     const glm::i64vec3 dims = this->geometry().dims();
@@ -128,7 +171,6 @@ void SparseGrid<T>::readBlock(const glm::i64vec3& block,
                               typename Grid<T>::VoxelBlock& out) const {
     constexpr std::int64_t kEdge = Grid<T>::kBlockEdge;
     static_assert(kEdge == kBlockSize, "a read block overlaps at most 2 stored blocks per axis");
-    out.nonEmpty.reset();
     const glm::i64vec3 first = block * kEdge;
     const glm::i64vec3 last = glm::min(first + kEdge, this->geometry().dims());
     // The stored blocks the read block overlaps, looked up once: (first + offset) / 8 and the
@@ -145,26 +187,36 @@ void SparseGrid<T>::readBlock(const glm::i64vec3& block,
                                      stored * kBlockSize - mBlockOffset, 0})
                         : nullptr;
             }
-    glm::i64vec3 index;
-    for (index.z = first.z; index.z < last.z; ++index.z)
-        for (index.y = first.y; index.y < last.y; ++index.y)
-            for (index.x = first.x; index.x < last.x; ++index.x) {
-                const glm::i64vec3 shifted = index + mBlockOffset;
-                const glm::i64vec3 which = shifted / kBlockSize - base;
-                const Block* stored = overlapped[which.z][which.y][which.x];
-                if (stored == nullptr)
+    // Read-block coordinate i lies in stored block (i + offset) / 8 (0 or 1 of `overlapped`), at
+    // (i + offset) % 8 there. The flags of a z slice gather in a word, as for dense grids.
+    const glm::i64vec3 extent = last - first;
+    std::bitset<512> nonEmpty;
+    for (std::int64_t z = 0; z < extent.z; ++z) {
+        const std::int64_t sz = z + mBlockOffset.z;
+        const std::int64_t wz = sz / kBlockSize;
+        std::uint64_t slice = 0;
+        for (std::int64_t y = 0; y < extent.y; ++y) {
+            const std::int64_t sy = y + mBlockOffset.y;
+            const std::int64_t wy = sy / kBlockSize;
+            const std::int64_t storedRow =
+                kBlockSize * ((sy - wy * kBlockSize) + kBlockSize * (sz - wz * kBlockSize));
+            for (std::int64_t x = 0; x < extent.x; ++x) {
+                const std::int64_t sx = x + mBlockOffset.x;
+                const std::int64_t wx = sx / kBlockSize;
+                const Block* stored = overlapped[wz][wy][wx];
+                const auto slot = static_cast<std::size_t>(storedRow + sx - wx * kBlockSize);
+                if (stored == nullptr || !stored->active[slot] ||
+                    !isFiniteValue(stored->values[slot]))
                     continue;
-                const glm::i64vec3 local = shifted % kBlockSize;
-                const auto slot =
-                    static_cast<std::size_t>(local.x + kBlockSize * (local.y + kBlockSize * local.z));
-                if (!stored->active.test(slot) || !isFiniteValue(stored->values[slot]))
-                    continue;
-                const glm::i64vec3 inRead = index - first;
-                const auto target =
-                    static_cast<std::size_t>(inRead.x + kEdge * (inRead.y + kEdge * inRead.z));
-                out.values[target] = stored->values[slot];
-                out.nonEmpty.set(target);
+                const auto inSlice = static_cast<std::size_t>(x + kEdge * y);
+                out.values[inSlice + static_cast<std::size_t>(kEdge * kEdge * z)] =
+                    stored->values[slot];
+                slice |= std::uint64_t{1} << inSlice;
             }
+        }
+        nonEmpty |= std::bitset<512>(slice) << static_cast<std::size_t>(kEdge * kEdge * z);
+    }
+    out.nonEmpty = nonEmpty;
 }
 
 namespace {

@@ -30,6 +30,16 @@ public:
 
     /// @brief Stores `value` in voxel `index` (inside the grid) and makes it active.
     void setValue(const glm::i64vec3& index, const T& value);
+    /// @brief The voxels of one block, x fastest, and which of them are active.
+    struct BlockVoxels {
+        std::array<T, 512> values;
+        std::bitset<512> active;
+    };
+    /// @brief setValue() for the active voxels of a whole block at once (a reader's bulk copy):
+    /// the block whose voxel (0,0,0) is `first`, a corner of the block lattice (first +
+    /// blockOffset() a multiple of kBlockSize; it may lie outside the grid). Its active voxels
+    /// must lie inside the grid.
+    void setBlock(const glm::i64vec3& first, const BlockVoxels& voxels);
     /// @brief The offset passed to the constructor.
     const glm::i64vec3& blockOffset() const { return mBlockOffset; }
     /// @brief Number of allocated blocks.
@@ -48,6 +58,8 @@ public:
     std::vector<glm::i64vec3> occupiedBlocks() const override;
     /// @copydoc Grid::readBlock
     void readBlock(const glm::i64vec3& block, typename Grid<T>::VoxelBlock& out) const override;
+    /// @copydoc Grid::statistics
+    GridStatistics statistics() const override;
     /// @copydoc Grid::memoryBytes
     std::size_t memoryBytes() const override;
     /// @brief The active voxels (activeVoxelCount()).
@@ -61,10 +73,8 @@ public:
 
 private:
     static constexpr std::size_t kBlockVoxels = 512;
-    struct Block {
+    struct Block : BlockVoxels {
         glm::i64vec3 first; // grid index of the block's voxel (0,0,0); may be negative
-        std::bitset<kBlockVoxels> active;
-        std::array<T, kBlockVoxels> values;
     };
 
     struct Location {
@@ -75,6 +85,7 @@ private:
 
     Location locate(const glm::i64vec3& index) const;
     const Block* findBlock(const Location& location) const;
+    Block& blockAt(const Location& location); // allocated if it is not yet
 
     glm::i64vec3 mBlockOffset;
     glm::i64vec3 mBlockDims;

@@ -233,11 +233,36 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
     const auto total = static_cast<double>(active);
     const std::string message = "copying grid '" + gridName + "'";
     std::int64_t copied = 0;
+    std::int64_t reported = 0;
+    const auto count = [&](std::int64_t voxels) {
+        copied += voxels;
+        if (copied - reported >= kProgressInterval) {
+            reported = copied;
+            reportProgress(progress, path, double(copied) / total, message);
+        }
+    };
     reportProgress(progress, path, 0.0, message);
-    for (auto value = source.tree().cbeginValueOn(); value; ++value) {
+    // Leaves a block at a time. OpenVDB orders a leaf's voxels z fastest, a block x fastest.
+    typename SparseGrid<Value>::BlockVoxels block;
+    for (auto leaf = source.tree().cbeginLeaf(); leaf; ++leaf) {
+        block.active.reset();
+        for (auto on = leaf->cbeginValueOn(); on; ++on) {
+            const openvdb::Index n = on.pos();
+            const std::size_t slot = ((n >> 6U) & 7U) + 8 * (((n >> 3U) & 7U) + 8 * (n & 7U));
+            block.values[slot] = toGlm(*on);
+            block.active.set(slot);
+        }
+        const openvdb::Coord origin = leaf->origin();
+        grid->setBlock(glm::i64vec3(origin.x(), origin.y(), origin.z()) - low, block);
+        count(static_cast<std::int64_t>(leaf->onVoxelCount()));
+    }
+    // Then active tiles, voxel by voxel: the iterator stops above the leaves.
+    auto tile = source.tree().cbeginValueOn();
+    tile.setMaxDepth(tile.getLeafDepth() - 1);
+    for (; tile; ++tile) {
         openvdb::CoordBBox voxels;
-        value.getBoundingBox(voxels); // one voxel, or the extent of an active tile
-        const Value stored = toGlm(*value);
+        tile.getBoundingBox(voxels);
+        const Value stored = toGlm(*tile);
         // In 64 bits: OpenVDB's box iterator steps past the largest int to the smallest, and
         // goes on, for a voxel at index 2^31 - 1.
         const glm::i64vec3 first(voxels.min().x(), voxels.min().y(), voxels.min().z());
@@ -246,8 +271,7 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
             for (std::int64_t y = first.y; y <= last.y; ++y)
                 for (std::int64_t z = first.z; z <= last.z; ++z) {
                     grid->setValue(glm::i64vec3(x, y, z) - low, stored);
-                    if (++copied % kProgressInterval == 0)
-                        reportProgress(progress, path, double(copied) / total, message);
+                    count(1);
                 }
     }
     reportProgress(progress, path, 1.0, message);

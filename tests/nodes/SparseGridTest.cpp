@@ -44,6 +44,38 @@ TEST(SparseGrid, visitsExactlyTheActiveVoxels) {
     EXPECT_EQ(statistics.nonFiniteCount, 1);
 }
 
+TEST(SparseGrid, aBlockSetAtOnceHoldsWhatItsVoxelsSetOneByOneHold) {
+    // Offset blocks: the block at lattice corner (5, -2, 1) holds voxels 5..12, 0..5, 1..8.
+    const glm::i64vec3 offset(3, 2, 7);
+    const glm::i64vec3 first(5, -2, 1);
+    SparseScalarGrid whole(GridGeometry({20, 20, 20}), -1.0f, offset);
+    SparseScalarGrid single(GridGeometry({20, 20, 20}), -1.0f, offset);
+    whole.setValue({6, 0, 1}, 42.0f); // in the same block: a block set after it merges
+    single.setValue({6, 0, 1}, 42.0f);
+    SparseScalarGrid::BlockVoxels voxels;
+    voxels.values.fill(std::numeric_limits<float>::quiet_NaN()); // inactive slots: not stored
+    for (std::size_t slot = 0; slot < 512; ++slot) {
+        const glm::i64vec3 index =
+            first + glm::i64vec3(slot % 8, (slot / 8) % 8, slot / 64);
+        if (slot % 3 == 0 && index.y >= 0) {
+            voxels.values[slot] = static_cast<float>(slot);
+            voxels.active.set(slot);
+            single.setValue(index, static_cast<float>(slot));
+        }
+    }
+    whole.setBlock(first, voxels);
+    whole.setBlock({5, 14, 9}, SparseScalarGrid::BlockVoxels{}); // nothing active: no block
+    EXPECT_EQ(whole.blockCount(), single.blockCount());
+    EXPECT_EQ(whole.activeVoxelCount(), single.activeVoxelCount());
+    for (std::int64_t z = 0; z < 20; ++z)
+        for (std::int64_t y = 0; y < 20; ++y)
+            for (std::int64_t x = 0; x < 20; ++x) {
+                EXPECT_EQ(whole.value({x, y, z}), single.value({x, y, z}));
+                EXPECT_EQ(whole.isActive({x, y, z}), single.isActive({x, y, z}));
+            }
+    EXPECT_EQ(whole.value({6, 0, 1}), 42.0f) << "kept: its slot, 17, is not active in the block";
+}
+
 TEST(SparseGrid, memoryIsProportionalToActiveBlocks) {
     // A 2^36-voxel grid (256 GiB dense) holding one line of 1000 voxels.
     SparseScalarGrid grid(GridGeometry({4096, 4096, 4096}));

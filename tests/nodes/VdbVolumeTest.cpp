@@ -178,6 +178,41 @@ TEST(VdbVolume, sparseGridsStaySparseInMemory) {
               path + ": loading cancelled");
 }
 
+// Leaves are copied a block at a time (OpenVDB orders a leaf z fastest, a block x fastest), with
+// the active bounding box not on a leaf boundary: every active voxel, and only those, at its
+// place, compared with OpenVDB's own iteration.
+TEST(VdbVolume, copiesEveryActiveVoxelOfItsLeavesInPlace) {
+    openvdb::initialize();
+    auto source = openvdb::FloatGrid::create(-1.0f);
+    source->setName("scattered");
+    auto accessor = source->getAccessor();
+    const auto valueAt = [](const openvdb::Coord& c) {
+        return static_cast<float>(c.x() + 64 * c.y() + 4096 * c.z());
+    };
+    for (int i = 0; i < 3000; ++i) { // a fixed scatter, 3 to 43 along x, 2 to 40 along y, z
+        const openvdb::Coord c(3 + (i * 7) % 41, 2 + (i * 13) % 39, -5 + (i * 29) % 45);
+        accessor.setValue(c, valueAt(c));
+    }
+    accessor.setValueOff(openvdb::Coord(3 + 7 % 41, 2 + 13 % 39, -5 + 29 % 45)); // stored, off
+    const std::string path = testPath("scattered.vdb");
+    openvdb::io::File(path).write({source});
+
+    const auto grid = std::get<ScalarGridPtr>(readVdbGrid(path, "scattered"));
+    const openvdb::CoordBBox box = source->evalActiveVoxelBoundingBox();
+    const glm::i64vec3 low(box.min().x(), box.min().y(), box.min().z());
+    std::int64_t active = 0;
+    std::int64_t misplaced = 0;
+    for (auto on = source->tree().cbeginValueOn(); on; ++on) {
+        const openvdb::Coord c = on.getCoord();
+        const glm::i64vec3 index = glm::i64vec3(c.x(), c.y(), c.z()) - low;
+        ++active;
+        misplaced += grid->isActive(index) && grid->value(index) == *on ? 0 : 1;
+    }
+    EXPECT_GT(active, 1500);
+    EXPECT_EQ(misplaced, 0);
+    EXPECT_EQ(grid->statistics().finiteCount, active) << "no voxel active that OpenVDB's is not";
+}
+
 TEST(VdbVolume, reportsWrongNamesTypesAndTransforms) {
     const std::string path = writeTestFile();
     EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "pressure"); }),
