@@ -217,8 +217,11 @@ private:
         return StorageIndex{slot} * kBlockVoxels + offsetInBlock(ijk);
     }
 
-    // The block of `ijk`, allocated on first use.
+    // The block of `ijk`, allocated (empty) on first use.
     Block& block(glm::u64vec3 ijk);
+    // A new block (not allocated yet) holding `voxels`.
+    Block& allocateBlock(glm::u64vec3 coordinates,
+                         const std::array<glm::vec4, kBlockVoxels>& voxels);
 
     // Throws DataError unless every channel of voxel `ijk`'s `value` is finite and >= 0.
     static void checkVoxel(glm::u64vec3 ijk, glm::vec4 value);

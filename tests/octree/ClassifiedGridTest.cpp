@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <array>
-
 #include <cmath>
 #include <limits>
 #include <string>
@@ -91,7 +90,19 @@ TEST(ClassifiedGrid, aWholeBlockIsSetAsItsVoxelsWouldBe) {
     voxels[1 + 8 * (2 + 8 * 3)] = glm::vec4(0.0f, -1.0f, 0.0f, 0.0f); // voxel (1, 2, 3)
     EXPECT_EQ(errorOf([&] { grid.setBlock({1, 0, 1}, voxels); }),
               "ClassifiedGrid: voxel (9, 2, 11): color must be finite and >= 0, got -1");
+    voxels[1 + 8 * (2 + 8 * 3)] = glm::vec4(0.0f, 0.0f, 0.0f, std::nanf(""));
+    EXPECT_EQ(errorOf([&] { grid.setBlock({1, 0, 1}, voxels); }),
+              "ClassifiedGrid: voxel (9, 2, 11): extinction must be finite and >= 0, got nan");
     EXPECT_EQ(grid.blockCount(), 1u);
+    // The extremes count as non-empty: a denormal in one channel, FLT_MAX in all four (their
+    // sum overflows); -0 is empty.
+    std::array<glm::vec4, ClassifiedGrid::kBlockVoxels> extremes{};
+    extremes[4] = glm::vec4(0.0f, std::numeric_limits<float>::denorm_min(), 0.0f, 0.0f);
+    extremes[5] = glm::vec4(std::numeric_limits<float>::max());
+    extremes[6] = glm::vec4(-0.0f);
+    grid.setBlock({1, 0, 0}, extremes);
+    EXPECT_EQ(grid.blockCount(), 2u);
+    EXPECT_EQ(grid.nonEmptyVoxelCount(), 1u + 2u);
 }
 
 TEST(ClassifiedGrid, vectorsAreThereOnlyWhenEnabledAndMustBeFinite) {
