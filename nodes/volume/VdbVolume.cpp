@@ -256,22 +256,25 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
         grid->setBlock(glm::i64vec3(origin.x(), origin.y(), origin.z()) - low, block);
         count(static_cast<std::int64_t>(leaf->onVoxelCount()));
     }
-    // Then active tiles, voxel by voxel: the iterator stops above the leaves.
+    // Then active tiles (the iterator stops above the leaves), each the size of whole leaves
+    // and on their boundaries: a block of its value at a time. A file of 16 KB may hold 50 M
+    // voxels of tiles (fuzz_vdb_reader); voxel by voxel that took 22 s under ASan.
+    block.active.set();
     auto tile = source.tree().cbeginValueOn();
     tile.setMaxDepth(tile.getLeafDepth() - 1);
     for (; tile; ++tile) {
         openvdb::CoordBBox voxels;
         tile.getBoundingBox(voxels);
-        const Value stored = toGlm(*tile);
+        block.values.fill(toGlm(*tile));
         // In 64 bits: OpenVDB's box iterator steps past the largest int to the smallest, and
         // goes on, for a voxel at index 2^31 - 1.
         const glm::i64vec3 first(voxels.min().x(), voxels.min().y(), voxels.min().z());
         const glm::i64vec3 last(voxels.max().x(), voxels.max().y(), voxels.max().z());
-        for (std::int64_t x = first.x; x <= last.x; ++x)
-            for (std::int64_t y = first.y; y <= last.y; ++y)
-                for (std::int64_t z = first.z; z <= last.z; ++z) {
-                    grid->setValue(glm::i64vec3(x, y, z) - low, stored);
-                    count(1);
+        for (std::int64_t z = first.z; z <= last.z; z += kBlock)
+            for (std::int64_t y = first.y; y <= last.y; y += kBlock)
+                for (std::int64_t x = first.x; x <= last.x; x += kBlock) {
+                    grid->setBlock(glm::i64vec3(x, y, z) - low, block);
+                    count(kBlock * kBlock * kBlock);
                 }
     }
     reportProgress(progress, path, 1.0, message);

@@ -337,6 +337,32 @@ TEST(VdbTree, filesOfFormatsBefore222AreRefused) {
                      "check before OpenVDB reads it; write the file again with a newer OpenVDB");
 }
 
+TEST(VdbTree, theUuidIsReadAsOpenVdbReadsItWhitespaceAndAll) {
+    // Found by fuzz_vdb_reader (scripts/fuzz-long.sh, seed 20261127): OpenVDB reads the UUID as
+    // text and skips whitespace in it, so a space there moved everything after it by a byte from
+    // where the walk read it, and OpenVDB allocated 1.4 GB for a grid name. A stream has no
+    // positions to move: with whitespace in its UUID it is a file OpenVDB reads.
+    constexpr std::size_t kUuidAt = 8 + 4 + 8 + 1; // magic, format, library, the offsets flag
+    const std::string path = testPath("spaced.vdb");
+    {
+        std::ofstream out(path, std::ios::binary);
+        openvdb::io::Stream(out).write(openvdb::GridPtrVec{denseLeaf()});
+    }
+    std::string bytes = contents(path);
+    ASSERT_EQ(bytes[kUuidAt + 8], '-');
+    bytes.insert(kUuidAt + 5, " \n\t");
+    bytes.insert(kUuidAt, "\r\r");
+    const std::string spaced = save("spaced.vdb", bytes);
+    EXPECT_EQ(readEveryGrid(spaced), "no IoError");
+    const auto grid = std::get<ScalarGridPtr>(readVdbGrid(spaced, "density"));
+    EXPECT_EQ(grid->statistics().finiteCount, 512);
+    // What Boost's UUID reading fails on, OpenVDB would go on reading from a failed stream.
+    bytes[kUuidAt + 2 + 12] = 'g';
+    const std::string bad = save("bad.vdb", bytes);
+    EXPECT_EQ(readEveryGrid(bad), bad + ": truncated or corrupt VDB file: the file's UUID at "
+                                        "byte 21 is not one (8-4-4-4-12 hex digits)");
+}
+
 TEST(VdbTree, aStreamedFileWithAGridWhoseTreeIsNotCheckedIsRefused) {
     openvdb::initialize();
     auto mask = openvdb::BoolGrid::create(false);

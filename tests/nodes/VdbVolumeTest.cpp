@@ -213,6 +213,30 @@ TEST(VdbVolume, copiesEveryActiveVoxelOfItsLeavesInPlace) {
     EXPECT_EQ(grid->statistics().finiteCount, active) << "no voxel active that OpenVDB's is not";
 }
 
+TEST(VdbVolume, aTileOfManyBlocksBecomesThoseBlocks) {
+    openvdb::initialize();
+    auto source = openvdb::FloatGrid::create(0.0f);
+    source->setName("tiled");
+    source->tree().addTile(2, openvdb::Coord(128, 0, -128), 3.0f, true); // 128^3 voxels
+    source->tree().setValue(openvdb::Coord(100, 5, 7), 2.0f);            // and one leaf's voxel
+    const std::string path = testPath("tiled.vdb");
+    openvdb::io::File(path).write({source});
+
+    const auto grid = std::get<ScalarGridPtr>(readVdbGrid(path, "tiled"));
+    const auto& sparse = dynamic_cast<const SparseScalarGrid&>(*grid);
+    EXPECT_EQ(sparse.activeVoxelCount(), 128 * 128 * 128 + 1);
+    EXPECT_EQ(sparse.blockCount(), 16u * 16u * 16u + 1u);
+    // Voxel (0, 0, 0) is OpenVDB's (100, 0, -128).
+    const glm::i64vec3 low(100, 0, -128);
+    for (const glm::i64vec3 corner : {glm::i64vec3(128, 0, -128), glm::i64vec3(255, 127, -1),
+                                      glm::i64vec3(200, 64, -64)}) {
+        EXPECT_TRUE(grid->isActive(corner - low));
+        EXPECT_EQ(grid->value(corner - low), 3.0f);
+    }
+    EXPECT_FALSE(grid->isActive(glm::i64vec3(127, 0, -128) - low));
+    EXPECT_EQ(grid->value(glm::i64vec3(100, 5, 7) - low), 2.0f);
+}
+
 TEST(VdbVolume, reportsWrongNamesTypesAndTransforms) {
     const std::string path = writeTestFile();
     EXPECT_EQ(errorOf<DataError>([&] { readVdbGrid(path, "pressure"); }),

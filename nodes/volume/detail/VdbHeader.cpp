@@ -89,7 +89,7 @@ public:
         mFile.skip(8, "the library version");
         const bool hasGridOffsets = mFile.littleEndian(1, "the grid offsets flag") != 0;
         mTrees.streamed = !hasGridOffsets;
-        mFile.skip(kUuidLength, "the file's UUID");
+        uuid();
         metadata("the file's metadata");
         const std::uint64_t grids = mFile.littleEndian(4, "the grid count");
         mFile.sized(grids, 3 * 4 + 3 * 8, "the grid descriptors");
@@ -188,6 +188,27 @@ private:
         VdbTreeSize& kept = mTrees.grids[name];
         if (tree.bytes > kept.bytes)
             kept = tree;
+    }
+
+    // The file's UUID, which OpenVDB reads as text (`is >> uuid`, Boost's formatted input): 32
+    // hex digits and 4 hyphens, 8-4-4-4-12, each after any whitespace, which it skips. A walk
+    // that took the 36 bytes a writer puts there would read the rest one byte off OpenVDB's where
+    // a damaged UUID holds a space (a string length read from the wrong bytes: OpenVDB allocated
+    // 1.4 GB, found by fuzz_vdb_reader). What Boost would fail on, OpenVDB would then read from
+    // a failed stream: refused here instead.
+    void uuid() {
+        const std::uint64_t start = mFile.offset();
+        for (std::size_t i = 0; i < kUuidLength; ++i) {
+            char c = 0;
+            do {
+                c = static_cast<char>(mFile.littleEndian(1, "the file's UUID"));
+            } while (c == ' ' || (c >= '\t' && c <= '\r'));
+            const bool hyphen = i == 8 || i == 13 || i == 18 || i == 23;
+            const bool hex = (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f') || (c >= 'A' && c <= 'F');
+            if (hyphen ? c != '-' : !hex)
+                mFile.corrupt("the file's UUID at byte " + std::to_string(start) +
+                              " is not one (8-4-4-4-12 hex digits)");
+        }
     }
 
     // A string: its length (4 bytes), then its bytes.
