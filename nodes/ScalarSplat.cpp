@@ -170,8 +170,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                                              errorThreshold.value())
                               : octree::Cut(mCache->octree());
         if (maxSplats.value() > 0) {
-            cut = octree::Refiner::refineAtOnce(std::move(cut), order,
-                                                static_cast<std::uint64_t>(maxSplats.value()));
+            cut = octree::Refiner::cutOfBudget(std::move(cut), order,
+                                               static_cast<std::uint64_t>(maxSplats.value()));
         }
         octree::emitSplats(cut, order, *splats, emission);
         // The traversal keeps subtrees contiguous: where the eye lies on a split plane the two

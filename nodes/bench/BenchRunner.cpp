@@ -93,8 +93,8 @@ void emitFor(SplatSource& source, std::size_t maxSplats, octree::SplatList& spla
     if (!source.octree) {
         source.octree.emplace(source.classified);
     }
-    const octree::Cut cut = octree::Refiner::refineAtOnce(octree::Cut(*source.octree), order,
-                                                          maxSplats);
+    const octree::Cut cut = octree::Refiner::cutOfBudget(octree::Cut(*source.octree), order,
+                                                         maxSplats);
     octree::emitSplats(cut, order, splats);
     octree::sortByDepth(splats, order); // as ScalarSplat draws a cut
 }

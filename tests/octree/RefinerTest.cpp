@@ -190,7 +190,8 @@ std::shared_ptr<ClassifiedGrid> symmetricGrid(glm::u64vec3 dims) {
     return grid;
 }
 
-// Every budget from 0 to past the finest cut (or a spread of them), from @p start.
+// Every budget from 0 to past the finest cut (or a spread of them), from @p start: the cut at
+// once and the cheaper way's are the queue's.
 void expectRefineAtOnceLikeTheQueue(const Cut& start, const View& view, const std::string& what) {
     Refiner unlimited(start, view);
     unlimited.refine(RefineBudget{});
@@ -202,6 +203,9 @@ void expectRefineAtOnceLikeTheQueue(const Cut& start, const View& view, const st
         const Cut atOnce = Refiner::refineAtOnce(start, view, budget);
         ASSERT_TRUE(atOnce == queue.cut()) << what << ", budget " << budget;
         ASSERT_EQ(atOnce.splatCount(), queue.cut().splatCount()) << what << ", budget " << budget;
+        // Whichever way it takes (the queue below a quarter of the records, else at once).
+        ASSERT_TRUE(Refiner::cutOfBudget(start, view, budget) == queue.cut())
+            << what << ", budget " << budget;
     }
 }
 
