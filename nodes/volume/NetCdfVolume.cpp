@@ -1,6 +1,7 @@
 #include "nodes/volume/NetCdfVolume.h"
 
 #include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/detail/Hdf5GlobalHeaps.h"
 #include "nodes/volume/detail/NetCdfHeader.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
@@ -69,6 +70,7 @@ public:
         // The same messages as every reader for missing files, folders and FIFOs.
         static_cast<void>(detail::openForReading(path));
         detail::checkNetCdfHeaderSizes(path);
+        detail::checkHdf5GlobalHeaps(path);
         const int status = nc_open(path.c_str(), NC_NOWRITE, &mId);
         if (status == NC_ENOTNC)
             throw ParseError(path + ": not a NetCDF file: expected NetCDF classic, 64-bit offset, "

@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -293,6 +294,40 @@ data:
                          bytesText(limit) +
                          "; use a volume of lower resolution, or a larger --memory-limit");
     EXPECT_NO_THROW(readNetCdfVariable(path, "v")); // under the limit of this machine
+}
+
+TEST(NetCdfVolume, aGlobalHeapThatHdf5WouldReadForeverIsRefused) {
+    // Found by fuzz_netcdf_reader (scripts/fuzz-long.sh, seed 20261127): HDF5 1.10 walks a global
+    // heap collection object by object, stepping over the free space by its size; a free-space
+    // object of 0 bytes kept `texsplat info` on a 7 KB file busy for good. ncgen writes the
+    // coordinate variables' dimension scales' references into such a collection.
+    REQUIRE_NCGEN();
+    const std::string written = generate("heap", kRamp, "nc4");
+    std::ifstream in(written, std::ios::binary);
+    std::string bytes{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    EXPECT_NO_THROW(readNetCdfVariable(written, "v"));
+    const std::size_t collection = bytes.find("GCOL");
+    ASSERT_NE(collection, std::string::npos);
+    // Objects (lengths of 8 bytes): an index of 2 bytes, a count of 2, 4 reserved, a size of 8,
+    // then the data padded to 8; the free space is the object of index 0.
+    const auto field = [&](std::size_t at, int count) {
+        std::uint64_t value = 0;
+        for (int i = count - 1; i >= 0; --i)
+            value = (value << 8U) | static_cast<unsigned char>(bytes[at + std::size_t(i)]);
+        return value;
+    };
+    std::size_t object = collection + 16;
+    while (field(object, 2) != 0) {
+        object += 16 + (field(object + 8, 8) + 7) / 8 * 8;
+        ASSERT_LT(object + 16, collection + field(collection + 8, 8)) << "no free space";
+    }
+    bytes.replace(object + 8, 8, std::string(8, '\0'));
+    const std::string damaged = testPath("heap-damaged.nc");
+    std::ofstream(damaged, std::ios::binary) << bytes;
+    EXPECT_EQ(errorOf<IoError>([&] { listNetCdfVariables(damaged); }),
+              damaged + ": truncated or corrupt NetCDF file: the HDF5 global heap at byte " +
+                  std::to_string(collection) + " has a free-space object of 0 bytes at byte " +
+                  std::to_string(object) + ", which HDF5 1.10 reads forever");
 }
 
 TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {
