@@ -15,12 +15,12 @@ foreach(folder scenegraph nodes octree)
 endforeach()
 # Private headers that public ones include (field value traits behind SFFloat & co., the sensor
 # queue's lanes, the voxel access DenseGrid and ExternalGrid share and its statistics, the child
-# count behind Octree::child()): installed so the public
+# count behind Octree::child(), the CPU backend's cache-line allocator): installed so the public
 # headers compile, still namespace detail. The installed-package test compiles every installed
 # header, so a missing one fails there.
 foreach(header scenegraph/fields/detail/ValueTraits.h scenegraph/sensors/detail/QueueLane.h
                nodes/volume/detail/ContiguousVoxels.h nodes/volume/detail/StatisticsAccumulator.h
-               octree/detail/BitCount.h)
+               octree/detail/BitCount.h nodes/render/cpu/detail/CacheLineAllocator.h)
     get_filename_component(folder ${header} DIRECTORY)
     install(FILES ${PROJECT_SOURCE_DIR}/${header}
             DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/texsplat/${folder})

@@ -6,9 +6,12 @@
 // in perspective (a homography per splat), squares about 8 pixels from the centre; blob128 in
 // perspective, about 4 pixels, where a splat's rows are short for the SIMD vectors; and the
 // issue's measure, Marschner–Lobb 128³, orthographic (boxes 9–10 pixels wide) and in
-// perspective (mostly 7–8). Both paths composite all rows on one thread into the same planes
+// perspective (mostly 7–8). Orthographic splats are stamped, as CpuRenderer draws them
+// (FootprintStamps: the footprint tabulated per sub-pixel phase), or looked up exactly per pixel
+// (the fourth argument 0). Both paths composite all rows on one thread into the same planes
 // again and again (the work per pixel does not depend on what the planes hold); fragments are
-// the pixels inside a square, counted once by the scalar loop.
+// the pixels inside a square (stamped: where the footprint is not 0), counted once by the
+// scalar loop.
 #include "nodes/render/cpu/SplatSpans.h"
 
 #include "tests/nodes/SplatSpansReference.h"
@@ -20,6 +23,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace {
@@ -36,31 +40,36 @@ struct TimedWorkload {
     std::uint64_t fragments = 0;
 };
 
-const TimedWorkload& timedWorkload(const std::string& dataset, WorkloadCamera camera) {
-    static std::map<std::pair<std::string, WorkloadCamera>, TimedWorkload> workloads;
-    auto found = workloads.find({dataset, camera});
+const TimedWorkload& timedWorkload(const std::string& dataset, WorkloadCamera camera,
+                                   bool stamped) {
+    static std::map<std::tuple<std::string, WorkloadCamera, bool>, TimedWorkload> workloads;
+    auto found = workloads.find({dataset, camera, stamped});
     if (found == workloads.end()) {
         TimedWorkload timed;
-        timed.workload = texsplat::test::compositeWorkload(dataset, "texture", camera, kImageSize);
+        timed.workload = texsplat::test::compositeWorkload(dataset, "texture", camera, kImageSize,
+                                                           true, stamped);
         ColorPlanes planes(kImageSize, kImageSize, glm::vec4(0.0f), false);
         timed.fragments = texsplat::test::compositeSplatsScalar(
             timed.workload.splats.data(), timed.workload.splats.size(), *timed.workload.sampler,
-            planes, 0, kImageSize);
-        found = workloads.emplace(std::make_pair(dataset, camera), std::move(timed)).first;
+            timed.workload.stamps(), planes, 0, kImageSize);
+        found = workloads.emplace(std::make_tuple(dataset, camera, stamped), std::move(timed))
+                    .first;
     }
     return found->second;
 }
 
 // Times `composite` (`path` names it in the label) over the workload of the benchmark's
-// arguments: the camera (0: orthographic, 1: perspective), the resolution and the dataset (0: the
-// blob, 1: Marschner–Lobb, the measure); reports fragments per second.
+// arguments: the camera (0: orthographic, 1: perspective), the resolution, the dataset (0: the
+// blob, 1: Marschner–Lobb, the measure) and whether orthographic splats are stamped;
+// reports fragments per second.
 template <typename Composite>
 void timeComposite(benchmark::State& state, const Composite& composite, const std::string& path) {
     const WorkloadCamera camera =
         state.range(0) == 0 ? WorkloadCamera::Orthographic : WorkloadCamera::Perspective;
     const std::string dataset =
         (state.range(2) == 0 ? "blob" : "ml") + std::to_string(state.range(1));
-    const TimedWorkload& timed = timedWorkload(dataset, camera);
+    const bool stamped = state.range(3) != 0;
+    const TimedWorkload& timed = timedWorkload(dataset, camera, stamped);
     const CompositeWorkload& workload = timed.workload;
     ColorPlanes planes(workload.width, workload.height, glm::vec4(0.0f), false);
     for (auto _ : state) {
@@ -70,12 +79,25 @@ void timeComposite(benchmark::State& state, const Composite& composite, const st
     }
     const auto fragments = static_cast<double>(timed.fragments);
     state.SetLabel(dataset +
-                   (camera == WorkloadCamera::Orthographic ? " orthographic, " : " perspective, ") +
+                   (camera == WorkloadCamera::Orthographic
+                        ? (stamped ? " orthographic, stamped, " : " orthographic, exact, ")
+                        : " perspective, ") +
                    path);
     state.counters["fragments/s"] =
         benchmark::Counter(fragments, benchmark::Counter::kIsIterationInvariantRate);
     state.counters["splats"] = static_cast<double>(workload.splats.size());
     state.counters["fragments/splat"] = fragments / static_cast<double>(workload.splats.size());
+}
+
+// The workloads of both paths (timeComposite's arguments).
+void workloads(benchmark::internal::Benchmark* benchmark) {
+    benchmark->Args({0, 64, 0, 1})
+        ->Args({0, 64, 0, 0})
+        ->Args({1, 64, 0, 0})
+        ->Args({1, 128, 0, 0})
+        ->Args({0, 128, 1, 1})
+        ->Args({0, 128, 1, 0})
+        ->Args({1, 128, 1, 0});
 }
 
 void CompositeSplatsSimd(benchmark::State& state) {
@@ -84,17 +106,13 @@ void CompositeSplatsSimd(benchmark::State& state) {
         [](const CompositeWorkload& workload, ColorPlanes& planes) {
             texsplat::render::cpu::compositeSplats(workload.splats.data(), workload.rows.data(),
                                                    workload.splats.size(),
-                                                   workload.sampler.get(), nullptr, planes, 0,
-                                                   workload.height);
+                                                   workload.sampler.get(), workload.stamps(),
+                                                   nullptr, planes, 0, workload.height);
         },
         texsplat::render::cpu::compositeTarget());
 }
 BENCHMARK(CompositeSplatsSimd)
-    ->Args({0, 64, 0})
-    ->Args({1, 64, 0})
-    ->Args({1, 128, 0})
-    ->Args({0, 128, 1})
-    ->Args({1, 128, 1})
+    ->Apply(workloads)
     ->Unit(benchmark::kMillisecond);
 
 // Baseline: the scalar reference, one pixel at a time, std::expm1 for every fragment.
@@ -103,16 +121,13 @@ void CompositeSplatsBaselineScalar(benchmark::State& state) {
         state,
         [](const CompositeWorkload& workload, ColorPlanes& planes) {
             texsplat::test::compositeSplatsScalar(workload.splats.data(), workload.splats.size(),
-                                                  *workload.sampler, planes, 0, workload.height);
+                                                  *workload.sampler, workload.stamps(), planes, 0,
+                                                  workload.height);
         },
         "scalar");
 }
 BENCHMARK(CompositeSplatsBaselineScalar)
-    ->Args({0, 64, 0})
-    ->Args({1, 64, 0})
-    ->Args({1, 128, 0})
-    ->Args({0, 128, 1})
-    ->Args({1, 128, 1})
+    ->Apply(workloads)
     ->Unit(benchmark::kMillisecond);
 TEXSPLAT_BENCHMARK_BASELINE(CompositeSplatsSimd, CompositeSplatsBaselineScalar);
 

@@ -31,6 +31,8 @@
 
 #include <cstring>
 #include <fstream>
+#include <utility>
+#include <vector>
 
 namespace texsplat::nodes {
 namespace {
@@ -213,10 +215,16 @@ TEST(CpuBackend, figure2LayerIsAsFlatAsThePaperReports) {
 }
 
 TEST(CpuBackend, theImageIsTheSameForAnyThreadCount) {
+    std::vector<std::pair<Scene, glm::ivec2>> frames;
     for (const Scene& scene : scenes()) {
-        const image::Image one = renderCpu(*scene.root, 83, 61, 1).image;
+        frames.emplace_back(scene, glm::ivec2(83, 61));
+    }
+    // Splats about ten pixels wide: the orthographic frame's are stamped (FootprintStamps).
+    frames.emplace_back(scenes().front(), glm::ivec2(400, 300));
+    for (const auto& [scene, size] : frames) {
+        const image::Image one = renderCpu(*scene.root, size.x, size.y, 1).image;
         for (const int threads : {2, 7}) {
-            const image::Image other = renderCpu(*scene.root, 83, 61, threads).image;
+            const image::Image other = renderCpu(*scene.root, size.x, size.y, threads).image;
             ASSERT_EQ(other.pixels().size(), one.pixels().size());
             EXPECT_EQ(std::memcmp(one.pixels().data(), other.pixels().data(),
                                   one.pixels().size() * sizeof(glm::vec4)),

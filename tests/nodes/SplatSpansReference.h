@@ -76,11 +76,14 @@ inline float sampleFootprint(const render::cpu::FootprintSampler& sampler, float
 /// map from a pixel to the square (1/w′ by division), the same depth and near/far tests, the same
 /// footprint lookup (sampleFootprint()), and the emission-absorption of the definition rather
 /// than its fast forms: α = 1 − e^(−τf) by std::expm1 at every optical depth, colour C·α/τ
-/// (C·f for τ ≤ 1e-30), dst = min(src + (1 − α)·dst, FLT_MAX). Returns the fragments drawn:
-/// pixels inside a square (and passing the depth tests), summed over the splats.
+/// (C·f for τ ≤ 1e-30), dst = min(src + (1 − α)·dst, FLT_MAX). A stamped splat's footprint is
+/// `stamps`' blend (FootprintStamps::blend()) at every pixel of its box. Returns the fragments
+/// drawn: pixels inside a square (stamped: where the blend is not 0) and passing the depth tests,
+/// summed over the splats.
 inline std::uint64_t compositeSplatsScalar(const render::cpu::SplatRaster* splats,
                                            std::size_t count,
                                            const render::cpu::FootprintSampler& sampler,
+                                           const render::cpu::FootprintStamps* stamps,
                                            render::cpu::ColorPlanes& planes, int rowBegin,
                                            int rowEnd) {
     using render::cpu::SplatRaster;
@@ -90,6 +93,7 @@ inline std::uint64_t compositeSplatsScalar(const render::cpu::SplatRaster* splat
         const SplatRaster& splat = splats[i];
         const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
         const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
+        const bool stamped = (splat.flags & SplatRaster::kStamped) != 0;
         const float tau = splat.extinction;
         const float* q = splat.square;
         for (int row = std::max(splat.rowBegin, rowBegin); row < std::min(splat.rowEnd, rowEnd);
@@ -99,16 +103,24 @@ inline std::uint64_t compositeSplatsScalar(const render::cpu::SplatRaster* splat
                 const auto x = static_cast<float>(column);
                 float a = q[0] * x + (q[1] * y + q[2]);
                 float b = q[3] * x + (q[4] * y + q[5]);
-                if (projective) {
-                    const float w = q[6] * x + (q[7] * y + q[8]);
-                    if (!(w > 0.0f)) {
+                float f = 0.0f;
+                if (stamped) {
+                    f = stamps->blend(splat.stampPhase, splat.stampFraction[0],
+                                      splat.stampFraction[1], column - splat.stampColumn,
+                                      row - splat.stampRow);
+                } else {
+                    if (projective) {
+                        const float w = q[6] * x + (q[7] * y + q[8]);
+                        if (!(w > 0.0f)) {
+                            continue;
+                        }
+                        a /= w;
+                        b /= w;
+                    }
+                    if (!(std::abs(a) <= 1.0f && std::abs(b) <= 1.0f)) {
                         continue;
                     }
-                    a /= w;
-                    b /= w;
-                }
-                if (!(std::abs(a) <= 1.0f && std::abs(b) <= 1.0f)) {
-                    continue;
+                    f = std::max(sampleFootprint(sampler, a, b), 0.0f) * splat.lengthScale;
                 }
                 const float z = splat.depth[0] * x + (splat.depth[1] * y + splat.depth[2]);
                 if (clipped && !(z >= -1.0f && z <= 1.0f)) {
@@ -117,8 +129,7 @@ inline std::uint64_t compositeSplatsScalar(const render::cpu::SplatRaster* splat
                 if (depthTest && !(0.5f * z + 0.5f < planes.depth(row)[column])) {
                     continue;
                 }
-                ++fragments;
-                const float f = std::max(sampleFootprint(sampler, a, b), 0.0f) * splat.lengthScale;
+                fragments += stamped && f == 0.0f ? 0 : 1;
                 const float alpha = -std::expm1(-tau * f);
                 const float weight = tau > 1e-30f ? alpha / tau : f;
                 const float transmitted = 1.0f - alpha;
@@ -151,8 +162,12 @@ struct CompositeWorkload {
     std::vector<render::cpu::RowSpan> rows;       ///< the rows of each of `splats`
     std::vector<std::size_t> sources;             ///< each one's index in the frame's list
     std::shared_ptr<const render::cpu::FootprintSampler> sampler; ///< the batch's footprint
+    std::shared_ptr<const render::cpu::SplatSetup> setup;         ///< what set them up
     int width = 0;                                                ///< image columns
     int height = 0;                                               ///< image rows
+
+    /// @brief The stamps of the stamped splats, or null.
+    const render::cpu::FootprintStamps* stamps() const { return setup->stamps(); }
 };
 
 /// @brief `splats` set up by `setup`, in order.
@@ -166,10 +181,11 @@ inline std::vector<render::cpu::SplatRaster> setUpSplats(const render::cpu::Spla
 /// @brief The splats `texsplat bench` draws for `dataset` ("blob64") with `method` ("texture",
 /// "polygon"; full resolution) in a `size` x `size` image, through `camera`, collected by
 /// FrameAction and set up by SplatSetup as CpuRenderer sets them up (a radial footprint's pixel
-/// boxes bounding its disc; without `discRadius`, the square's boxes).
+/// boxes bounding its disc, without `discRadius` the square's boxes; stamped where the
+/// footprint suits it, unless not `stamped`).
 inline CompositeWorkload compositeWorkload(const std::string& dataset, const std::string& method,
                                            WorkloadCamera camera, int size,
-                                           bool discRadius = true) {
+                                           bool discRadius = true, bool stamped = true) {
     nodes::registerNodeTypes();
     const bench::BenchDataset source = bench::BenchDataset::fromName(dataset);
     const sg::Separator::Ptr root =
@@ -189,10 +205,15 @@ inline CompositeWorkload compositeWorkload(const std::string& dataset, const std
     workload.width = size;
     workload.height = size;
     // As CpuRenderer sets them up: a radial footprint's boxes bound its disc.
-    const render::cpu::SplatSetup setup(
+    auto setup = std::make_shared<render::cpu::SplatSetup>(
         batch.view, static_cast<float>(batch.footprint->extent), size, size, std::nullopt,
         discRadius && workload.sampler->isRadial ? std::sqrt(workload.sampler->reach) : 0.0f);
-    const std::vector<render::cpu::SplatRaster> rasters = setUpSplats(setup, batch.splats->splats());
+    if (stamped) {
+        setup->stampFootprint(*workload.sampler);
+    }
+    workload.setup = setup;
+    const std::vector<render::cpu::SplatRaster> rasters =
+        setUpSplats(*setup, batch.splats->splats());
     for (std::size_t i = 0; i < rasters.size(); ++i) {
         if (!rasters[i].isEmpty()) {
             workload.splats.push_back(rasters[i]);

@@ -118,12 +118,13 @@ std::uint64_t expectMatchesReference(const CompositeWorkload& workload,
     }
     for (int row = 0; row < workload.height; row += kBandRows) {
         compositeSplats(workload.splats.data(), workload.rows.data(), workload.splats.size(),
-                        workload.sampler.get(), nullptr, simd, row,
+                        workload.sampler.get(), workload.stamps(), nullptr, simd, row,
                         std::min(row + kBandRows, workload.height));
     }
     const std::uint64_t fragments =
         test::compositeSplatsScalar(workload.splats.data(), workload.splats.size(),
-                                    *workload.sampler, scalar, 0, workload.height);
+                                    *workload.sampler, workload.stamps(), scalar, 0,
+                                    workload.height);
     const Differences differences = compare(simd, scalar);
     EXPECT_LE(differences.relative.value, relativeTolerance)
         << differences.relative << "; " << workload.splats.size() << " splats";
@@ -134,13 +135,19 @@ std::uint64_t expectMatchesReference(const CompositeWorkload& workload,
 }
 
 TEST(SplatSpans, matchesScalarReferenceOrthographic) {
-    const CompositeWorkload workload =
-        test::compositeWorkload("blob32", "texture", WorkloadCamera::Orthographic, 128);
-    ASSERT_GT(workload.splats.size(), 1000u);
-    ASSERT_TRUE(workload.sampler->isRadial);
-    EXPECT_TRUE(std::none_of(workload.splats.begin(), workload.splats.end(),
-                             [](const SplatRaster& splat) { return splat.flags != 0; }));
-    expectMatchesReference(workload);
+    // Stamped (FootprintStamps, as CpuRenderer draws them) and with the exact lookup.
+    for (const bool stamped : {true, false}) {
+        SCOPED_TRACE(stamped ? "stamped" : "exact lookup");
+        const CompositeWorkload workload = test::compositeWorkload(
+            "blob32", "texture", WorkloadCamera::Orthographic, 128, true, stamped);
+        ASSERT_GT(workload.splats.size(), 1000u);
+        ASSERT_TRUE(workload.sampler->isRadial);
+        ASSERT_EQ(workload.stamps() != nullptr, stamped);
+        const std::int32_t flags = stamped ? SplatRaster::kStamped : 0;
+        EXPECT_TRUE(std::all_of(workload.splats.begin(), workload.splats.end(),
+                                [&](const SplatRaster& splat) { return splat.flags == flags; }));
+        expectMatchesReference(workload);
+    }
 }
 
 TEST(SplatSpans, matchesScalarReferencePerspective) {
@@ -216,37 +223,60 @@ TEST(SplatSpans, matchesScalarReferenceForEveryOpticalDepthAndBoxWidth) {
 }
 
 TEST(SplatSpans, matchesScalarReferenceBehindADepthPlane) {
-    // A depth plane slanting through the volume hides part of each splat, as a mesh would.
-    const CompositeWorkload workload =
-        test::compositeWorkload("blob32", "texture", WorkloadCamera::Perspective, 128);
-    const auto slantedDepth = [](ColorPlanes& planes) {
-        for (int row = 0; row < planes.height(); ++row) {
-            float* depth = planes.depth(row);
-            for (int column = 0; column < planes.width(); ++column) {
-                depth[column] = 0.55f + 0.15f * static_cast<float>(column + row) /
-                                            static_cast<float>(planes.width());
-            }
+    // A depth plane slanting through the volume hides part of each splat, as a mesh would; the
+    // orthographic splats are stamped.
+    for (const WorkloadCamera camera :
+         {WorkloadCamera::Perspective, WorkloadCamera::Orthographic}) {
+        SCOPED_TRACE(camera == WorkloadCamera::Perspective ? "perspective" : "orthographic");
+        const CompositeWorkload workload =
+            test::compositeWorkload("blob32", "texture", camera, 128);
+        // The window depths of the splats' centres, which the plane slants across.
+        float nearest = 1.0f;
+        float farthest = 0.0f;
+        for (const SplatRaster& splat : workload.splats) {
+            const float x = 0.5f * static_cast<float>(splat.columnBegin + splat.columnEnd);
+            const float y = 0.5f * static_cast<float>(splat.rowBegin + splat.rowEnd);
+            const float window =
+                0.5f * (splat.depth[0] * x + splat.depth[1] * y + splat.depth[2]) + 0.5f;
+            nearest = std::min(nearest, window);
+            farthest = std::max(farthest, window);
         }
-    };
-    const std::uint64_t hidden = expectMatchesReference(workload, slantedDepth, true);
-    const std::uint64_t all = expectMatchesReference(workload);
-    EXPECT_LT(hidden, all);
-    EXPECT_GT(hidden, all / 10);
+        ASSERT_LT(nearest, farthest);
+        const auto slantedDepth = [&](ColorPlanes& planes) {
+            for (int row = 0; row < planes.height(); ++row) {
+                float* depth = planes.depth(row);
+                for (int column = 0; column < planes.width(); ++column) {
+                    const float across = static_cast<float>(column + row) /
+                                         static_cast<float>(planes.width() + planes.height());
+                    depth[column] = nearest + (farthest - nearest) * (0.3f + 0.4f * across);
+                }
+            }
+        };
+        const std::uint64_t hidden = expectMatchesReference(workload, slantedDepth, true);
+        const std::uint64_t all = expectMatchesReference(workload);
+        EXPECT_LT(hidden, all);
+        EXPECT_GT(hidden, all / 10);
+    }
 }
 
 TEST(SplatSpans, matchesScalarReferenceOnEveryInstructionSet) {
     // The loop is compiled for every x86 target and picked at run time; the register lookup of
     // the cubic pieces takes one permute on 16 lanes, two and a select on 8, four on 4. Each
     // target this CPU runs must draw the reference's image.
-    const CompositeWorkload workload =
+    // The orthographic splats are stamped.
+    const CompositeWorkload perspective =
         test::compositeWorkload("blob32", "texture", WorkloadCamera::Perspective, 128);
-    ASSERT_TRUE(workload.sampler->hasPieces);
+    const CompositeWorkload orthographic =
+        test::compositeWorkload("blob32", "texture", WorkloadCamera::Orthographic, 128);
+    ASSERT_TRUE(perspective.sampler->hasPieces);
+    ASSERT_NE(orthographic.stamps(), nullptr);
     const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
     for (const std::int64_t target : targets) {
         hwy::SetSupportedTargetsForTest(target);
         SCOPED_TRACE(compositeTarget());
         EXPECT_EQ(std::string(compositeTarget()), hwy::TargetName(target));
-        expectMatchesReference(workload);
+        expectMatchesReference(perspective);
+        expectMatchesReference(orthographic);
     }
     hwy::SetSupportedTargetsForTest(0);
     EXPECT_GT(targets.size(), 1u) << "only " << compositeTarget() << " was tried";
@@ -259,9 +289,11 @@ TEST(SplatSetup, theDiscsPixelBoxHoldsEveryPixelTheFootprintReaches) {
     for (const WorkloadCamera camera :
          {WorkloadCamera::Orthographic, WorkloadCamera::Perspective, WorkloadCamera::Inside}) {
         SCOPED_TRACE(static_cast<int>(camera));
-        const CompositeWorkload square = test::compositeWorkload("blob32", "texture", camera, 128,
-                                                                 false);
-        const CompositeWorkload disc = test::compositeWorkload("blob32", "texture", camera, 128);
+        // Unstamped: the stamps' boxes are their own (SplatSetupStamps tests).
+        const CompositeWorkload square =
+            test::compositeWorkload("blob32", "texture", camera, 128, false, false);
+        const CompositeWorkload disc =
+            test::compositeWorkload("blob32", "texture", camera, 128, true, false);
         ASSERT_LE(disc.splats.size(), square.splats.size());
         std::uint64_t squarePixels = 0;
         std::uint64_t discPixels = 0;
@@ -303,9 +335,9 @@ TEST(SplatSetup, theDiscsPixelBoxHoldsEveryPixelTheFootprintReaches) {
         ColorPlanes fromSquare(square.width, square.height, background, false);
         ColorPlanes fromDisc(disc.width, disc.height, background, false);
         compositeSplats(square.splats.data(), square.rows.data(), square.splats.size(),
-                        square.sampler.get(), nullptr, fromSquare, 0, square.height);
+                        square.sampler.get(), nullptr, nullptr, fromSquare, 0, square.height);
         compositeSplats(disc.splats.data(), disc.rows.data(), disc.splats.size(),
-                        disc.sampler.get(), nullptr, fromDisc, 0, disc.height);
+                        disc.sampler.get(), nullptr, nullptr, fromDisc, 0, disc.height);
         for (int row = 0; row < square.height; ++row) {
             ASSERT_EQ(std::memcmp(fromSquare.alpha(row), fromDisc.alpha(row),
                                   sizeof(float) * static_cast<std::size_t>(square.width)),

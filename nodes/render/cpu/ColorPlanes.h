@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/image/Image.h"
+#include "nodes/render/cpu/detail/CacheLineAllocator.h"
 
 #include <glm/vec4.hpp>
 
@@ -48,7 +49,8 @@ private:
     int mWidth;
     int mHeight;
     int mStride;
-    std::vector<float> mRed, mGreen, mBlue, mAlpha, mDepth;
+    using Plane = std::vector<float, detail::CacheLineAllocator<float>>;
+    Plane mRed, mGreen, mBlue, mAlpha, mDepth;
 };
 
 } // namespace texsplat::render::cpu

@@ -79,9 +79,13 @@ std::vector<PreparedBatch> prepareBatches(const Frame& frame, detail::SamplerCac
         const float discRadius = batch.sampler && batch.sampler->isRadial && !footprint.table
                                      ? std::sqrt(batch.sampler->reach)
                                      : 0.0f;
-        batch.setup = std::make_unique<const SplatSetup>(
-            splats.view, static_cast<float>(footprint.extent), frame.width, frame.height, marks,
-            discRadius);
+        auto setup = std::make_unique<SplatSetup>(splats.view,
+                                                  static_cast<float>(footprint.extent),
+                                                  frame.width, frame.height, marks, discRadius);
+        if (batch.sampler && !footprint.table) {
+            setup->stampFootprint(*batch.sampler);
+        }
+        batch.setup = std::move(setup);
         batches.push_back(std::move(batch));
     }
     return batches;
@@ -146,8 +150,8 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                                   });
                 tbb::parallel_for(0, bands.count, [&](int band) {
                     compositeSplats(rasters.data(), rows.data(), count, batch.sampler.get(),
-                                    batch.marks.get(), planes, bands.begin(band),
-                                    bands.end(band, frame.height));
+                                    batch.setup->stamps(), batch.marks.get(), planes,
+                                    bands.begin(band), bands.end(band, frame.height));
                 });
             }
         }

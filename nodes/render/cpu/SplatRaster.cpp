@@ -247,47 +247,100 @@ void SplatSetup::setUp(const octree::Splat* splats, const octree::SplatVector* v
 }
 
 SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
-    SplatRaster raster{};
-    const glm::mat4& m = mView.localToClip;
-    const glm::vec4 c0 = m * glm::vec4(splat.position, 1.0f);
+    // The centre's pixel and depth, by the rows of pixelFromLocal (W = 1 in an affine view),
+    // written out: glm's mat4 × vec4 stayed a call at -O2, a fifth of the set-up's time.
+    const auto apply = [&](const float (&row)[4]) {
+        return row[0] * splat.position.x + row[1] * splat.position.y +
+               row[2] * splat.position.z + row[3];
+    };
+    const float centreX = apply(mRows.pixelFromLocal[0]);
+    const float centreY = apply(mRows.pixelFromLocal[1]);
+    const float z = apply(mRows.pixelFromLocal[3]);
     const float size = splat.size;
-    if (c0.z - size * mDepthReach > 1.0f || c0.z + size * mDepthReach < -1.0f) {
-        return raster;
+    if (z - size * mDepthReach > 1.0f || z + size * mDepthReach < -1.0f) {
+        return {};
     }
-    const float centreX = 0.5f * static_cast<float>(mRows.width) * (c0.x + 1.0f);
-    const float centreY = 0.5f * static_cast<float>(mRows.height) * (1.0f - c0.y);
-    const float reachX = size * mHalfExtent[0];
-    const float reachY = size * mHalfExtent[1];
-    raster.columnBegin = toPixel(std::floor(centreX - reachX), 0, mRows.width);
-    raster.columnEnd = toPixel(std::ceil(centreX + reachX) + 1.0, 0, mRows.width);
-    raster.rowBegin = toPixel(std::floor(centreY - reachY), 0, mRows.height);
-    raster.rowEnd = toPixel(std::ceil(centreY + reachY) + 1.0, 0, mRows.height);
+    const bool crossesPlanes = z - size * mDepthReach < -1.0f || z + size * mDepthReach > 1.0f;
+    SplatRaster raster{};
+    raster.flags = crossesPlanes ? SplatRaster::kClipped : 0;
+    if (!(mStamps && size == 1.0f && !crossesPlanes && stamp(raster, centreX, centreY))) {
+        const float reachX = size * mHalfExtent[0];
+        const float reachY = size * mHalfExtent[1];
+        raster.columnBegin = toPixel(std::floor(centreX - reachX), 0, mRows.width);
+        raster.columnEnd = toPixel(std::ceil(centreX + reachX) + 1.0, 0, mRows.width);
+        raster.rowBegin = toPixel(std::floor(centreY - reachY), 0, mRows.height);
+        raster.rowEnd = toPixel(std::ceil(centreY + reachY) + 1.0, 0, mRows.height);
+    }
     if (raster.isEmpty()) {
-        return raster;
+        return {};
     }
     // (a, b) at pixel centre (x + ½, y + ½): S⁻¹/size · (x + ½ − centreX, y + ½ − centreY).
     const float dx = 0.5f - centreX;
     const float dy = 0.5f - centreY;
     for (int row = 0; row < 2; ++row) {
-        const float sx = mSquareFromPixel[row][0] / size;
-        const float sy = mSquareFromPixel[row][1] / size;
+        // Most splats are voxels (size 1): no division, whose latency the set-up waited on.
+        const float sx = size == 1.0f ? mSquareFromPixel[row][0] : mSquareFromPixel[row][0] / size;
+        const float sy = size == 1.0f ? mSquareFromPixel[row][1] : mSquareFromPixel[row][1] / size;
         raster.square[3 * row] = sx;
         raster.square[3 * row + 1] = sy;
         raster.square[3 * row + 2] = sx * dx + sy * dy;
     }
+    raster.square[6] = 0.0f;
+    raster.square[7] = 0.0f;
     raster.square[8] = 1.0f;
     raster.depth[0] = mDepthGradient[0];
     raster.depth[1] = mDepthGradient[1];
-    raster.depth[2] = c0.z + mDepthGradient[0] * dx + mDepthGradient[1] * dy;
+    raster.depth[2] = z + mDepthGradient[0] * dx + mDepthGradient[1] * dy;
     raster.color[0] = splat.color.r;
     raster.color[1] = splat.color.g;
     raster.color[2] = splat.color.b;
     raster.extinction = splat.extinction;
     raster.lengthScale = size * mLengthScale;
-    const bool crossesPlanes =
-        c0.z - size * mDepthReach < -1.0f || c0.z + size * mDepthReach > 1.0f;
-    raster.flags = crossesPlanes ? SplatRaster::kClipped : 0;
     return raster;
+}
+
+const FootprintStamps* SplatSetup::stampFootprint(const FootprintSampler& sampler) {
+    mStamps.reset();
+    if (mIsAffine && FootprintStamps::suits(sampler)) {
+        auto stamps = std::make_unique<const FootprintStamps>(sampler, mSquareFromPixel,
+                                                              mHalfExtent, mLengthScale);
+        if (stamps->error <= FootprintStamps::kTolerance * stamps->peak) {
+            mStamps = std::move(stamps);
+        }
+    }
+    return mStamps.get();
+}
+
+bool SplatSetup::stamp(SplatRaster& raster, float centreX, float centreY) const {
+    // The centre's continuous pixel coordinate (pixel c's centre at c) in phases, exact in
+    // float while it is below 2^20 pixels (then so are c − ½, the product by 16 and the floor).
+    constexpr int kPhases = FootprintStamps::kPhases;
+    const float inPhasesX = (centreX - 0.5f) * kPhases;
+    const float inPhasesY = (centreY - 0.5f) * kPhases;
+    const float phaseX = std::floor(inPhasesX);
+    const float phaseY = std::floor(inPhasesY);
+    constexpr float kLimit = 1 << 24;
+    if (!(std::abs(phaseX) < kLimit && std::abs(phaseY) < kLimit)) {
+        return false;
+    }
+    const auto wholeX = static_cast<std::int32_t>(phaseX);
+    const auto wholeY = static_cast<std::int32_t>(phaseY);
+    const std::int32_t qx = wholeX & (kPhases - 1);
+    const std::int32_t qy = wholeY & (kPhases - 1);
+    raster.stampColumn = (wholeX - qx) / kPhases + mStamps->columnOffset;
+    raster.stampRow = (wholeY - qy) / kPhases + mStamps->rowOffset;
+    raster.stampPhase = FootprintStamps::phaseIndex(qx, qy);
+    raster.stampFraction[0] = inPhasesX - phaseX;
+    raster.stampFraction[1] = inPhasesY - phaseY;
+    // The pixels the blends of this phase cell reach.
+    const FootprintStamps::Extent& reach =
+        mStamps->extents[static_cast<std::size_t>(qy * kPhases + qx)];
+    raster.columnBegin = std::clamp(raster.stampColumn + reach.columnBegin, 0, mRows.width);
+    raster.columnEnd = std::clamp(raster.stampColumn + reach.columnEnd, 0, mRows.width);
+    raster.rowBegin = std::clamp(raster.stampRow + reach.rowBegin, 0, mRows.height);
+    raster.rowEnd = std::clamp(raster.stampRow + reach.rowEnd, 0, mRows.height);
+    raster.flags |= SplatRaster::kStamped;
+    return true;
 }
 
 } // namespace texsplat::render::cpu

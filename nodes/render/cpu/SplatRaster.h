@@ -3,6 +3,7 @@
 #include "nodes/render/MarkDrawing.h"
 #include "nodes/render/SplatFootprint.h"
 #include "nodes/render/SplatView.h"
+#include "nodes/render/cpu/FootprintStamps.h"
 
 #include <array>
 #include <cmath>
@@ -114,7 +115,12 @@ struct SplatRaster {
     float lengthScale; ///< footprint texel → line integral: size / |S⁻¹d|
     std::int32_t columnBegin, columnEnd; ///< pixels [begin, end) the square may cover
     std::int32_t rowBegin, rowEnd;       ///< rows [begin, end), top row first
-    std::int32_t flags;                  ///< kProjective | kClipped | kMarks
+    std::int32_t flags;                  ///< kProjective | kClipped | kMarks | kStamped
+    // Stamped splats only (kStamped, see FootprintStamps): the pixel of the stamps' first column
+    // and row, the stamp below the centre's phase and the fractions of a phase past it.
+    std::int32_t stampColumn, stampRow;
+    std::int32_t stampPhase;
+    float stampFraction[2];
     // Vector and combined splats only (see MarkSetup):
     std::int32_t layer;            ///< the table's layer: row (with the phase) and column
     float polygonAlpha;            ///< vector splats: opacity of one voxel's slab, 1 − e^(−τ·ls)
@@ -123,6 +129,7 @@ struct SplatRaster {
     static constexpr std::int32_t kProjective = 1; ///< w′ varies over the pixels
     static constexpr std::int32_t kClipped = 2;    ///< crosses the near or far plane: clip per pixel
     static constexpr std::int32_t kMarks = 4;      ///< the square is turned to the vector: marks
+    static constexpr std::int32_t kStamped = 8;    ///< the footprint from FootprintStamps
 
     /// @brief Whether the splat covers no pixel of the image (then nothing else is set).
     bool isEmpty() const { return columnBegin >= columnEnd || rowBegin >= rowEnd; }
@@ -188,8 +195,21 @@ public:
     void setUp(const octree::Splat* splats, const octree::SplatVector* vectors,
                std::size_t count, SplatRaster* out) const;
 
+    /// @brief For an orthographic view of scalar splats whose footprint `sampler` suits stamps
+    /// (FootprintStamps::suits()), tabulates it per sub-pixel phase: unit-size splats that do
+    /// not cross the near or far plane are then set up as stamped. Returns the stamps, or null
+    /// where they do not apply or would stray from the footprint by more than
+    /// FootprintStamps::kTolerance of its peak.
+    const FootprintStamps* stampFootprint(const FootprintSampler& sampler);
+
+    /// @brief The stamps of stampFootprint(), or null.
+    const FootprintStamps* stamps() const { return mStamps.get(); }
+
 private:
     SplatRaster orthographic(const octree::Splat& splat) const;
+    // Sets `raster` (of a unit-size splat centred at pixel coordinates (centreX, centreY)) up
+    // as stamped; false (nothing changed) where the centre is too far out for an int.
+    bool stamp(SplatRaster& raster, float centreX, float centreY) const;
 
     SplatView mView;
     ProjectiveRows mRows;
@@ -201,6 +221,7 @@ private:
     float mDepthGradient[2]{};      // z_ndc per pixel, x and y
     float mDepthReach = 0.0f;       // |z_ndc| the square reaches from its centre
     float mLengthScale = 1.0f;      // lengthScale at size 1
+    std::unique_ptr<const FootprintStamps> mStamps;
 };
 
 } // namespace texsplat::render::cpu

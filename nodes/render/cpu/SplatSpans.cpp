@@ -224,6 +224,52 @@ template <class D> struct Batch {
     bool depthTest;
     bool squareTest; // the square's edges cut the footprint (else its reach lies inside)
     std::optional<PieceLookup<D>> pieces;
+    const FootprintStamps* stamps; // for the kStamped splats
+};
+
+template <bool kClamp, class D, class V> HWY_INLINE V Clamp(D d, V value) {
+    if constexpr (kClamp) {
+        return hn::Min(value, hn::Set(d, FLT_MAX));
+    } else {
+        return value;
+    }
+}
+
+// dst = source + transmitted · dst on `plane` at `column` (clamped with kClamp).
+template <bool kClamp, class D, class V>
+HWY_INLINE void Over(D d, float* plane, int column, V transmitted, V source) {
+    const V destination = hn::LoadU(d, plane + column);
+    hn::StoreU(Clamp<kClamp>(d, hn::MulAdd(transmitted, destination, source)), d, plane + column);
+}
+
+// A splat's medium in vectors: its emission C, extinction τ and 1/τ.
+template <class D> struct Medium {
+    using V = hn::Vec<D>;
+    V red, green, blue, tau, inverseTau;
+    // C·f·φ(τf) = C·α/τ; below 1e-30 the medium is pure emission, C·f (φ = 1 − τf/2 + …).
+    bool absorbs;
+
+    Medium(D d, const SplatRaster& splat)
+        : red(hn::Set(d, splat.color[0])), green(hn::Set(d, splat.color[1])),
+          blue(hn::Set(d, splat.color[2])), tau(hn::Set(d, splat.extinction)),
+          inverseTau(hn::Set(d, splat.extinction > 1e-30f ? 1.0f / splat.extinction : 0.0f)),
+          absorbs(splat.extinction > 1e-30f) {}
+
+    // α = 1 − e^(−τf) and the colour weight f·φ(τf) = α/τ of footprint f (times the length
+    // scale), by φ's series as far as kDepth allows, else Expm1 (weight f where the medium does
+    // not absorb).
+    template <Depth kDepth> HWY_INLINE void attenuate(D d, V f, V& alpha, V& weight) const {
+        const V opticalDepth = hn::Mul(tau, f);
+        if constexpr (kDepth != Depth::Expm1) {
+            const V phi = kDepth == Depth::Short ? PhiShortSeries(d, opticalDepth)
+                                                 : PhiSeries(d, opticalDepth);
+            alpha = hn::Mul(opticalDepth, phi);
+            weight = hn::Mul(f, phi);
+        } else {
+            alpha = hn::Neg(hn::Expm1(d, hn::Neg(opticalDepth)));
+            weight = absorbs ? hn::Mul(alpha, inverseTau) : f;
+        }
+    }
 };
 
 // Composites rows [first, last) of one splat; with kClamp, every sum is clamped to FLT_MAX
@@ -237,26 +283,13 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
     const auto lane = hn::Iota(d, 0.0f);
     const auto one = hn::Set(d, 1.0f);
     const auto zero = hn::Zero(d);
-    const auto largest = hn::Set(d, FLT_MAX);
-    const auto clamp = [&](auto value) {
-        if constexpr (kClamp) {
-            return hn::Min(value, largest);
-        } else {
-            return value;
-        }
-    };
+    const auto clamp = [&](auto value) { return Clamp<kClamp>(d, value); };
     const FootprintSampler* sampler = batch.sampler;
     const MarkSampler* marks = batch.marks;
     ColorPlanes& planes = batch.planes;
     const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
     const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
-    const auto red = hn::Set(d, splat.color[0]);
-    const auto green = hn::Set(d, splat.color[1]);
-    const auto blue = hn::Set(d, splat.color[2]);
-    const auto tau = hn::Set(d, splat.extinction);
-    // C·f·φ(τf) = C·α/τ; below 1e-30 the medium is pure emission, C·f (φ = 1 − τf/2 + …).
-    const bool absorbs = splat.extinction > 1e-30f;
-    const auto inverseTau = hn::Set(d, absorbs ? 1.0f / splat.extinction : 0.0f);
+    const Medium<D> medium(d, splat);
     const auto lengthScale = hn::Set(d, splat.lengthScale);
     const auto reach = hn::Set(d, sampler != nullptr ? sampler->reach : 2.0f);
     const auto ax = hn::Set(d, splat.square[0]);
@@ -332,13 +365,11 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
                 };
                 const auto transmitted = hn::Sub(one, alpha);
                 const auto over = [&](float* plane, decltype(alpha) source) {
-                    const auto destination = hn::LoadU(d, plane + column);
-                    hn::StoreU(clamp(hn::MulAdd(transmitted, destination, source)), d,
-                               plane + column);
+                    Over<kClamp>(d, plane, column, transmitted, source);
                 };
-                over(redRow, clamp(hn::Mul(mark(red, marks->blendColor[0]), alpha)));
-                over(greenRow, clamp(hn::Mul(mark(green, marks->blendColor[1]), alpha)));
-                over(blueRow, clamp(hn::Mul(mark(blue, marks->blendColor[2]), alpha)));
+                over(redRow, clamp(hn::Mul(mark(medium.red, marks->blendColor[0]), alpha)));
+                over(greenRow, clamp(hn::Mul(mark(medium.green, marks->blendColor[1]), alpha)));
+                over(blueRow, clamp(hn::Mul(mark(medium.blue, marks->blendColor[2]), alpha)));
                 over(alphaRow, alpha);
                 continue;
             }
@@ -356,27 +387,16 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
             }
             const auto f =
                 hn::IfThenElseZero(inside, hn::Mul(hn::Max(footprint, zero), lengthScale));
-            const auto opticalDepth = hn::Mul(tau, f);
-            auto alpha = opticalDepth;
-            auto weight = f;
-            if constexpr (kDepth != Depth::Expm1) {
-                const auto phi = kDepth == Depth::Short ? PhiShortSeries(d, opticalDepth)
-                                                        : PhiSeries(d, opticalDepth);
-                alpha = hn::Mul(opticalDepth, phi);
-                weight = hn::Mul(f, phi);
-            } else {
-                alpha = hn::Neg(hn::Expm1(d, hn::Neg(opticalDepth)));
-                weight = absorbs ? hn::Mul(alpha, inverseTau) : f;
-            }
+            hn::Vec<D> alpha;
+            hn::Vec<D> weight;
+            medium.template attenuate<kDepth>(d, f, alpha, weight);
             const auto transmitted = hn::Sub(one, alpha);
             const auto over = [&](float* plane, decltype(weight) source) {
-                const auto destination = hn::LoadU(d, plane + column);
-                hn::StoreU(clamp(hn::MulAdd(transmitted, destination, source)), d,
-                           plane + column);
+                Over<kClamp>(d, plane, column, transmitted, source);
             };
-            auto colourRed = hn::Mul(red, weight);
-            auto colourGreen = hn::Mul(green, weight);
-            auto colourBlue = hn::Mul(blue, weight);
+            auto colourRed = hn::Mul(medium.red, weight);
+            auto colourGreen = hn::Mul(medium.green, weight);
+            auto colourBlue = hn::Mul(medium.blue, weight);
             if constexpr (kKind == Kind::Combined) {
                 // The marks change only the colour, by `contrast`: BLEND dissolves towards K by
                 // c·I, MODULATE multiplies by 1 − c + c·I (no marks: I = 0).
@@ -402,6 +422,67 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
             over(greenRow, clamp(colourGreen));
             over(blueRow, clamp(colourBlue));
             over(alphaRow, alpha);
+        }
+    }
+}
+
+// Composites rows [first, last) of a stamped splat (SplatRaster::kStamped): its footprint is
+// the bilinear blend of the four stamps around its centre's phase, nothing else per pixel but
+// the depth test; pixels the footprint does not reach get α = 0 and keep their value.
+template <bool kClamp, Depth kDepth, class D>
+HWY_INLINE void CompositeStampedSplat(const Batch<D>& batch, const SplatRaster& splat, int first,
+                                      int last) {
+    const D d = batch.d;
+    const int lanes = static_cast<int>(hn::Lanes(d));
+    const FootprintStamps& stamps = *batch.stamps;
+    ColorPlanes& planes = batch.planes;
+    const auto one = hn::Set(d, 1.0f);
+    const Medium<D> medium(d, splat);
+    const auto fx = hn::Set(d, splat.stampFraction[0]);
+    const auto fy = hn::Set(d, splat.stampFraction[1]);
+    const auto zx = hn::Set(d, splat.depth[0]);
+    // Vectors at columns that are multiples of their width (rows start on a cache line).
+    const int columnBegin = splat.columnBegin / lanes * lanes;
+    const auto firstX = hn::Add(hn::Set(d, static_cast<float>(columnBegin)), hn::Iota(d, 0.0f));
+    const std::size_t nextX = stamps.stampSize;
+    const std::size_t nextY = (FootprintStamps::kPhases + 1) * stamps.stampSize;
+    const float* phase =
+        stamps.values.data() + static_cast<std::size_t>(splat.stampPhase) * stamps.stampSize +
+        static_cast<std::size_t>(FootprintStamps::kPad + columnBegin - splat.stampColumn);
+    for (int row = first; row < last; ++row) {
+        const float* s00 =
+            phase + static_cast<std::size_t>(row - splat.stampRow) * stamps.stride;
+        float* redRow = planes.red(row);
+        float* greenRow = planes.green(row);
+        float* blueRow = planes.blue(row);
+        float* alphaRow = planes.alpha(row);
+        const float* depthRow = batch.depthTest ? planes.depth(row) : nullptr;
+        const auto z0 = hn::Set(d, splat.depth[1] * static_cast<float>(row) + splat.depth[2]);
+        auto x = firstX;
+        for (int column = columnBegin, offset = 0; column < splat.columnEnd;
+             column += lanes, offset += lanes, x = hn::Add(x, hn::Set(d, lanes))) {
+            const auto v00 = hn::LoadU(d, s00 + offset);
+            const auto v10 = hn::LoadU(d, s00 + nextX + offset);
+            const auto v01 = hn::LoadU(d, s00 + nextY + offset);
+            const auto v11 = hn::LoadU(d, s00 + nextY + nextX + offset);
+            const auto bottom = hn::MulAdd(fx, hn::Sub(v10, v00), v00);
+            const auto top = hn::MulAdd(fx, hn::Sub(v11, v01), v01);
+            auto f = hn::MulAdd(fy, hn::Sub(top, bottom), bottom);
+            if (batch.depthTest) {
+                const auto window =
+                    hn::MulAdd(hn::MulAdd(zx, x, z0), hn::Set(d, 0.5f), hn::Set(d, 0.5f));
+                f = hn::IfThenElseZero(hn::Lt(window, hn::LoadU(d, depthRow + column)), f);
+            }
+            hn::Vec<D> alpha;
+            hn::Vec<D> weight;
+            medium.template attenuate<kDepth>(d, f, alpha, weight);
+            const auto transmitted = hn::Sub(one, alpha);
+            Over<kClamp>(d, redRow, column, transmitted, Clamp<kClamp>(d, hn::Mul(medium.red, weight)));
+            Over<kClamp>(d, greenRow, column, transmitted,
+                         Clamp<kClamp>(d, hn::Mul(medium.green, weight)));
+            Over<kClamp>(d, blueRow, column, transmitted,
+                         Clamp<kClamp>(d, hn::Mul(medium.blue, weight)));
+            Over<kClamp>(d, alphaRow, column, transmitted, alpha);
         }
     }
 }
@@ -433,23 +514,32 @@ HWY_INLINE void CompositeSplatAtDepth(const Batch<D>& batch, const SplatRaster& 
         CompositeSplat<kKind, kClamp, Depth::Expm1>(batch, splat, first, last);
         return;
     }
+    const auto at = [&](auto depth) {
+        constexpr Depth kDepth = decltype(depth)::value;
+        if (kKind == Kind::RadialPieces && (splat.flags & SplatRaster::kStamped) != 0) {
+            CompositeStampedSplat<kClamp, kDepth>(batch, splat, first, last);
+        } else {
+            CompositeSplat<kKind, kClamp, kDepth>(batch, splat, first, last);
+        }
+    };
     switch (depthOf(splat, batch.sampler)) {
     case Depth::Short:
-        CompositeSplat<kKind, kClamp, Depth::Short>(batch, splat, first, last);
+        at(std::integral_constant<Depth, Depth::Short>{});
         break;
     case Depth::Series:
-        CompositeSplat<kKind, kClamp, Depth::Series>(batch, splat, first, last);
+        at(std::integral_constant<Depth, Depth::Series>{});
         break;
     case Depth::Expm1:
-        CompositeSplat<kKind, kClamp, Depth::Expm1>(batch, splat, first, last);
+        at(std::integral_constant<Depth, Depth::Expm1>{});
         break;
     }
 }
 
 template <Kind kKind>
 void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
-                         const FootprintSampler* sampler, const MarkSampler* marks,
-                         ColorPlanes& planes, int rowBegin, int rowEnd) {
+                         const FootprintSampler* sampler, const FootprintStamps* stamps,
+                         const MarkSampler* marks, ColorPlanes& planes, int rowBegin,
+                         int rowEnd) {
     // Up to 16 lanes (AVX-512: 1.1× eight on 9–10-pixel-wide boxes), and 8 for boxes no wider:
     // half-width vectors issue on three ports of AVX-512 instead of two (Marschner–Lobb 128³ in
     // perspective, three quarters of its boxes 7–8 pixels wide: 1.16×, CpuRasterizerBenchmark).
@@ -458,8 +548,8 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
     constexpr int kNarrowColumns = static_cast<int>(hn::MaxLanes(Narrow()));
     const bool squareTest = sampler == nullptr || sampler->reach > 1.0f;
     const auto batchOf = [&](auto d) {
-        Batch<decltype(d)> batch{d, sampler, marks, planes, planes.hasDepth(), squareTest,
-                                 std::nullopt};
+        Batch<decltype(d)> batch{d,          sampler,      marks,  planes, planes.hasDepth(),
+                                 squareTest, std::nullopt, stamps};
         if constexpr (kKind == Kind::RadialPieces) {
             batch.pieces.emplace(d, *sampler);
         }
@@ -485,7 +575,8 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
                 CompositeSplatAtDepth<kKind, false>(batch, splat, first, last);
             }
         };
-        if (splat.columnEnd - splat.columnBegin <= kNarrowColumns) {
+        if (splat.columnEnd - splat.columnBegin <= kNarrowColumns ||
+            (splat.flags & SplatRaster::kStamped) != 0) {
             composite(narrow);
         } else {
             composite(wide);
@@ -494,11 +585,11 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
 }
 
 void CompositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
-                     const FootprintSampler* sampler, const MarkSampler* marks,
-                     ColorPlanes& planes, int rowBegin, int rowEnd) {
+                     const FootprintSampler* sampler, const FootprintStamps* stamps,
+                     const MarkSampler* marks, ColorPlanes& planes, int rowBegin, int rowEnd) {
     const auto with = [&](auto kind) {
-        CompositeSplatsWith<decltype(kind)::value>(splats, rows, count, sampler, marks, planes,
-                                                   rowBegin, rowEnd);
+        CompositeSplatsWith<decltype(kind)::value>(splats, rows, count, sampler, stamps, marks,
+                                                   planes, rowBegin, rowEnd);
     };
     if (marks != nullptr && !marks->isCombined) {
         with(std::integral_constant<Kind, Kind::Vector>{});
@@ -525,10 +616,10 @@ HWY_EXPORT(CompositeSplats);
 HWY_EXPORT(CompositeTarget);
 
 void compositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
-                     const FootprintSampler* sampler, const MarkSampler* marks,
-                     ColorPlanes& planes, int rowBegin, int rowEnd) {
-    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, rows, count, sampler, marks, planes, rowBegin,
-                                          rowEnd);
+                     const FootprintSampler* sampler, const FootprintStamps* stamps,
+                     const MarkSampler* marks, ColorPlanes& planes, int rowBegin, int rowEnd) {
+    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, rows, count, sampler, stamps, marks, planes,
+                                          rowBegin, rowEnd);
 }
 
 const char* compositeTarget() { return HWY_DYNAMIC_DISPATCH(CompositeTarget)(); }

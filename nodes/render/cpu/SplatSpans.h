@@ -34,12 +34,15 @@ inline RowSpan rowSpanOf(const SplatRaster& splat) {
 /// ulp). A pixel's arithmetic does not depend on the row range or on which lane holds it, so
 /// the image is the same for any split of the rows among threads.
 ///
+/// Splats set up as stamped (SplatRaster::kStamped, orthographic views) take their footprint
+/// from `stamps`, the SplatSetup's FootprintStamps, instead of the sampler.
+///
 /// With `marks`, vector splats (the table through the texture operator, with the opacity of
 /// one voxel's slab) or combined splats (the scalar medium, its colour changed by the marks),
 /// as the GL vector splat fragment shader draws them (detail/VectorSplatShaders.h).
 void compositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
-                     const FootprintSampler* sampler, const MarkSampler* marks,
-                     ColorPlanes& planes, int rowBegin, int rowEnd);
+                     const FootprintSampler* sampler, const FootprintStamps* stamps,
+                     const MarkSampler* marks, ColorPlanes& planes, int rowBegin, int rowEnd);
 
 /// @brief The instruction set compositeSplats() runs with on this CPU ("AVX2", "AVX3" …).
 const char* compositeTarget();

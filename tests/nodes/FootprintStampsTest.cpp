@@ -1,0 +1,144 @@
+// render::cpu::FootprintStamps, the footprint of an orthographic batch's unit-size splats
+// tabulated per sub-pixel phase: where SplatSetup makes them, how close a splat's blend is to
+// the footprint it stands for (the stated error), that a stamped splat's box holds every pixel
+// its footprint reaches, and how far the image moves from the exact lookup's.
+#include "nodes/render/cpu/FootprintStamps.h"
+
+#include "SplatSpansReference.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <iostream>
+#include <string>
+#include <utility>
+
+namespace texsplat::render::cpu {
+namespace {
+
+using test::CompositeWorkload;
+using test::WorkloadCamera;
+
+TEST(FootprintStamps, areMadeForOrthographicViewsOfThePapersKernelOnly) {
+    EXPECT_NE(test::compositeWorkload("blob32", "texture", WorkloadCamera::Orthographic, 128)
+                  .stamps(),
+              nullptr);
+    // A homography per splat; the truncated Gaussian's edge; the polygonal fan's texture.
+    EXPECT_EQ(test::compositeWorkload("blob32", "texture", WorkloadCamera::Perspective, 128)
+                  .stamps(),
+              nullptr);
+    EXPECT_EQ(
+        test::compositeWorkload("blob32", "texture-gaussian", WorkloadCamera::Orthographic, 128)
+            .stamps(),
+        nullptr);
+    EXPECT_EQ(test::compositeWorkload("blob32", "polygon", WorkloadCamera::Orthographic, 128)
+                  .stamps(),
+              nullptr);
+    // Splats about a pixel wide bend too much between phases for the blend.
+    const CompositeWorkload tiny =
+        test::compositeWorkload("blob32", "texture", WorkloadCamera::Orthographic, 24);
+    EXPECT_EQ(tiny.stamps(), nullptr);
+}
+
+// Every `step`-th splat of `workload`: the blend at every pixel of a margin of 2 around its box
+// against the exact footprint there (0 outside the box). Returns the largest difference.
+double largestBlendDifference(const CompositeWorkload& workload, std::size_t step) {
+    const FootprintStamps& stamps = *workload.stamps();
+    double largest = 0.0;
+    std::uint64_t lost = 0;
+    for (std::size_t i = 0; i < workload.splats.size(); i += step) {
+        const SplatRaster& splat = workload.splats[i];
+        EXPECT_EQ(splat.flags, SplatRaster::kStamped);
+        const float* q = splat.square;
+        for (int row = splat.rowBegin - 2; row < splat.rowEnd + 2; ++row) {
+            for (int column = splat.columnBegin - 2; column < splat.columnEnd + 2; ++column) {
+                const auto x = static_cast<float>(column);
+                const auto y = static_cast<float>(row);
+                const float exact =
+                    test::sampleFootprint(*workload.sampler, q[0] * x + (q[1] * y + q[2]),
+                                          q[3] * x + (q[4] * y + q[5])) *
+                    splat.lengthScale;
+                const bool inBox = row >= splat.rowBegin && row < splat.rowEnd &&
+                                   column >= splat.columnBegin && column < splat.columnEnd;
+                const float blend =
+                    inBox ? stamps.blend(splat.stampPhase, splat.stampFraction[0],
+                                         splat.stampFraction[1], column - splat.stampColumn,
+                                         row - splat.stampRow)
+                          : 0.0f;
+                lost += exact > 0.0f && !inBox ? 1 : 0;
+                largest = std::max(largest, static_cast<double>(std::abs(blend - exact)));
+            }
+        }
+    }
+    EXPECT_EQ(lost, 0u) << "pixels the footprint reaches outside the stamped box";
+    return largest;
+}
+
+TEST(FootprintStamps, blendWithinTheStatedErrorOfTheFootprintAndTheBoxHoldsIt) {
+    // Splats about 4.5 and 9 pixels in radius (blob32 in 128², blob64 in 512², the size of
+    // Marschner–Lobb 128³'s in 512²: 4.5).
+    for (const auto& [dataset, size] : std::array<std::pair<const char*, int>, 2>{
+             {{"blob32", 128}, {"blob64", 512}}}) {
+        SCOPED_TRACE(dataset);
+        const CompositeWorkload workload =
+            test::compositeWorkload(dataset, "texture", WorkloadCamera::Orthographic, size);
+        ASSERT_NE(workload.stamps(), nullptr);
+        const FootprintStamps& stamps = *workload.stamps();
+        EXPECT_GT(stamps.error, 0.0f);
+        EXPECT_LE(stamps.error, FootprintStamps::kTolerance * stamps.peak);
+        // The error is measured midway between phases, where a bilinear blend strays farthest;
+        // at the splats' own phases the blend stays within it (and the rounding of (a, b)).
+        const double largest = largestBlendDifference(workload, 5);
+        EXPECT_LE(largest, 1.05 * stamps.error + 1e-6 * stamps.peak);
+        EXPECT_GT(largest, 0.2 * stamps.error) << "the splats' phases should test the blend";
+        std::cout << "[ stamps   ] " << dataset << " in " << size << "²: error "
+                  << stamps.error / stamps.peak << " of the peak, largest at the splats "
+                  << largest / stamps.peak << "\n";
+    }
+}
+
+TEST(FootprintStamps, theImageIsTheExactLookupsWithinTheStampsError) {
+    // The whole blob64 frame in 512², stamped and with the exact lookup, both through the SIMD
+    // loop: a pixel's difference is at most the sum over its splats of what the footprint's
+    // error changes, (|C| + τ·dst)·error each; in practice the errors of neighbouring splats
+    // do not add up, and the image moves by about the stamps' relative error.
+    const CompositeWorkload stamped =
+        test::compositeWorkload("blob64", "texture", WorkloadCamera::Orthographic, 512);
+    const CompositeWorkload exact = test::compositeWorkload(
+        "blob64", "texture", WorkloadCamera::Orthographic, 512, true, false);
+    ASSERT_NE(stamped.stamps(), nullptr);
+    const glm::vec4 background(0.0f);
+    ColorPlanes fromStamps(stamped.width, stamped.height, background, false);
+    ColorPlanes fromExact(exact.width, exact.height, background, false);
+    compositeSplats(stamped.splats.data(), stamped.rows.data(), stamped.splats.size(),
+                    stamped.sampler.get(), stamped.stamps(), nullptr, fromStamps, 0,
+                    stamped.height);
+    compositeSplats(exact.splats.data(), exact.rows.data(), exact.splats.size(),
+                    exact.sampler.get(), nullptr, nullptr, fromExact, 0, exact.height);
+    double peak = 0.0;
+    double largest = 0.0;
+    double squares = 0.0;
+    for (int row = 0; row < stamped.height; ++row) {
+        for (int column = 0; column < stamped.width; ++column) {
+            const double a = fromExact.alpha(row)[column];
+            const double difference = std::abs(fromStamps.alpha(row)[column] - a);
+            peak = std::max(peak, a);
+            largest = std::max(largest, difference);
+            squares += difference * difference;
+        }
+    }
+    ASSERT_GT(peak, 0.1);
+    const double relativeError = stamped.stamps()->error / stamped.stamps()->peak;
+    const double rms = std::sqrt(squares / (stamped.width * stamped.height));
+    std::cout << "[ stamps   ] blob64 in 512², alpha: largest difference " << largest / peak
+              << " of the peak, RMS " << rms / peak << " (stamps' error " << relativeError
+              << ")\n";
+    EXPECT_LE(largest, 4.0 * relativeError * peak);
+    EXPECT_LE(rms, relativeError * peak);
+}
+
+} // namespace
+} // namespace texsplat::render::cpu
