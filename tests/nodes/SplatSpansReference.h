@@ -5,6 +5,7 @@
 // micro-benchmark (tests/benchmarks/CpuRasterizerBenchmark.cpp) times the SIMD path against it.
 
 #include "nodes/NodeTypes.h"
+#include "nodes/OrthographicCamera.h"
 #include "nodes/VolumeData.h"
 #include "nodes/bench/BenchDataset.h"
 #include "nodes/bench/BenchMethod.h"
@@ -154,6 +155,8 @@ enum class WorkloadCamera {
     Perspective,  ///< `texsplat bench`'s perspective camera: a homography per splat
     Inside, ///< that camera moved to the volume's centre, its near plane a tenth of the volume's
             ///< size away: splats behind the eye and across the near plane, clipped per pixel
+    OrthographicClose, ///< the orthographic camera showing a third of the height: splats three
+                       ///< times as wide, many across the image's borders
 };
 
 /// @brief The splats of one `texsplat bench` frame set up for compositeSplats(), in order.
@@ -188,11 +191,17 @@ inline CompositeWorkload compositeWorkload(const std::string& dataset, const std
                                            bool discRadius = true, bool stamped = true) {
     nodes::registerNodeTypes();
     const bench::BenchDataset source = bench::BenchDataset::fromName(dataset);
+    const bool orthographic =
+        camera == WorkloadCamera::Orthographic || camera == WorkloadCamera::OrthographicClose;
     const sg::Separator::Ptr root =
         source.scene(bench::BenchMethod::fromName(method).makeNode(0), 1.0f,
-                     camera == WorkloadCamera::Orthographic ? render::FramingCamera::Orthographic
-                                                            : render::FramingCamera::Perspective);
+                     orthographic ? render::FramingCamera::Orthographic
+                                  : render::FramingCamera::Perspective);
     const auto& volume = static_cast<const nodes::VolumeData&>(*root->child(2));
+    if (camera == WorkloadCamera::OrthographicClose) {
+        auto& close = static_cast<nodes::OrthographicCamera&>(*root->child(0));
+        close.height.setValue(close.height.value() / 3.0f);
+    }
     if (camera == WorkloadCamera::Inside) {
         auto& perspective = static_cast<nodes::Camera&>(*root->child(0));
         perspective.position.setValue(volume.bounds().center());

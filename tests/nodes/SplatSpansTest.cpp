@@ -150,6 +150,29 @@ TEST(SplatSpans, matchesScalarReferenceOrthographic) {
     }
 }
 
+TEST(SplatSpans, matchesScalarReferenceForStampedSplatsAcrossTheImagesBorders) {
+    // Stamped splats three times as wide (blend error ~1e-4): many reach past the image's
+    // edges, where the boxes are clipped and the loop starts inside a stamp's row.
+    const CompositeWorkload workload =
+        test::compositeWorkload("blob32", "texture", WorkloadCamera::OrthographicClose, 128);
+    ASSERT_NE(workload.stamps(), nullptr);
+    std::size_t left = 0;
+    std::size_t right = 0;
+    std::size_t top = 0;
+    std::size_t bottom = 0;
+    for (const SplatRaster& splat : workload.splats) {
+        ASSERT_EQ(splat.flags, SplatRaster::kStamped);
+        left += splat.stampColumn < 0 ? 1 : 0;
+        right += splat.stampColumn + workload.stamps()->columns > workload.width ? 1 : 0;
+        top += splat.stampRow < 0 ? 1 : 0;
+        bottom += splat.stampRow + workload.stamps()->rows > workload.height ? 1 : 0;
+    }
+    // The blob fills the view's left, right and top edges (its lower part is empty).
+    EXPECT_GT(std::min({left, right, top}), 50u)
+        << left << " " << right << " " << top << " " << bottom;
+    expectMatchesReference(workload);
+}
+
 TEST(SplatSpans, matchesScalarReferencePerspective) {
     const CompositeWorkload workload =
         test::compositeWorkload("blob32", "texture", WorkloadCamera::Perspective, 128);
