@@ -278,7 +278,7 @@ Cut Refiner::cutOfBudget(Cut start, const View& view, std::uint64_t maxSplats) {
         RefineBudget budget;
         budget.maxSplats = maxSplats;
         refiner.refine(budget);
-        return refiner.mCut;
+        return std::move(refiner.mCut); // a member of a local is not moved implicitly
     }
     return refineAtOnce(std::move(start), view, maxSplats);
 }
