@@ -37,10 +37,15 @@ TEST(FootprintStamps, areMadeForOrthographicViewsOfThePapersKernelOnly) {
     EXPECT_EQ(test::compositeWorkload("blob32", "polygon", WorkloadCamera::Orthographic, 128)
                   .stamps(),
               nullptr);
-    // Splats about a pixel wide bend too much between phases for the blend.
+    // Splats about a pixel wide bend too much between phases for the blend; splats 70 pixels
+    // wide would make a table of 289 × 70² floats and gain nothing.
     const CompositeWorkload tiny =
         test::compositeWorkload("blob32", "texture", WorkloadCamera::Orthographic, 24);
     EXPECT_EQ(tiny.stamps(), nullptr);
+    const CompositeWorkload wide =
+        test::compositeWorkload("blob32", "texture", WorkloadCamera::Orthographic, 1024);
+    EXPECT_EQ(wide.stamps(), nullptr);
+    EXPECT_FALSE(wide.splats.empty());
 }
 
 // Every `step`-th splat of `workload`: the blend at every pixel of a margin of 2 around its box

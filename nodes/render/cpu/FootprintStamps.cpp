@@ -26,8 +26,11 @@ float footprintAt(const FootprintSampler& sampler, const float (&squareFromPixel
 
 } // namespace
 
-bool FootprintStamps::suits(const FootprintSampler& sampler) {
-    return sampler.isRadial && sampler.hasPieces && sampler.reach <= 1.0f;
+bool FootprintStamps::suits(const FootprintSampler& sampler, const float (&halfExtent)[2]) {
+    // A stamp spans 2·halfExtent + 4 pixels at most (see the constructor).
+    const auto fits = [](float reach) { return 2.0f * reach + 4.0f <= kLargestSide; };
+    return sampler.isRadial && sampler.hasPieces && sampler.reach <= 1.0f &&
+           fits(halfExtent[0]) && fits(halfExtent[1]);
 }
 
 FootprintStamps::FootprintStamps(const FootprintSampler& sampler,

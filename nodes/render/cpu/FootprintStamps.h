@@ -59,8 +59,15 @@ struct FootprintStamps {
     float error = 0.0f; ///< the blend's largest |difference| from the footprint, times the scale
     float peak = 0.0f;  ///< the footprint's peak times the scale
 
-    /// @brief Whether a batch with `sampler` may be stamped (see above).
-    static bool suits(const FootprintSampler& sampler);
+    /// @brief The widest and tallest stamp made, in pixels: wider splats gain nothing from
+    /// stamps (the exact lookup's 16-lane vectors are as cheap per pixel there), and the
+    /// table grows with the square of the width (289 stamps of 32² floats: 1.2 MiB; a zoomed
+    /// view's splats may be thousands of pixels wide).
+    static constexpr int kLargestSide = 32;
+
+    /// @brief Whether a batch with `sampler`, whose unit-size footprint reaches `halfExtent`
+    /// pixels from its centre, may be stamped (see above).
+    static bool suits(const FootprintSampler& sampler, const float (&halfExtent)[2]);
 
     /// @brief The stamps of unit-size splats whose pixel offset (x, y) from the centre maps to
     /// the square's (a, b) = squareFromPixel · (x, y), whose footprint reaches at most

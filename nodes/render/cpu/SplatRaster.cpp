@@ -301,7 +301,7 @@ SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
 
 const FootprintStamps* SplatSetup::stampFootprint(const FootprintSampler& sampler) {
     mStamps.reset();
-    if (mIsAffine && FootprintStamps::suits(sampler)) {
+    if (mIsAffine && FootprintStamps::suits(sampler, mHalfExtent)) {
         auto stamps = std::make_unique<const FootprintStamps>(sampler, mSquareFromPixel,
                                                               mHalfExtent, mLengthScale);
         if (stamps->error <= FootprintStamps::kTolerance * stamps->peak) {

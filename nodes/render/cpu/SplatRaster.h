@@ -196,7 +196,8 @@ public:
                std::size_t count, SplatRaster* out) const;
 
     /// @brief For an orthographic view of scalar splats whose footprint `sampler` suits stamps
-    /// (FootprintStamps::suits()), tabulates it per sub-pixel phase: unit-size splats that do
+    /// (FootprintStamps::suits(): the paper's kernel, splats at most kLargestSide pixels
+    /// wide), tabulates it per sub-pixel phase: unit-size splats that do
     /// not cross the near or far plane are then set up as stamped. Returns the stamps, or null
     /// where they do not apply or would stray from the footprint by more than
     /// FootprintStamps::kTolerance of its peak.
