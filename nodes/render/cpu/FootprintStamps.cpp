@@ -84,9 +84,8 @@ FootprintStamps::FootprintStamps(const FootprintSampler& sampler,
                     }
                     const float footprint = exact((qx + 0.5) / kPhases, (qy + 0.5) / kPhases,
                                                   column, row);
-                    error = std::max(error, std::abs(blend(phaseIndex(qx, qy), 0.5f, 0.5f,
-                                                           column, row) -
-                                                     footprint));
+                    error = std::max(
+                        error, std::abs(blend(phase, 0.5f, 0.5f, column, row) - footprint));
                 }
             }
         }

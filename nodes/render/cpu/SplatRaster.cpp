@@ -285,8 +285,6 @@ SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
         raster.square[3 * row + 1] = sy;
         raster.square[3 * row + 2] = sx * dx + sy * dy;
     }
-    raster.square[6] = 0.0f;
-    raster.square[7] = 0.0f;
     raster.square[8] = 1.0f;
     raster.depth[0] = mDepthGradient[0];
     raster.depth[1] = mDepthGradient[1];

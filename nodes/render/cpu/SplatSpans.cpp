@@ -477,7 +477,8 @@ HWY_INLINE void CompositeStampedSplat(const Batch<D>& batch, const SplatRaster& 
             hn::Vec<D> weight;
             medium.template attenuate<kDepth>(d, f, alpha, weight);
             const auto transmitted = hn::Sub(one, alpha);
-            Over<kClamp>(d, redRow, column, transmitted, Clamp<kClamp>(d, hn::Mul(medium.red, weight)));
+            Over<kClamp>(d, redRow, column, transmitted,
+                         Clamp<kClamp>(d, hn::Mul(medium.red, weight)));
             Over<kClamp>(d, greenRow, column, transmitted,
                          Clamp<kClamp>(d, hn::Mul(medium.green, weight)));
             Over<kClamp>(d, blueRow, column, transmitted,
@@ -516,11 +517,13 @@ HWY_INLINE void CompositeSplatAtDepth(const Batch<D>& batch, const SplatRaster& 
     }
     const auto at = [&](auto depth) {
         constexpr Depth kDepth = decltype(depth)::value;
-        if (kKind == Kind::RadialPieces && (splat.flags & SplatRaster::kStamped) != 0) {
-            CompositeStampedSplat<kClamp, kDepth>(batch, splat, first, last);
-        } else {
-            CompositeSplat<kKind, kClamp, kDepth>(batch, splat, first, last);
+        if constexpr (kKind == Kind::RadialPieces) { // only the paper's kernel is stamped
+            if ((splat.flags & SplatRaster::kStamped) != 0) {
+                CompositeStampedSplat<kClamp, kDepth>(batch, splat, first, last);
+                return;
+            }
         }
+        CompositeSplat<kKind, kClamp, kDepth>(batch, splat, first, last);
     };
     switch (depthOf(splat, batch.sampler)) {
     case Depth::Short:
