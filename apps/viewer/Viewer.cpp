@@ -5,6 +5,7 @@
 #include "apps/viewer/GlfwWindow.h"
 #include "apps/viewer/OrbitController.h"
 #include "apps/viewer/ProgressiveRefinement.h"
+#include "apps/viewer/TransferFunctionEditor.h"
 #include "apps/viewer/ViewerFrames.h"
 #include "apps/viewer/ViewerPanel.h"
 #include "nodes/Camera.h"
@@ -161,6 +162,8 @@ void Viewer::run() {
     // The first frame is coarse as well, then refines while idle: a big volume shows within about
     // a second of its load instead of after a full-resolution frame (the 1024^3 cloud: 3.5 s).
     refinement.beginInteraction();
+    TransferFunctionEditor transfer(root);
+    bool editingTransfer = false; // a panel control of the transfer function held last frame
 
     sg::RealTimeClock clock;
     sg::SensorQueue queue(clock);
@@ -288,14 +291,25 @@ void Viewer::run() {
                                statistics.time(sg::RenderPhase::Classify);
             report.splats = lastSplats;
             report.triangles = statistics.triangles;
-            if (!dragging && refinement.stage() != ProgressiveRefinement::Stage::FullQuality) {
+            if (!dragging && !editingTransfer &&
+                refinement.stage() != ProgressiveRefinement::Stage::FullQuality) {
                 refineStep.schedule(); // the next step once the queue is idle
             }
         }
         report.stage = refinement.stage();
         report.budget = refinement.budget();
         frames.present(presenter, mOptions.background, size);
-        panel.draw(report, refinement, animation);
+        // A transfer-function edit redraws coarse while its control is held, then refines, as
+        // a drag of the view does.
+        const bool wasEditingTransfer = editingTransfer;
+        editingTransfer = panel.draw(report, refinement, animation, transfer);
+        if (editingTransfer) {
+            refinement.beginInteraction();
+            refineStep.unschedule();
+        } else if (wasEditingTransfer &&
+                   refinement.stage() != ProgressiveRefinement::Stage::FullQuality) {
+            refineStep.schedule();
+        }
         window.swapBuffers();
     }
 

@@ -1,15 +1,87 @@
 #include "apps/viewer/ViewerPanel.h"
 
+#include "apps/viewer/TransferFunctionEditor.h"
+
 #ifdef TEXSPLAT_VIEWER_PANEL
 #include <epoxy/gl.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
+
+#include <string>
+#include <vector>
 #endif
 
 namespace texsplat::apps {
 
 #ifdef TEXSPLAT_VIEWER_PANEL
+
+namespace {
+
+// The transfer-function section; true while one of its controls is held or changed a field.
+bool drawTransferFunction(TransferFunctionEditor& editor) {
+    if (editor.isEmpty() || !ImGui::CollapsingHeader("transfer function", ImGuiTreeNodeFlags_DefaultOpen)) {
+        return false;
+    }
+    bool editing = false;
+    if (editor.count() > 1) {
+        std::vector<std::string> labels;
+        std::vector<const char*> items;
+        for (std::size_t index = 0; index < editor.count(); ++index) {
+            labels.push_back(editor.label(index));
+        }
+        for (const std::string& label : labels) {
+            items.push_back(label.c_str());
+        }
+        int selected = static_cast<int>(editor.selected());
+        if (ImGui::Combo("function", &selected, items.data(), static_cast<int>(items.size()))) {
+            editor.select(static_cast<std::size_t>(selected));
+        }
+    }
+    if (editor.editsRange()) {
+        glm::vec2 range = editor.range();
+        const glm::vec2 bounds = editor.rangeBounds();
+        // Dragging across the control's width sweeps about the whole data range.
+        const float speed = (bounds.y - bounds.x) / 300.0f;
+        if (ImGui::DragFloatRange2("range", &range.x, &range.y, speed, bounds.x, bounds.y, "%.4g",
+                                   "%.4g", ImGuiSliderFlags_AlwaysClamp) &&
+            range.x < range.y) {
+            editor.setRange(range);
+            editing = true;
+        }
+        editing = editing || ImGui::IsItemActive();
+    }
+    if (editor.editsOpacity()) {
+        float factor = editor.opacityFactor();
+        if (ImGui::SliderFloat("opacity", &factor, 0.01f, 100.0f, "%.3gx",
+                               ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {
+            editor.setOpacityFactor(factor);
+            editing = true;
+        }
+        editing = editing || ImGui::IsItemActive();
+    }
+    if (editor.editsPreset()) {
+        const int preset = static_cast<int>(editor.preset());
+        const std::string* current = nodes::kColorPresetNames.name(preset);
+        if (ImGui::BeginCombo("colour map", current ? current->c_str() : "")) {
+            for (int value = 0; const std::string* name = nodes::kColorPresetNames.name(value);
+                 ++value) {
+                if (ImGui::Selectable(name->c_str(), value == preset) && value != preset) {
+                    editor.setPreset(static_cast<nodes::ColorPreset>(value));
+                    editing = true;
+                }
+            }
+            ImGui::EndCombo();
+        }
+    }
+    if (editor.isEdited() && ImGui::Button("reset")) {
+        editor.reset();
+        editing = true;
+    }
+    return editing;
+}
+
+} // namespace
 
 ViewerPanel::ViewerPanel(GLFWwindow* window) : mWindow(window) {
     IMGUI_CHECKVERSION();
@@ -32,8 +104,8 @@ bool ViewerPanel::wantsMouse() const { return ImGui::GetIO().WantCaptureMouse; }
 
 bool ViewerPanel::wantsKeyboard() const { return ImGui::GetIO().WantTextInput; }
 
-void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinement,
-                       sg::AnimationSpeed& animation) {
+bool ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinement,
+                       sg::AnimationSpeed& animation, TransferFunctionEditor& transfer) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
@@ -68,6 +140,7 @@ void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinem
             animation.setFactor(factor);
         }
     }
+    const bool editing = drawTransferFunction(transfer);
     ImGui::TextUnformatted(animation.isEmpty()
                                ? "drag: orbit  right/middle drag: pan  wheel: zoom  r: reset  "
                                  "q: quit"
@@ -76,6 +149,7 @@ void ViewerPanel::draw(const PanelReport& report, ProgressiveRefinement& refinem
     ImGui::End();
     ImGui::Render();
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    return editing;
 }
 
 #else
@@ -85,7 +159,10 @@ ViewerPanel::~ViewerPanel() = default;
 bool ViewerPanel::isAvailable() { return false; }
 bool ViewerPanel::wantsMouse() const { return false; }
 bool ViewerPanel::wantsKeyboard() const { return false; }
-void ViewerPanel::draw(const PanelReport&, ProgressiveRefinement&, sg::AnimationSpeed&) {}
+bool ViewerPanel::draw(const PanelReport&, ProgressiveRefinement&, sg::AnimationSpeed&,
+                       TransferFunctionEditor&) {
+    return false;
+}
 
 #endif
 

@@ -10,6 +10,8 @@ struct GLFWwindow;
 
 namespace texsplat::apps {
 
+class TransferFunctionEditor;
+
 /// @brief What the viewer's panel shows about the last frame.
 struct PanelReport {
     std::string renderer;     ///< what draws the frames: the CPU backend or the GL context
@@ -21,8 +23,9 @@ struct PanelReport {
 };
 
 /// @brief The viewer's ImGui overlay: the last frame's statistics, the refinement state, a
-/// slider for the interactive splat budget and, for a scene with ElapsedTime engines, the
-/// animation's pause and speed. Built only when the ImGui GLFW and OpenGL 3
+/// slider for the interactive splat budget, the transfer functions' range, opacity and colour map
+/// (TransferFunctionEditor) and, for a scene with ElapsedTime engines, the animation's pause and
+/// speed. Built only when the ImGui GLFW and OpenGL 3
 /// backends are available (Debian ships them as sources with libimgui-dev); otherwise every
 /// call does nothing and the viewer runs without a panel.
 class ViewerPanel {
@@ -44,10 +47,13 @@ public:
     /// @brief True while the panel takes typed keys (a slider's text entry: ctrl+click).
     bool wantsKeyboard() const;
 
-    /// @brief Draws the panel over the frame; may change the refinement's interactive budget
-    /// and the animation's pause and speed factor (hidden when it controls no engine).
-    void draw(const PanelReport& report, ProgressiveRefinement& refinement,
-              sg::AnimationSpeed& animation);
+    /// @brief Draws the panel over the frame; may change the refinement's interactive budget,
+    /// the animation's pause and speed factor (hidden when it controls no engine) and the
+    /// transfer functions (hidden when the scene has none). Returns true while a transfer-function
+    /// control is held or changed a field: the viewer draws coarse frames meanwhile, as while the
+    /// view moves.
+    bool draw(const PanelReport& report, ProgressiveRefinement& refinement,
+              sg::AnimationSpeed& animation, TransferFunctionEditor& transfer);
 
 private:
     GLFWwindow* mWindow;

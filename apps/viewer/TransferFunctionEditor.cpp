@@ -1,0 +1,175 @@
+#include "apps/viewer/TransferFunctionEditor.h"
+
+#include "nodes/detail/DataRange.h"
+#include "scenegraph/Error.h"
+#include "scenegraph/actions/SearchAction.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace texsplat::apps {
+
+namespace {
+
+std::vector<sg::Path> pathsOfType(sg::Node& root, const sg::NodeType& type,
+                                  sg::SearchAction::Interest interest) {
+    sg::SearchAction search;
+    search.setType(type);
+    search.setInterest(interest);
+    search.apply(root);
+    return search.paths();
+}
+
+} // namespace
+
+TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
+    for (const sg::Path& path :
+         pathsOfType(root, nodes::TransferFunction::classType(), sg::SearchAction::Interest::All)) {
+        auto node = std::static_pointer_cast<nodes::TransferFunction>(path.tail());
+        const bool seen = std::any_of(mFunctions.begin(), mFunctions.end(),
+                                      [&](const Function& function) { return function.node == node; });
+        if (seen) { // a USEd node is found once per path
+            continue;
+        }
+        Function function;
+        function.node = node;
+        function.original = {node->range.value(),     node->range.isDefault(),
+                             node->rangeMode.value(), node->rangeMode.isDefault(),
+                             node->opacities.values(), node->opacities.isDefault(),
+                             node->preset.value(),    node->preset.isDefault()};
+        mFunctions.push_back(std::move(function));
+    }
+    const std::vector<sg::Path> volumes =
+        pathsOfType(root, nodes::VolumeData::classType(), sg::SearchAction::Interest::First);
+    if (!volumes.empty()) {
+        mVolume = std::static_pointer_cast<nodes::VolumeData>(volumes.front().tail());
+    }
+}
+
+std::string TransferFunctionEditor::label(std::size_t index) const {
+    const std::string& name = mFunctions.at(index).node->name();
+    return name.empty() ? "TransferFunction " + std::to_string(index + 1) : name;
+}
+
+void TransferFunctionEditor::select(std::size_t index) {
+    if (index >= mFunctions.size()) {
+        throw DataError("transfer function editor: no function " + std::to_string(index) +
+                        " (the scene has " + std::to_string(mFunctions.size()) + ")");
+    }
+    mSelected = index;
+}
+
+bool TransferFunctionEditor::editsRange() const {
+    const nodes::TransferFunction& node = *current().node;
+    return !node.range.isConnected() && !node.rangeMode.isConnected();
+}
+
+glm::vec2 TransferFunctionEditor::range() {
+    Function& function = current();
+    if (!function.range) {
+        const nodes::TransferFunction& node = *function.node;
+        function.range = mVolume ? node.dataScale(*mVolume->scalarGrid()).range : node.range.value();
+    }
+    return *function.range;
+}
+
+glm::vec2 TransferFunctionEditor::dataRange() {
+    if (!mDataRange) {
+        if (mVolume) {
+            mDataRange = glm::vec2(nodes::detail::valueRange(*mVolume->scalarGrid()));
+        } else {
+            const glm::vec2 own = current().original.range;
+            const float half = 0.5f * std::abs(own.y - own.x);
+            mDataRange = glm::vec2(std::min(own.x, own.y) - half, std::max(own.x, own.y) + half);
+        }
+    }
+    return *mDataRange;
+}
+
+glm::vec2 TransferFunctionEditor::rangeBounds() {
+    const glm::vec2 data = dataRange();
+    const glm::vec2 now = range();
+    return {std::min(data.x, now.x), std::max(data.y, now.y)};
+}
+
+void TransferFunctionEditor::setRange(glm::vec2 range) {
+    if (!std::isfinite(range.x) || !std::isfinite(range.y) || !(range.x < range.y)) {
+        throw DataError("transfer function editor: a range must be finite and increasing, got " +
+                        std::to_string(range.x) + " " + std::to_string(range.y));
+    }
+    Function& function = current();
+    function.node->rangeMode.setValue(nodes::RangeMode::Fixed);
+    function.node->range.setValue(range);
+    function.range = range;
+}
+
+bool TransferFunctionEditor::editsOpacity() const {
+    const Function& function = current();
+    return !function.original.opacities.empty() && !function.node->opacities.isConnected();
+}
+
+float TransferFunctionEditor::opacityFactor() const { return current().opacityFactor; }
+
+void TransferFunctionEditor::setOpacityFactor(float factor) {
+    if (!std::isfinite(factor) || !(factor > 0.0f)) {
+        throw DataError("transfer function editor: an opacity factor must be finite and > 0, got " +
+                        std::to_string(factor));
+    }
+    Function& function = current();
+    std::vector<float> opacities = function.original.opacities;
+    for (float& opacity : opacities) {
+        opacity *= factor;
+    }
+    function.node->opacities.setValue(std::move(opacities));
+    function.opacityFactor = factor;
+}
+
+bool TransferFunctionEditor::editsPreset() const {
+    const nodes::TransferFunction& node = *current().node;
+    return node.colors.isEmpty() && node.colorMapFile.value().empty() && !node.preset.isConnected();
+}
+
+nodes::ColorPreset TransferFunctionEditor::preset() const {
+    return current().node->preset.as<nodes::ColorPreset>();
+}
+
+void TransferFunctionEditor::setPreset(nodes::ColorPreset preset) {
+    current().node->preset.setValue(preset);
+}
+
+bool TransferFunctionEditor::isEdited() const {
+    const Function& function = current();
+    const nodes::TransferFunction& node = *function.node;
+    const Original& original = function.original;
+    return node.range.value() != original.range || node.rangeMode.value() != original.rangeMode ||
+           node.opacities.values() != original.opacities || node.preset.value() != original.preset;
+}
+
+void TransferFunctionEditor::reset() {
+    Function& function = current();
+    nodes::TransferFunction& node = *function.node;
+    const Original& original = function.original;
+    // Only what changed is set (each set notifies); the default flags come back with the
+    // values, since AUTO takes the range from the data while `range` is default.
+    if (node.range.value() != original.range || node.range.isDefault() != original.rangeIsDefault) {
+        node.range.setValue(original.range);
+        node.range.setDefault(original.rangeIsDefault);
+    }
+    if (node.rangeMode.value() != original.rangeMode ||
+        node.rangeMode.isDefault() != original.rangeModeIsDefault) {
+        node.rangeMode.setValue(original.rangeMode);
+        node.rangeMode.setDefault(original.rangeModeIsDefault);
+    }
+    if (node.opacities.values() != original.opacities) {
+        node.opacities.setValue(original.opacities);
+        node.opacities.setDefault(original.opacitiesIsDefault);
+    }
+    if (node.preset.value() != original.preset) {
+        node.preset.setValue(original.preset);
+        node.preset.setDefault(original.presetIsDefault);
+    }
+    function.opacityFactor = 1.0f;
+    function.range.reset();
+}
+
+} // namespace texsplat::apps

@@ -1,0 +1,121 @@
+#pragma once
+
+#include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
+#include "scenegraph/Node.h"
+
+#include <glm/vec2.hpp>
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace texsplat::apps {
+
+/// @brief What the viewer's panel edits of a scene's transfer functions: the value range, a
+/// factor on the opacities and the colour preset of one TransferFunction at a time.
+///
+/// It edits the nodes' fields, so the scene graph notices an edit like any other change and the
+/// splat nodes re-classify from their grid's value ranges without rebuilding them
+/// (docs/octree.md, "Transfer-function edits"). The range it shows and sets is in data values:
+/// setting it makes the node's `rangeMode` FIXED. Its bounds are the data's value range, read
+/// (once, when first asked for) from the scene's first VolumeData, as the colour legend reads it
+/// (annotation::ColorLegend::ofScene()). A field that is connected follows its connection and is
+/// not offered; the preset only while neither `colors` nor `colorMapFile` replaces it. reset()
+/// restores every field as it was when the editor was made, default flags included, so a range
+/// that came from the data comes from the data again.
+class TransferFunctionEditor {
+public:
+    /// @brief Finds the TransferFunction nodes under `root` (in traversal order, each once) and
+    /// the scene's first VolumeData, and remembers the fields it may edit.
+    explicit TransferFunctionEditor(sg::Node& root);
+
+    /// @brief True when the scene has no TransferFunction.
+    bool isEmpty() const { return mFunctions.empty(); }
+
+    /// @brief How many transfer functions there are.
+    std::size_t count() const { return mFunctions.size(); }
+
+    /// @brief How the panel names function `index`: its node name, or its place in the scene.
+    std::string label(std::size_t index) const;
+
+    /// @brief The function the editing calls below apply to (0 at first).
+    std::size_t selected() const { return mSelected; }
+
+    /// @brief Selects function `index` (< count()).
+    void select(std::size_t index);
+
+    /// @brief Whether the range can be edited (`range` and `rangeMode` are not connected).
+    bool editsRange() const;
+
+    /// @brief The data values the selected function maps onto its colour map's ends now.
+    /// @throws what reading the volume throws (the first call, for a range from the data).
+    glm::vec2 range();
+
+    /// @brief The values range() may take: the data's smallest and largest value (for a scene
+    /// without VolumeData, the function's original range widened by half its width on each
+    /// side), widened to hold the present range.
+    /// @throws what reading the volume throws (the first call).
+    glm::vec2 rangeBounds();
+
+    /// @brief Maps `range` (low < high, finite) onto the colour map: `range` set, `rangeMode`
+    /// FIXED. Throws DataError for a range that is not increasing or not finite.
+    void setRange(glm::vec2 range);
+
+    /// @brief Whether the opacities can be scaled (`opacities` holds values, not connected).
+    bool editsOpacity() const;
+
+    /// @brief The factor on the original opacities (1 at first).
+    float opacityFactor() const;
+
+    /// @brief Sets `opacities` to `factor` (finite, > 0) times the original opacities. Throws
+    /// DataError for any other factor.
+    void setOpacityFactor(float factor);
+
+    /// @brief Whether the colour preset is in effect and can be set.
+    bool editsPreset() const;
+
+    /// @brief The preset in effect.
+    nodes::ColorPreset preset() const;
+
+    /// @brief Sets the preset.
+    void setPreset(nodes::ColorPreset preset);
+
+    /// @brief True when any field of the selected function differs from what it was at first.
+    bool isEdited() const;
+
+    /// @brief Restores the selected function's fields (values and default flags).
+    void reset();
+
+private:
+    // What an editable field was when the editor was made.
+    struct Original {
+        glm::vec2 range;
+        bool rangeIsDefault;
+        int rangeMode;
+        bool rangeModeIsDefault;
+        std::vector<float> opacities;
+        bool opacitiesIsDefault;
+        int preset;
+        bool presetIsDefault;
+    };
+    struct Function {
+        std::shared_ptr<nodes::TransferFunction> node;
+        Original original;
+        float opacityFactor = 1.0f;
+        std::optional<glm::vec2> range; // the range in effect, once asked for
+    };
+
+    Function& current() { return mFunctions[mSelected]; }
+    const Function& current() const { return mFunctions[mSelected]; }
+    glm::vec2 dataRange();
+
+    std::vector<Function> mFunctions;
+    std::shared_ptr<nodes::VolumeData> mVolume;
+    std::optional<glm::vec2> mDataRange; // the volume's value range, once asked for
+    std::size_t mSelected = 0;
+};
+
+} // namespace texsplat::apps
