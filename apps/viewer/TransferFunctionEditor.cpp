@@ -1,6 +1,7 @@
 #include "apps/viewer/TransferFunctionEditor.h"
 
 #include "nodes/detail/DataRange.h"
+#include "nodes/volume/ValueHistogram.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/SearchAction.h"
 
@@ -20,6 +21,13 @@ std::vector<sg::Path> pathsOfType(sg::Node& root, const sg::NodeType& type,
     return search.paths();
 }
 
+void checkFinite(glm::vec2 point) {
+    if (!std::isfinite(point.x) || !std::isfinite(point.y)) {
+        throw DataError("transfer function editor: an opacity point must be finite, got " +
+                        std::to_string(point.x) + " " + std::to_string(point.y));
+    }
+}
+
 } // namespace
 
 TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
@@ -33,10 +41,12 @@ TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
         }
         Function function;
         function.node = node;
-        function.original = {node->range.value(),     node->range.isDefault(),
-                             node->rangeMode.value(), node->rangeMode.isDefault(),
-                             node->opacities.values(), node->opacities.isDefault(),
-                             node->preset.value(),    node->preset.isDefault()};
+        function.original = {node->range.value(),         node->range.isDefault(),
+                             node->rangeMode.value(),     node->rangeMode.isDefault(),
+                             node->opacityValues.values(), node->opacityValues.isDefault(),
+                             node->opacities.values(),     node->opacities.isDefault(),
+                             node->preset.value(),        node->preset.isDefault()};
+        function.points = pointsOf(function.original);
         mFunctions.push_back(std::move(function));
     }
     const std::vector<sg::Path> volumes =
@@ -44,6 +54,16 @@ TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
     if (!volumes.empty()) {
         mVolume = std::static_pointer_cast<nodes::VolumeData>(volumes.front().tail());
     }
+}
+
+std::vector<glm::vec2> TransferFunctionEditor::pointsOf(const Original& original) {
+    std::vector<glm::vec2> points;
+    if (original.opacityValues.size() == original.opacities.size()) {
+        for (std::size_t index = 0; index < original.opacities.size(); ++index) {
+            points.emplace_back(original.opacityValues[index], original.opacities[index]);
+        }
+    }
+    return points;
 }
 
 std::string TransferFunctionEditor::label(std::size_t index) const {
@@ -105,7 +125,43 @@ void TransferFunctionEditor::setRange(glm::vec2 range) {
 
 bool TransferFunctionEditor::editsOpacity() const {
     const Function& function = current();
-    return !function.original.opacities.empty() && !function.node->opacities.isConnected();
+    return !function.points.empty() && !function.node->opacities.isConnected() &&
+           !function.node->opacityValues.isConnected();
+}
+
+void TransferFunctionEditor::moveOpacityPoint(std::size_t index, glm::vec2 point) {
+    checkFinite(point);
+    std::vector<glm::vec2>& points = current().points;
+    if (index >= points.size()) {
+        throw DataError("transfer function editor: no opacity point " + std::to_string(index));
+    }
+    const float lowest = index > 0 ? points[index - 1].x : 0.0f;
+    const float highest = index + 1 < points.size() ? points[index + 1].x : 1.0f;
+    points[index] = glm::vec2(std::clamp(point.x, lowest, highest), std::max(point.y, 0.0f));
+    writeOpacities();
+}
+
+std::size_t TransferFunctionEditor::addOpacityPoint(glm::vec2 point) {
+    checkFinite(point);
+    std::vector<glm::vec2>& points = current().points;
+    const glm::vec2 added(std::clamp(point.x, 0.0f, 1.0f), std::max(point.y, 0.0f));
+    const auto after = std::upper_bound(points.begin(), points.end(), added,
+                                        [](glm::vec2 a, glm::vec2 b) { return a.x < b.x; });
+    const auto index = static_cast<std::size_t>(after - points.begin());
+    points.insert(after, added);
+    writeOpacities();
+    return index;
+}
+
+void TransferFunctionEditor::removeOpacityPoint(std::size_t index) {
+    std::vector<glm::vec2>& points = current().points;
+    if (index >= points.size()) {
+        throw DataError("transfer function editor: no opacity point " + std::to_string(index));
+    }
+    if (points.size() > 1) {
+        points.erase(points.begin() + static_cast<std::ptrdiff_t>(index));
+        writeOpacities();
+    }
 }
 
 float TransferFunctionEditor::opacityFactor() const { return current().opacityFactor; }
@@ -115,13 +171,32 @@ void TransferFunctionEditor::setOpacityFactor(float factor) {
         throw DataError("transfer function editor: an opacity factor must be finite and > 0, got " +
                         std::to_string(factor));
     }
+    current().opacityFactor = factor;
+    writeOpacities();
+}
+
+void TransferFunctionEditor::writeOpacities() {
     Function& function = current();
-    std::vector<float> opacities = function.original.opacities;
-    for (float& opacity : opacities) {
-        opacity *= factor;
+    std::vector<float> positions;
+    std::vector<float> opacities;
+    for (const glm::vec2 point : function.points) {
+        positions.push_back(point.x);
+        opacities.push_back(point.y * function.opacityFactor);
+    }
+    // Both fields before the function is used again: it checks that their sizes match then.
+    if (function.node->opacityValues.values() != positions) {
+        function.node->opacityValues.setValue(std::move(positions));
     }
     function.node->opacities.setValue(std::move(opacities));
-    function.opacityFactor = factor;
+}
+
+const std::vector<std::uint64_t>& TransferFunctionEditor::histogram(std::size_t bins) {
+    if (mHistogram.size() != bins) {
+        const glm::vec2 data = dataRange();
+        mHistogram = mVolume ? volume::valueHistogram(*mVolume->scalarGrid(), data.x, data.y, bins)
+                             : std::vector<std::uint64_t>(bins, 0);
+    }
+    return mHistogram;
 }
 
 bool TransferFunctionEditor::editsPreset() const {
@@ -142,6 +217,7 @@ bool TransferFunctionEditor::isEdited() const {
     const nodes::TransferFunction& node = *function.node;
     const Original& original = function.original;
     return node.range.value() != original.range || node.rangeMode.value() != original.rangeMode ||
+           node.opacityValues.values() != original.opacityValues ||
            node.opacities.values() != original.opacities || node.preset.value() != original.preset;
 }
 
@@ -160,6 +236,10 @@ void TransferFunctionEditor::reset() {
         node.rangeMode.setValue(original.rangeMode);
         node.rangeMode.setDefault(original.rangeModeIsDefault);
     }
+    if (node.opacityValues.values() != original.opacityValues) {
+        node.opacityValues.setValue(original.opacityValues);
+        node.opacityValues.setDefault(original.opacityValuesIsDefault);
+    }
     if (node.opacities.values() != original.opacities) {
         node.opacities.setValue(original.opacities);
         node.opacities.setDefault(original.opacitiesIsDefault);
@@ -168,6 +248,7 @@ void TransferFunctionEditor::reset() {
         node.preset.setValue(original.preset);
         node.preset.setDefault(original.presetIsDefault);
     }
+    function.points = pointsOf(original);
     function.opacityFactor = 1.0f;
     function.range.reset();
 }

@@ -7,6 +7,7 @@
 #include <glm/vec2.hpp>
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -14,8 +15,9 @@
 
 namespace texsplat::apps {
 
-/// @brief What the viewer's panel edits of a scene's transfer functions: the value range, a
-/// factor on the opacities and the colour preset of one TransferFunction at a time.
+/// @brief What the viewer's panel edits of a scene's transfer functions: the value range, the
+/// opacity control points (moved, added, removed), a factor on the opacities and the colour
+/// preset of one TransferFunction at a time, and the data's histogram the panel draws them over.
 ///
 /// It edits the nodes' fields, so the scene graph notices an edit like any other change and the
 /// splat nodes re-classify from their grid's value ranges without rebuilding them
@@ -64,15 +66,46 @@ public:
     /// FIXED. Throws DataError for a range that is not increasing or not finite.
     void setRange(glm::vec2 range);
 
-    /// @brief Whether the opacities can be scaled (`opacities` holds values, not connected).
+    /// @brief Whether the opacities can be edited: `opacities` and `opacityValues` hold as many
+    /// values (at least one) and neither is connected.
     bool editsOpacity() const;
 
-    /// @brief The factor on the original opacities (1 at first).
+    /// @brief The opacity control points the editor shapes, (position t in [0, 1] of the range,
+    /// opacity before the factor), in order; the function's own at first. The function's
+    /// `opacityValues` are their positions and its `opacities` their opacities times
+    /// opacityFactor().
+    const std::vector<glm::vec2>& opacityPoints() const { return current().points; }
+
+    /// @brief Moves point `index` (< opacityPoints().size()) to `point`: its position clamped to
+    /// [0, 1] and between its neighbours' (positions must not decrease), its opacity to >= 0.
+    /// Throws DataError for a point that is not finite or an index out of range.
+    void moveOpacityPoint(std::size_t index, glm::vec2 point);
+
+    /// @brief Adds a control point at `point` (position clamped to [0, 1], opacity to >= 0),
+    /// after the points at the same or a lower position; returns its index. Throws DataError for
+    /// a point that is not finite.
+    std::size_t addOpacityPoint(glm::vec2 point);
+
+    /// @brief Removes point `index`, unless it is the last one left (a function needs one).
+    /// Throws DataError for an index out of range.
+    void removeOpacityPoint(std::size_t index);
+
+    /// @brief The factor on the points' opacities (1 at first).
     float opacityFactor() const;
 
-    /// @brief Sets `opacities` to `factor` (finite, > 0) times the original opacities. Throws
+    /// @brief Sets `opacities` to `factor` (finite, > 0) times the points' opacities. Throws
     /// DataError for any other factor.
     void setOpacityFactor(float factor);
+
+    /// @brief How many of the data's values (the scene's first VolumeData) fall into each of
+    /// `bins` equal bins over dataRange(): made once per bin count (one walk over the grid's
+    /// non-empty voxels), all zero without VolumeData.
+    /// @throws what reading the volume throws.
+    const std::vector<std::uint64_t>& histogram(std::size_t bins);
+
+    /// @brief The data's smallest and largest value (see rangeBounds()).
+    /// @throws what reading the volume throws (the first call).
+    glm::vec2 dataRange();
 
     /// @brief Whether the colour preset is in effect and can be set.
     bool editsPreset() const;
@@ -96,6 +129,8 @@ private:
         bool rangeIsDefault;
         int rangeMode;
         bool rangeModeIsDefault;
+        std::vector<float> opacityValues;
+        bool opacityValuesIsDefault;
         std::vector<float> opacities;
         bool opacitiesIsDefault;
         int preset;
@@ -104,17 +139,23 @@ private:
     struct Function {
         std::shared_ptr<nodes::TransferFunction> node;
         Original original;
+        std::vector<glm::vec2> points; // the opacity control points, before the factor
         float opacityFactor = 1.0f;
         std::optional<glm::vec2> range; // the range in effect, once asked for
     };
 
     Function& current() { return mFunctions[mSelected]; }
     const Function& current() const { return mFunctions[mSelected]; }
-    glm::vec2 dataRange();
+    // The control points of `original`'s opacities; none when their positions do not match them
+    // (the function refuses such fields, so there is nothing to edit).
+    static std::vector<glm::vec2> pointsOf(const Original& original);
+    // Writes the selected function's points and factor into its fields.
+    void writeOpacities();
 
     std::vector<Function> mFunctions;
     std::shared_ptr<nodes::VolumeData> mVolume;
     std::optional<glm::vec2> mDataRange; // the volume's value range, once asked for
+    std::vector<std::uint64_t> mHistogram; // over mDataRange, once asked for
     std::size_t mSelected = 0;
 };
 

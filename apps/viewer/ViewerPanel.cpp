@@ -8,6 +8,9 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <string>
 #include <vector>
 #endif
@@ -17,6 +20,131 @@ namespace texsplat::apps {
 #ifdef TEXSPLAT_VIEWER_PANEL
 
 namespace {
+
+// The opacity curve of the selected function over a histogram of the data under its range (log
+// counts): drag a point to move it, double-click to add one, right-click a point to remove it.
+// True while a point is dragged or when one was added or removed.
+bool drawOpacityCurve(TransferFunctionEditor& editor) {
+    const ImVec2 size(std::max(ImGui::CalcItemWidth(), 64.0f), 100.0f); // never 0: it divides
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImGui::InvisibleButton("opacity curve", size,
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+    const bool hovered = ImGui::IsItemHovered();
+    const bool active = ImGui::IsItemActive();
+    ImGui::SameLine();
+    ImGui::TextUnformatted("opacity\ncurve");
+    ImGuiStorage& storage = *ImGui::GetStateStorage();
+    const ImGuiID draggedKey = ImGui::GetID("dragged point");
+    const ImGuiID topKey = ImGui::GetID("curve top");
+    ImDrawList& draw = *ImGui::GetWindowDrawList();
+    draw.AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
+                       IM_COL32(16, 16, 20, 255));
+
+    const glm::vec2 range = editor.range();
+    const glm::vec2 data = editor.dataRange();
+    constexpr std::size_t kBins = 256;
+    const std::vector<std::uint64_t>& counts = editor.histogram(kBins);
+    const std::uint64_t most = *std::max_element(counts.begin(), counts.end());
+    if (most > 0) {
+        const auto columns = static_cast<int>(size.x);
+        for (int column = 0; column < columns; ++column) {
+            const float t = (static_cast<float>(column) + 0.5f) / size.x;
+            const float value = range.x + t * (range.y - range.x);
+            const float bin = (value - data.x) / (data.y - data.x) * static_cast<float>(kBins);
+            if (bin < 0.0f || bin >= static_cast<float>(kBins)) {
+                continue;
+            }
+            const auto count = static_cast<double>(counts[static_cast<std::size_t>(bin)]);
+            const auto height = static_cast<float>(std::log1p(count) /
+                                                   std::log1p(static_cast<double>(most)));
+            const float x = origin.x + static_cast<float>(column);
+            draw.AddLine(ImVec2(x, origin.y + size.y), ImVec2(x, origin.y + size.y * (1.0f - height)),
+                         IM_COL32(70, 70, 80, 255));
+        }
+    }
+
+    // The vertical scale: the largest opacity in effect, kept while a point is dragged so that
+    // the point stays under the pointer.
+    const std::vector<glm::vec2>& points = editor.opacityPoints();
+    const float factor = editor.opacityFactor();
+    int dragged = storage.GetInt(draggedKey, -1);
+    if (dragged >= static_cast<int>(points.size())) {
+        dragged = -1; // the points changed under it (reset, another function)
+    }
+    float top = storage.GetFloat(topKey, 1.0f);
+    if (dragged < 0) {
+        top = 0.0f;
+        for (const glm::vec2 point : points) {
+            top = std::max(top, point.y * factor);
+        }
+        top = top > 0.0f ? 1.1f * top : 1.0f;
+    }
+    const auto screen = [&](glm::vec2 point) {
+        return ImVec2(origin.x + point.x * size.x,
+                      origin.y + size.y * (1.0f - point.y * factor / top));
+    };
+    const ImVec2 mouse = ImGui::GetIO().MousePos;
+    const glm::vec2 atMouse((mouse.x - origin.x) / size.x,
+                            (1.0f - (mouse.y - origin.y) / size.y) * top / factor);
+    // The point within 6 pixels of the pointer, if any.
+    int near = -1;
+    float nearest = 36.0f;
+    for (std::size_t index = 0; index < points.size(); ++index) {
+        const ImVec2 at = screen(points[index]);
+        const float distance = (at.x - mouse.x) * (at.x - mouse.x) + (at.y - mouse.y) * (at.y - mouse.y);
+        if (distance <= nearest) {
+            nearest = distance;
+            near = static_cast<int>(index);
+        }
+    }
+
+    bool changed = false;
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left)) {
+        if (near < 0 && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left)) {
+            near = static_cast<int>(editor.addOpacityPoint(atMouse));
+            changed = true;
+        }
+        dragged = near;
+    }
+    if (hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right) && near >= 0) {
+        editor.removeOpacityPoint(static_cast<std::size_t>(near));
+        near = -1;
+        dragged = -1;
+        changed = true;
+    }
+    if (dragged >= 0 && active && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {
+        const glm::vec2 before = points[static_cast<std::size_t>(dragged)];
+        editor.moveOpacityPoint(static_cast<std::size_t>(dragged), atMouse);
+        changed = changed || points[static_cast<std::size_t>(dragged)] != before;
+    } else {
+        dragged = -1;
+    }
+    storage.SetInt(draggedKey, dragged);
+    storage.SetFloat(topKey, top);
+
+    // The curve, constant beyond its first and last point, and its points.
+    if (!points.empty()) {
+        std::vector<ImVec2> line{screen({0.0f, points.front().y})};
+        for (const glm::vec2 point : points) {
+            line.push_back(screen(point));
+        }
+        line.push_back(screen({1.0f, points.back().y}));
+        draw.AddPolyline(line.data(), static_cast<int>(line.size()), IM_COL32(240, 200, 90, 255),
+                         ImDrawFlags_None, 1.5f);
+        for (std::size_t index = 0; index < points.size(); ++index) {
+            const bool marked = static_cast<int>(index) == (dragged >= 0 ? dragged : near);
+            draw.AddCircleFilled(screen(points[index]), marked ? 5.0f : 3.5f,
+                                 marked ? IM_COL32(255, 255, 255, 255) : IM_COL32(240, 200, 90, 255));
+        }
+    }
+    const int shown = dragged >= 0 ? dragged : near;
+    if (shown >= 0 && (hovered || active)) {
+        const glm::vec2 point = points[static_cast<std::size_t>(shown)];
+        ImGui::SetTooltip("value %.4g\nopacity %.3g", range.x + point.x * (range.y - range.x),
+                          point.y * factor);
+    }
+    return changed || (active && dragged >= 0);
+}
 
 // The transfer-function section; true while one of its controls is held or changed a field.
 bool drawTransferFunction(TransferFunctionEditor& editor) {
@@ -52,6 +180,7 @@ bool drawTransferFunction(TransferFunctionEditor& editor) {
         editing = editing || ImGui::IsItemActive();
     }
     if (editor.editsOpacity()) {
+        editing = drawOpacityCurve(editor) || editing;
         float factor = editor.opacityFactor();
         if (ImGui::SliderFloat("opacity", &factor, 0.01f, 100.0f, "%.3gx",
                                ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp)) {

@@ -1,6 +1,6 @@
 #include "nodes/detail/DataRange.h"
 
-#include <glm/geometric.hpp>
+#include "nodes/volume/ValueHistogram.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,14 +8,6 @@
 #include <vector>
 
 namespace texsplat::nodes::detail {
-namespace {
-
-double scalarOf(float value) { return value; }
-// In double: a huge vector's squared length overflows float.
-double scalarOf(const glm::vec3& value) { return glm::length(glm::dvec3(value)); }
-
-} // namespace
-
 glm::dvec2 widenedRange(double low, double high) {
     return low < high ? glm::dvec2(low, high) : glm::dvec2(low - 0.5, low + 0.5);
 }
@@ -40,11 +32,8 @@ glm::dvec2 percentileRange(const volume::Grid<T>& grid, double low, double high)
         return widenedRange(minimum, minimum);
     }
     constexpr std::size_t kBins = 65536;
-    std::vector<std::uint64_t> counts(kBins, 0);
-    grid.forEachActive([&](const glm::i64vec3& /*index*/, const T& value) {
-        const double t = (scalarOf(value) - minimum) / span;
-        counts[std::min(kBins - 1, static_cast<std::size_t>(std::max(0.0, t) * kBins))] += 1;
-    });
+    const std::vector<std::uint64_t> counts =
+        volume::valueHistogram(grid, minimum, statistics.maximum, kBins);
     // The value of rank p (0..count-1) interpolated within its bin, values spread evenly in it.
     const auto percentile = [&](double percent) {
         const double rank = percent / 100.0 * double(statistics.finiteCount - 1);

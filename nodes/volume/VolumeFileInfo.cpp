@@ -7,6 +7,7 @@
 #include "nodes/volume/NrrdVolume.h"
 #include "nodes/volume/RawHeader.h"
 #include "nodes/volume/RawVolume.h"
+#include "nodes/volume/ValueHistogram.h"
 #include "nodes/volume/VdbVolume.h"
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
@@ -56,9 +57,6 @@ std::string triple(const glm::dvec3& v, const char* separator) {
     return number(v.x) + separator + number(v.y) + separator + number(v.z);
 }
 
-double magnitude(float value) { return value; }
-double magnitude(const glm::vec3& value) { return glm::length(value); }
-
 template <typename T>
 std::string describeGrid(const Grid<T>& grid, int bins) {
     const GridGeometry& geometry = grid.geometry();
@@ -87,17 +85,17 @@ std::string describeGrid(const Grid<T>& grid, int bins) {
 
     const double low = statistics.minimum;
     const double width = (statistics.maximum - low) / bins;
-    std::vector<std::int64_t> counts(static_cast<std::size_t>(bins), 0);
-    grid.forEachActive([&](const glm::i64vec3&, const T& value) {
-        const double v = magnitude(value);
-        const int bin = width > 0.0 ? static_cast<int>((v - low) / width) : 0;
-        ++counts[static_cast<std::size_t>(std::clamp(bin, 0, bins - 1))];
-    });
-    const std::int64_t most = *std::max_element(counts.begin(), counts.end());
+    std::vector<std::uint64_t> counts(static_cast<std::size_t>(bins), 0);
+    if (width > 0.0) {
+        counts = valueHistogram(grid, low, statistics.maximum, static_cast<std::size_t>(bins));
+    } else {
+        counts[0] = static_cast<std::uint64_t>(statistics.finiteCount);
+    }
+    const std::uint64_t most = *std::max_element(counts.begin(), counts.end());
     text += "  histogram (" + std::to_string(bins) + " bins)\n";
     for (int bin = 0; bin < bins; ++bin) {
-        const std::int64_t count = counts[static_cast<std::size_t>(bin)];
-        const int bar = static_cast<int>((count * kBarWidth + most - 1) / most);
+        const std::uint64_t count = counts[static_cast<std::size_t>(bin)];
+        const auto bar = static_cast<int>((count * kBarWidth + most - 1) / most);
         text += "    " + padLeft(number(low + bin * width), 12) + " .. " +
                 padRight(number(low + (bin + 1) * width), 12) + " " +
                 padLeft(std::to_string(count), 10) +

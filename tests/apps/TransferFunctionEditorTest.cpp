@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -143,6 +144,52 @@ TEST_F(TransferFunctionEditorTest, opacityFactorsScaleTheOriginalOpacitiesNotThe
     EXPECT_EQ(transfer->opacities.values(), (std::vector<float>{0.0f, 0.4f}));
 }
 
+TEST_F(TransferFunctionEditorTest, opacityPointsStayInOrderAndCarryTheFactor) {
+    const auto transfer = dataRangeFunction();
+    transfer->opacityValues.setValue({0.0f, 0.5f, 1.0f});
+    transfer->opacities.setValue({0.0f, 1.0f, 2.0f});
+    TransferFunctionEditor editor(*scene(transfer));
+    ASSERT_TRUE(editor.editsOpacity());
+    using Points = std::vector<glm::vec2>;
+    EXPECT_EQ(editor.opacityPoints(), (Points{{0.0f, 0.0f}, {0.5f, 1.0f}, {1.0f, 2.0f}}));
+
+    editor.moveOpacityPoint(1, {1.5f, -3.0f}); // past its right neighbour, below zero
+    EXPECT_EQ(editor.opacityPoints(), (Points{{0.0f, 0.0f}, {1.0f, 0.0f}, {1.0f, 2.0f}}));
+    editor.moveOpacityPoint(1, {-1.0f, 0.5f}); // past its left neighbour
+    EXPECT_EQ(editor.opacityPoints()[1], glm::vec2(0.0f, 0.5f));
+    EXPECT_EQ(editor.addOpacityPoint({0.25f, 0.75f}), 2u);
+    editor.setOpacityFactor(2.0f);
+    EXPECT_EQ(transfer->opacityValues.values(), (std::vector<float>{0.0f, 0.0f, 0.25f, 1.0f}));
+    EXPECT_EQ(transfer->opacities.values(), (std::vector<float>{0.0f, 1.0f, 1.5f, 4.0f}));
+
+    editor.removeOpacityPoint(0);
+    editor.removeOpacityPoint(0);
+    editor.removeOpacityPoint(0);
+    editor.removeOpacityPoint(0); // the last one stays: a function needs one
+    EXPECT_EQ(editor.opacityPoints(), (Points{{1.0f, 2.0f}}));
+    EXPECT_EQ(transfer->opacities.values(), (std::vector<float>{4.0f}));
+
+    editor.reset();
+    EXPECT_EQ(transfer->opacityValues.values(), (std::vector<float>{0.0f, 0.5f, 1.0f}));
+    EXPECT_EQ(editor.opacityPoints(), (Points{{0.0f, 0.0f}, {0.5f, 1.0f}, {1.0f, 2.0f}}));
+    EXPECT_FALSE(editor.isEdited());
+}
+
+TEST_F(TransferFunctionEditorTest, theHistogramCountsTheDataOverItsRange) {
+    TransferFunctionEditor editor(*scene(dataRangeFunction()));
+    EXPECT_EQ(editor.dataRange(), glm::vec2(2.0f, 5.0f));
+    // 16 values (2, 2.2, ..., 5), 256 voxels each, into 7 bins of width 3/7 (no value on an edge;
+    // the largest, 5, counts into the last bin).
+    EXPECT_EQ(editor.histogram(7), (std::vector<std::uint64_t>{3 * 256, 2 * 256, 2 * 256, 2 * 256,
+                                                               2 * 256, 2 * 256, 3 * 256}));
+    EXPECT_EQ(editor.histogram(1), (std::vector<std::uint64_t>{16 * 256}));
+
+    auto root = sg::Separator::create();
+    root->addChild(nodes::TransferFunction::create());
+    TransferFunctionEditor withoutData(*root);
+    EXPECT_EQ(withoutData.histogram(3), (std::vector<std::uint64_t>{0, 0, 0}));
+}
+
 TEST_F(TransferFunctionEditorTest, resetRestoresTheFieldsAndTakesTheRangeFromTheDataAgain) {
     const auto transfer = dataRangeFunction();
     const sg::Node::Ptr root = scene(transfer);
@@ -171,6 +218,9 @@ TEST_F(TransferFunctionEditorTest, offersOnlyFieldsItMaySet) {
     TransferFunctionEditor editor(*scene(transfer));
     EXPECT_TRUE(editor.editsRange());
     EXPECT_FALSE(editor.editsOpacity()) << "a connected field follows its connection";
+    const auto mismatched = dataRangeFunction();
+    mismatched->opacityValues.setValue({0.0f, 0.5f, 1.0f}); // three positions, two opacities
+    EXPECT_FALSE(TransferFunctionEditor(*scene(mismatched)).editsOpacity());
     EXPECT_FALSE(editor.editsPreset()) << "explicit colours replace the preset";
 
     transfer->range.connectFrom(source->range);
@@ -188,6 +238,10 @@ TEST_F(TransferFunctionEditorTest, refusesWhatNoFunctionCanTake) {
     EXPECT_THROW(editor.setOpacityFactor(std::numeric_limits<float>::infinity()),
                  texsplat::DataError);
     EXPECT_THROW(editor.select(1), texsplat::DataError);
+    EXPECT_THROW(editor.moveOpacityPoint(2, {0.5f, 1.0f}), texsplat::DataError);
+    EXPECT_THROW(editor.moveOpacityPoint(0, {nan, 1.0f}), texsplat::DataError);
+    EXPECT_THROW(editor.addOpacityPoint({0.5f, nan}), texsplat::DataError);
+    EXPECT_THROW(editor.removeOpacityPoint(2), texsplat::DataError);
     EXPECT_FALSE(editor.isEdited()) << "a refused edit changes nothing";
 }
 
