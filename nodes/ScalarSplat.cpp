@@ -170,7 +170,9 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                                              errorThreshold.value())
                               : octree::Cut(mCache->octree());
         if (maxSplats.value() > 0) {
-            cut = octree::Refiner::cutOfBudget(std::move(cut), order,
+            // Splits go where the splats show: not out of the view's sides.
+            cut = octree::Refiner::cutOfBudget(std::move(cut),
+                                               result.view.refinementView(result.footprint->extent),
                                                static_cast<std::uint64_t>(maxSplats.value()));
         }
         octree::emitSplats(cut, order, *splats, emission);

@@ -75,7 +75,7 @@ double priorityOf(const Octree& octree, const View& view, const NodeRef& node) {
     const glm::dvec3 high = octree.cellMax(node);
     const glm::dvec3 extent = high - low;
     double size = std::max({extent.x, extent.y, extent.z});
-    if (view.isBoxBehindEye(low, high)) {
+    if (view.isBoxBehindEye(low, high) || view.isOutOfSight(low, high)) {
         return 0.0;
     }
     if (view.isPerspective()) {

@@ -32,8 +32,9 @@ struct RefineBudget {
 /// Made to be driven in steps by an IdleSensor: the viewer shows the coarse cut while the user
 /// interacts and calls `refine()` while idle, redrawing `cut()` after each step. The order is
 /// deterministic: ties in priority are broken by node index, so equal inputs give equal cuts.
-/// Nodes with zero priority (uniform blocks, blocks behind the eye) are never split: splitting
-/// them would cost splats without reducing any error.
+/// Nodes with zero priority (uniform blocks, blocks behind the eye or out of the view's sight,
+/// View::seeingOnly()) are never split: splitting them would cost splats without reducing any
+/// error that shows.
 class Refiner {
 public:
     /// @brief Starts from the coarsest cut (the root alone) of @p octree.
@@ -70,7 +71,7 @@ public:
 
     /// @brief `error * projected size` of @p node for this refiner's view: the node's error
     /// times its largest cell extent (orthographic) or that extent over its distance to the eye
-    /// (perspective, at most 2 for a node around the eye; 0 behind the eye).
+    /// (perspective, at most 2 for a node around the eye; 0 behind the eye or out of sight).
     [[nodiscard]] double priority(const NodeRef& node) const;
 
 private:

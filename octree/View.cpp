@@ -51,6 +51,38 @@ View View::perspective(glm::dvec3 eye, glm::dvec3 direction) {
     return View(Projection::Perspective, checkedDirection(direction), eye);
 }
 
+View View::seeingOnly(const Sides& sides, double reach) const {
+    if (!std::isfinite(reach) || reach < 0.0) {
+        throw DataError("View: a splat's reach must be finite and >= 0, got " +
+                        std::to_string(reach));
+    }
+    View result = *this;
+    result.mHasSides = true;
+    result.mSides = sides;
+    result.mReach = reach;
+    return result;
+}
+
+bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high) const {
+    if (!mHasSides) {
+        return false;
+    }
+    const glm::dvec3 extent = high - low;
+    const double margin = mReach * std::max({extent.x, extent.y, extent.z});
+    const glm::dvec3 widenedLow = low - margin;
+    const glm::dvec3 widenedHigh = high + margin;
+    for (const glm::dvec4& side : mSides) {
+        // The corner of the widened box farthest to the inner side; NaN compares false.
+        const glm::dvec3 inner(side.x >= 0.0 ? widenedHigh.x : widenedLow.x,
+                               side.y >= 0.0 ? widenedHigh.y : widenedLow.y,
+                               side.z >= 0.0 ? widenedHigh.z : widenedLow.z);
+        if (glm::dot(glm::dvec3(side), inner) + side.w < 0.0) {
+            return true;
+        }
+    }
+    return false;
+}
+
 glm::dvec3 View::farthestCorner(glm::dvec3 low, glm::dvec3 high) const {
     // Per axis, the upper face when the direction's component is positive.
     return {mDirection.x > 0.0 ? high.x : low.x, mDirection.y > 0.0 ? high.y : low.y,

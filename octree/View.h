@@ -1,7 +1,10 @@
 #pragma once
 
 #include <glm/ext/vector_double3.hpp>
+#include <glm/ext/vector_double4.hpp>
 #include <glm/geometric.hpp>
+
+#include <array>
 
 namespace texsplat::octree {
 
@@ -19,6 +22,21 @@ public:
     /// @brief A perspective projection from @p eye, looking along @p direction.
     /// @throws DataError when the eye is not finite or the direction is zero or not finite.
     [[nodiscard]] static View perspective(glm::dvec3 eye, glm::dvec3 direction);
+
+    /// @brief The four sides of a camera's view volume (left, right, bottom, top), each a plane
+    /// (a, b, c, d) with a·x + b·y + c·z + d >= 0 on the inner side, in world space.
+    using Sides = std::array<glm::dvec4, 4>;
+
+    /// @brief This view seeing only what lies within @p sides, where a splat reaches at most
+    /// @p reach times its node's largest edge beyond the node's cells: a node whose splat lies
+    /// wholly outside (isOutOfSight()) draws nothing, so a cut need not refine it (Refiner).
+    /// Ordering is unchanged. A plane that is not finite hides nothing.
+    /// @throws DataError when @p reach is negative or not finite.
+    [[nodiscard]] View seeingOnly(const Sides& sides, double reach) const;
+
+    /// @brief Whether the splat of a node with cells [@p low, @p high] lies wholly outside one of
+    /// the sides of seeingOnly() (never for a view without them).
+    [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high) const;
 
     /// @brief The projection.
     [[nodiscard]] Projection projection() const { return mProjection; }
@@ -64,6 +82,9 @@ private:
     Projection mProjection;
     glm::dvec3 mDirection;
     glm::dvec3 mEye;
+    bool mHasSides = false;
+    Sides mSides{};
+    double mReach = 0.0;
 };
 
 } // namespace texsplat::octree

@@ -84,7 +84,8 @@ struct SplatSource {
     std::optional<octree::Octree> octree;
 };
 
-void emitFor(SplatSource& source, std::size_t maxSplats, octree::SplatList& splats) {
+void emitFor(SplatSource& source, std::size_t maxSplats, double extent,
+             octree::SplatList& splats) {
     const octree::View order = source.view.octreeView();
     if (maxSplats == 0) {
         octree::emitVoxelSplats(*source.classified, order, splats);
@@ -93,8 +94,8 @@ void emitFor(SplatSource& source, std::size_t maxSplats, octree::SplatList& spla
     if (!source.octree) {
         source.octree.emplace(source.classified);
     }
-    const octree::Cut cut = octree::Refiner::cutOfBudget(octree::Cut(*source.octree), order,
-                                                         maxSplats);
+    const octree::Cut cut = octree::Refiner::cutOfBudget(
+        octree::Cut(*source.octree), source.view.refinementView(extent), maxSplats);
     octree::emitSplats(cut, order, splats);
     octree::sortByDepth(splats, order); // as ScalarSplat draws a cut
 }
@@ -230,7 +231,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
                                                   camera.projectionMatrix(aspect),
                                                   glm::vec3(source.classified->spacing()));
     octree::SplatList fullList;
-    emitFor(source, 0, fullList);
+    emitFor(source, 0, 0.0, fullList);
     report(where + ": load and classify", 1.0);
 
     const std::optional<image::Image> reference = referenceImage(*root, size, where);
@@ -271,7 +272,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
                 octree::SplatList cutList;
                 if (method.budget > 0.0) {
                     emitFor(source, static_cast<std::size_t>(splatNode.maxSplats.value()),
-                            cutList);
+                            splatNode.size.value(), cutList);
                 }
                 const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
                 images.push_back(measureGl(*root, size, *ceiling, source.view, extent, drawn,

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -43,6 +44,23 @@ SplatView SplatView::fromMatrices(const glm::mat4& model, const glm::mat4& view,
 octree::View SplatView::octreeView() const {
     return isPerspective ? octree::View::perspective(eye, direction)
                          : octree::View::orthographic(direction);
+}
+
+octree::View SplatView::refinementView(double extent) const {
+    // A point is inside where -w <= x <= w and -w <= y <= w in clip space: rows 3 ± 0, 3 ± 1
+    // of the local-to-clip matrix (glm is column-major: m[column][row]).
+    const glm::dmat4 m(localToClip);
+    const auto row = [&m](int index) {
+        return glm::dvec4(m[0][index], m[1][index], m[2][index], m[3][index]);
+    };
+    const octree::View::Sides sides{row(3) + row(0), row(3) - row(0), row(3) + row(1),
+                                    row(3) - row(1)};
+    // A square reaches `extent` sizes from its centre, √2 of that at its corners (vector squares
+    // turn); a node's size is its largest edge in voxels, at most its largest world edge over
+    // the finest spacing voxels, each at most the coarsest spacing long.
+    const double finest = std::min({spacing.x, spacing.y, spacing.z});
+    const double coarsest = std::max({spacing.x, spacing.y, spacing.z});
+    return octreeView().seeingOnly(sides, extent * std::sqrt(2.0) * coarsest / finest);
 }
 
 } // namespace texsplat::render

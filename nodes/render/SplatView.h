@@ -36,6 +36,12 @@ struct SplatView {
 
     /// @brief The same view as the octree orders splats for it (local space).
     octree::View octreeView() const;
+
+    /// @brief octreeView() seeing only the four sides of the view volume (local space), for
+    /// splats whose squares reach `extent` voxels from their centre at size 1 (SplatFootprint):
+    /// what a cut is refined for, so that its splits go where they show (octree::Refiner).
+    /// @throws DataError when `extent` is negative or not finite.
+    octree::View refinementView(double extent) const;
 };
 
 } // namespace texsplat::render

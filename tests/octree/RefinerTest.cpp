@@ -136,6 +136,42 @@ TEST(Refiner, neverSplitsNodesBehindTheEye) {
     EXPECT_EQ(refiner.cut().splatCount(), 1u);
 }
 
+TEST(Refiner, spendsTheBudgetOnWhatIsInSight) {
+    const Octree octree(randomGrid(glm::u64vec3(32), 12));
+    const View along = View::orthographic({0.0, 0.0, 1.0});
+    // Sight: x <= 6 of the 32 voxels (cells from -0.5 to 31.5), splats reaching an edge.
+    const View::Sides sides{glm::dvec4(1.0, 0.0, 0.0, 1000.0), glm::dvec4(-1.0, 0.0, 0.0, 6.0),
+                            glm::dvec4(0.0, 1.0, 0.0, 1000.0), glm::dvec4(0.0, -1.0, 0.0, 1000.0)};
+    const View sighted = along.seeingOnly(sides, 1.0);
+    const auto inSight = [&](const Cut& cut) {
+        std::size_t count = 0;
+        for (const NodeRef& node : nodesOf(cut)) {
+            count += sighted.isOutOfSight(octree.cellMin(node), octree.cellMax(node)) ? 0 : 1;
+        }
+        return count;
+    };
+    constexpr std::uint64_t kBudget = 3000;
+    Refiner plain(octree, along);
+    plain.refine(splats(kBudget));
+    Refiner refiner(octree, sighted);
+    refiner.refine(splats(kBudget));
+    EXPECT_GT(inSight(refiner.cut()), inSight(plain.cut()) * 3 / 2);
+    // No node out of sight is split: each node of the cut out of sight has a parent in sight.
+    std::size_t outOfSight = 0;
+    for (const NodeRef& node : nodesOf(refiner.cut())) {
+        if (sighted.isOutOfSight(octree.cellMin(node), octree.cellMax(node))) {
+            ++outOfSight;
+            const glm::u64vec3 parent = node.coord / std::uint64_t{2};
+            const glm::dvec3 low = octree.cellMin(NodeRef{0, parent, node.level + 1});
+            const glm::dvec3 high = octree.cellMax(NodeRef{0, parent, node.level + 1});
+            EXPECT_FALSE(sighted.isOutOfSight(low, high)) << "level " << node.level;
+        }
+    }
+    EXPECT_GT(outOfSight, 0u) << "the test needs nodes out of sight";
+    // What the queue reaches, refineAtOnce() reaches.
+    EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), sighted, kBudget) == refiner.cut());
+}
+
 TEST(Refiner, isDeterministic) {
     const Octree first(randomGrid(glm::u64vec3(16), 31));
     const Octree second(randomGrid(glm::u64vec3(16), 31));

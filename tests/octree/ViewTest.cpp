@@ -62,3 +62,25 @@ TEST(View, normalizesHugeAndTinyDirections) {
     const View tiny = View::orthographic({0.0, 0.0, -1.0e-320});
     EXPECT_DOUBLE_EQ(tiny.direction().z, -1.0);
 }
+
+TEST(View, aNodeIsOutOfSightWhenItsSplatLiesWhollyOutsideASide) {
+    const View plain = View::orthographic({0.0, 0.0, 1.0});
+    // Sight: 0 <= x <= 10, 0 <= y <= 10; splats reach one edge beyond their cells.
+    const View::Sides sides{glm::dvec4(1.0, 0.0, 0.0, 0.0), glm::dvec4(-1.0, 0.0, 0.0, 10.0),
+                            glm::dvec4(0.0, 1.0, 0.0, 0.0), glm::dvec4(0.0, -1.0, 0.0, 10.0)};
+    const View view = plain.seeingOnly(sides, 1.0);
+    EXPECT_FALSE(view.isOutOfSight({2.0, 2.0, -5.0}, {4.0, 4.0, 5.0})) << "inside";
+    EXPECT_FALSE(view.isOutOfSight({-3.0, 2.0, 0.0}, {1.0, 4.0, 1.0})) << "across a side";
+    EXPECT_FALSE(view.isOutOfSight({11.0, 2.0, 0.0}, {12.0, 3.0, 1.0})) << "its splat reaches in";
+    EXPECT_TRUE(view.isOutOfSight({11.5, 2.0, 0.0}, {12.5, 3.0, 1.0}));
+    EXPECT_TRUE(view.isOutOfSight({2.0, -4.0, 0.0}, {4.0, -2.5, 1.0})) << "edge 2, 1.5 away";
+    EXPECT_FALSE(plain.isOutOfSight({100.0, 100.0, 0.0}, {101.0, 101.0, 1.0})) << "no sides";
+    EXPECT_DOUBLE_EQ(view.direction().z, 1.0) << "ordering is unchanged";
+
+    View::Sides unknown = sides;
+    unknown[1] = glm::dvec4(std::nan(""), 0.0, 0.0, 10.0);
+    EXPECT_FALSE(plain.seeingOnly(unknown, 0.0).isOutOfSight({11.5, 2.0, 0.0}, {12.5, 3.0, 1.0}))
+        << "a plane that is not finite hides nothing";
+    EXPECT_EQ(errorOf([&] { (void)plain.seeingOnly(sides, -1.0); }),
+              "View: a splat's reach must be finite and >= 0, got -1.000000");
+}
