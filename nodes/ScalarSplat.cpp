@@ -160,9 +160,12 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     }
     const auto emit = [&] {
         const octree::View order = result.view.octreeView();
+        // Splats go where they show: blocks out of the view's sides make none, and a cut is not
+        // refined there (the same order, with the sides).
+        const octree::View sighted = result.view.refinementView(result.footprint->extent);
         if (fullResolution) {
             mDepthSorter = {}; // slice order needs no sort
-            octree::emitVoxelSplats(*classified, order, *splats, emission);
+            octree::emitVoxelSplats(*classified, sighted, *splats, emission);
             return;
         }
         octree::Cut cut = errorThreshold.value() > 0.0f
@@ -170,9 +173,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                                              errorThreshold.value())
                               : octree::Cut(mCache->octree());
         if (maxSplats.value() > 0) {
-            // Splits go where the splats show: not out of the view's sides.
-            cut = octree::Refiner::cutOfBudget(std::move(cut),
-                                               result.view.refinementView(result.footprint->extent),
+            cut = octree::Refiner::cutOfBudget(std::move(cut), sighted,
                                                static_cast<std::uint64_t>(maxSplats.value()));
         }
         octree::emitSplats(cut, order, *splats, emission);

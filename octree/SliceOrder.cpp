@@ -2,6 +2,7 @@
 
 #include <glm/common.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace texsplat::octree {
@@ -76,7 +77,21 @@ SliceOrder::SliceOrder(const ClassifiedGrid& grid, const View& view)
     const glm::u64vec3 blockDims = grid.blockDims();
     mRowHasBlocks.assign(static_cast<std::size_t>(blockDims[mAxes[0]] * blockDims[mAxes[1]]),
                          false);
-    grid.forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex /*first*/) {
+    if (view.hasSides()) {
+        mOutOfSight.assign(grid.blockCount(), false);
+    }
+    const glm::dvec3 spacing = grid.spacing();
+    const double voxelEdge = std::max({spacing.x, spacing.y, spacing.z});
+    grid.forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex first) {
+        if (!mOutOfSight.empty()) {
+            const glm::u64vec3 begin = block * kSize;
+            const glm::u64vec3 end = glm::min(begin + kSize, grid.dims());
+            if (view.isOutOfSight(grid.toWorld(glm::dvec3(begin) - 0.5),
+                                  grid.toWorld(glm::dvec3(end) - 0.5), voxelEdge)) {
+                mOutOfSight[static_cast<std::size_t>(first / ClassifiedGrid::kBlockVoxels)] = true;
+                return;
+            }
+        }
         mRowHasBlocks[static_cast<std::size_t>(block[mAxes[0]] +
                                                blockDims[mAxes[0]] * block[mAxes[1]])] = true;
     });

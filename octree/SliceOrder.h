@@ -33,10 +33,11 @@ public:
 
     /// @brief Calls `visit(glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored)` for every
     /// voxel of the grid's allocated blocks, back to front: the voxels of the whole box in this
-    /// order, less those of unallocated blocks (which are empty). The walk skips a row of blocks
-    /// that holds none at once and an unallocated block within a row at once, so its time
-    /// follows the allocated blocks, plus one step per row of the box and per block of a row
-    /// that holds blocks.
+    /// order, less those of unallocated blocks (which are empty) and, for a view with sides
+    /// (View::seeingOnly()), of blocks whose voxels' splats are all out of sight. The walk skips
+    /// a row of blocks that holds none of the rest at once and any other block within a row at
+    /// once, so its time follows the blocks walked, plus one step per row of the box and per
+    /// block of a row that holds blocks.
     template <typename Visit> void forEach(Visit&& visit) const {
         for (std::size_t slice = 0; slice < sliceCount(); ++slice) {
             forEachInSlice(slice, visit);
@@ -68,7 +69,9 @@ public:
             for (const Segment& segment : mSegments) {
                 voxel[mAxes[2]] = segment.block * kSize;
                 const ClassifiedGrid::StorageIndex first = mGrid->blockStorage(voxel / kSize);
-                if (first == ClassifiedGrid::kNoStorage) {
+                if (first == ClassifiedGrid::kNoStorage ||
+                    (!mOutOfSight.empty() &&
+                     mOutOfSight[static_cast<std::size_t>(first / ClassifiedGrid::kBlockVoxels)])) {
                     continue;
                 }
                 for (std::uint64_t step = segment.begin; step < segment.end; ++step) {
@@ -92,8 +95,11 @@ private:
     std::array<std::vector<std::uint64_t>, 3> mOrder;
     std::vector<Segment> mSegments;
     // Per block of the outer and middle axes (outer fastest): whether the row of blocks along
-    // the inner axis holds an allocated block.
+    // the inner axis holds an allocated block in sight.
     std::vector<bool> mRowHasBlocks;
+    // Per allocated block (slot): whether its voxels' splats are all out of the view's sight;
+    // empty for a view without sides.
+    std::vector<bool> mOutOfSight;
 };
 
 } // namespace texsplat::octree

@@ -48,7 +48,8 @@ void emitSplats(const Cut& cut, const View& view, SplatList& splats,
 
 /// @brief Replaces the contents of @p splats by one size-1 splat per non-empty voxel of
 /// @p grid, back to front in `SliceOrder`; for a perspective view, voxels not in front of the
-/// eye plane are culled. With @p vectors, as emitSplats().
+/// eye plane are culled, and for a view with sides (View::seeingOnly()) the blocks whose voxels'
+/// splats are all out of sight (SliceOrder skips them). With @p vectors, as emitSplats().
 void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats,
                      const VectorEmission* vectors = nullptr);
 

@@ -64,11 +64,15 @@ View View::seeingOnly(const Sides& sides, double reach) const {
 }
 
 bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high) const {
+    const glm::dvec3 extent = high - low;
+    return isOutOfSight(low, high, std::max({extent.x, extent.y, extent.z}));
+}
+
+bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge) const {
     if (!mHasSides) {
         return false;
     }
-    const glm::dvec3 extent = high - low;
-    const double margin = mReach * std::max({extent.x, extent.y, extent.z});
+    const double margin = mReach * nodeEdge;
     const glm::dvec3 widenedLow = low - margin;
     const glm::dvec3 widenedHigh = high + margin;
     for (const glm::dvec4& side : mSides) {

@@ -38,6 +38,13 @@ public:
     /// the sides of seeingOnly() (never for a view without them).
     [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high) const;
 
+    /// @brief Whether the splats of nodes of largest edge @p nodeEdge within the cells
+    /// [@p low, @p high] (say the voxels of a block) all lie wholly outside one of the sides.
+    [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge) const;
+
+    /// @brief Whether the view has sides (seeingOnly()).
+    [[nodiscard]] bool hasSides() const { return mHasSides; }
+
     /// @brief The projection.
     [[nodiscard]] Projection projection() const { return mProjection; }
 

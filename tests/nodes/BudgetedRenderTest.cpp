@@ -6,9 +6,11 @@
 #include "nodes/PerspectiveCamera.h"
 #include "nodes/ScalarSplat.h"
 #include "nodes/TransferFunction.h"
+#include "nodes/VolumeData.h"
 #include "nodes/image/Image.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
+#include "octree/SplatEmission.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/io/SceneReader.h"
 
@@ -131,6 +133,28 @@ TEST(BudgetedRender, aZoomedCutSpendsItsBudgetWhereTheImageIs) {
     const render::Frame frame = action.collect(*root);
     const std::size_t inside = splatsInTheImage(frame);
     EXPECT_GT(inside, action.statistics().splats / 4);
+}
+
+TEST(BudgetedRender, aZoomedFullFrameLeavesOutOnlySplatsThatCoverNoPixel) {
+    const std::shared_ptr<sg::Separator> root = tornado();
+    auto& camera = dynamic_cast<PerspectiveCamera&>(*root->child(0));
+    camera.heightAngle.setValue(camera.heightAngle.value() / 4.0f);
+    render::FrameAction action(kSize, kSize);
+    render::Frame frame = action.collect(*root);
+    ASSERT_EQ(frame.splats.size(), 1u);
+    // Every voxel's splat, as the slice order walks them without the view's sides.
+    const auto& transfer = dynamic_cast<const TransferFunction&>(*root->child(1));
+    const auto& volume = dynamic_cast<const VolumeData&>(*root->child(2));
+    auto every = std::make_shared<octree::SplatList>();
+    octree::emitVoxelSplats(*transfer.classify(*volume.scalarGrid()),
+                            frame.splats[0].view.octreeView(), *every);
+    EXPECT_LT(frame.splats[0].splats->size(), every->size() * 3 / 4) << "blocks are left out";
+
+    const render::cpu::CpuRenderer renderer(2);
+    sg::RenderStatistics statistics;
+    const image::Image sighted = renderer.draw(frame, statistics);
+    frame.splats[0].splats = every;
+    EXPECT_EQ(renderer.draw(frame, statistics).pixels(), sighted.pixels());
 }
 
 TEST(BudgetedRender, aFullFrameAfterACutIsAFreshFullFrame) {

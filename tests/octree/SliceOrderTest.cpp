@@ -161,3 +161,20 @@ TEST(SliceOrder, walksOnlyAllocatedBlocksInTheOrderOfTheWholeBox) {
         EXPECT_EQ(nonEmpty(walked), nonEmpty(orderOf(dense, view)));
     }
 }
+
+TEST(SliceOrder, leavesOutTheBlocksOutOfTheViewsSightAndKeepsTheOrderOfTheRest) {
+    const glm::u64vec3 dims(40, 24, 20);
+    const ClassifiedGrid grid = filledGrid(dims, glm::dvec3(1.0), glm::dvec3(0.0));
+    const View plain = View::perspective({19.5, 11.5, 60.0}, {0.0, 0.0, -1.0});
+    // Sight: x <= 12 (cells from -0.5), splats reaching one voxel beyond their cells.
+    const View::Sides sides{glm::dvec4(1.0, 0.0, 0.0, 1000.0), glm::dvec4(-1.0, 0.0, 0.0, 12.0),
+                            glm::dvec4(0.0, 1.0, 0.0, 1000.0), glm::dvec4(0.0, -1.0, 0.0, 1000.0)};
+    const View sighted = plain.seeingOnly(sides, 1.0);
+    const std::vector<std::uint64_t> all = orderOf(grid, plain);
+    std::vector<std::uint64_t> inSight;
+    std::copy_if(all.begin(), all.end(), std::back_inserter(inSight), [&](std::uint64_t index) {
+        // The blocks of x < 16 hold a voxel whose splat reaches x = 12: those of x < 8 and 8..15.
+        return grid.coordinates(index).x < 16;
+    });
+    EXPECT_EQ(orderOf(grid, sighted), inSight);
+}
