@@ -1,12 +1,17 @@
 #include "apps/viewer/TransferFunctionEditor.h"
 
+#include "nodes/ScalarSplat.h"
 #include "nodes/detail/DataRange.h"
+#include "nodes/elements/TransferFunctionElement.h"
+#include "nodes/elements/VolumeElement.h"
 #include "nodes/volume/ValueHistogram.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/actions/Action.h"
 #include "scenegraph/actions/SearchAction.h"
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace texsplat::apps {
 
@@ -27,6 +32,34 @@ void checkFinite(glm::vec2 point) {
                         std::to_string(point.x) + " " + std::to_string(point.y));
     }
 }
+
+// What each splat node reads: the transfer function and the volume in effect where it is
+// traversed (the other nodes do what they do for any action: put themselves into the state).
+class SplatInputs : public sg::Action {
+public:
+    SplatInputs() : Action(methods()) {}
+
+    // (function, volume) at each splat node that has both, in traversal order.
+    std::vector<std::pair<const nodes::TransferFunction*, const nodes::VolumeData*>> pairs;
+
+private:
+    static sg::MethodTable& methods() {
+        static sg::MethodTable table = [] {
+            sg::MethodTable initial;
+            initial.add(nodes::ScalarSplat::classType(), [](sg::Action& action, sg::Node&) {
+                auto& inputs = static_cast<SplatInputs&>(action);
+                const auto* transfer =
+                    inputs.state().get<nodes::TransferFunctionElement>().transferFunction;
+                const auto* volume = inputs.state().get<nodes::VolumeElement>().volume;
+                if (transfer && volume) {
+                    inputs.pairs.emplace_back(transfer, volume);
+                }
+            });
+            return initial;
+        }();
+        return table;
+    }
+};
 
 } // namespace
 
@@ -49,10 +82,23 @@ TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
         function.points = pointsOf(function.original);
         mFunctions.push_back(std::move(function));
     }
-    const std::vector<sg::Path> volumes =
+    findVolumes(root);
+}
+
+void TransferFunctionEditor::findVolumes(sg::Node& root) {
+    SplatInputs inputs;
+    inputs.apply(root);
+    const std::vector<sg::Path> first =
         pathsOfType(root, nodes::VolumeData::classType(), sg::SearchAction::Interest::First);
-    if (!volumes.empty()) {
-        mVolume = std::static_pointer_cast<nodes::VolumeData>(volumes.front().tail());
+    for (Function& function : mFunctions) {
+        const auto used = std::find_if(inputs.pairs.begin(), inputs.pairs.end(),
+                                       [&](const auto& pair) { return pair.first == function.node.get(); });
+        if (used != inputs.pairs.end()) {
+            function.volume = std::static_pointer_cast<const nodes::VolumeData>(
+                used->second->shared_from_this());
+        } else if (!first.empty()) {
+            function.volume = std::static_pointer_cast<const nodes::VolumeData>(first.front().tail());
+        }
     }
 }
 
@@ -88,22 +134,26 @@ glm::vec2 TransferFunctionEditor::range() {
     Function& function = current();
     if (!function.range) {
         const nodes::TransferFunction& node = *function.node;
-        function.range = mVolume ? node.dataScale(*mVolume->scalarGrid()).range : node.range.value();
+        function.range =
+            function.volume ? node.dataScale(*function.volume->scalarGrid()).range : node.range.value();
     }
     return *function.range;
 }
 
 glm::vec2 TransferFunctionEditor::dataRange() {
-    if (!mDataRange) {
-        if (mVolume) {
-            mDataRange = glm::vec2(nodes::detail::valueRange(*mVolume->scalarGrid()));
+    Function& function = current();
+    if (!function.dataRange) {
+        if (function.volume) {
+            function.dataRange =
+                glm::vec2(nodes::detail::valueRange(*function.volume->scalarGrid()));
         } else {
-            const glm::vec2 own = current().original.range;
+            const glm::vec2 own = function.original.range;
             const float half = 0.5f * std::abs(own.y - own.x);
-            mDataRange = glm::vec2(std::min(own.x, own.y) - half, std::max(own.x, own.y) + half);
+            function.dataRange =
+                glm::vec2(std::min(own.x, own.y) - half, std::max(own.x, own.y) + half);
         }
     }
-    return *mDataRange;
+    return *function.dataRange;
 }
 
 glm::vec2 TransferFunctionEditor::rangeBounds() {
@@ -191,12 +241,15 @@ void TransferFunctionEditor::writeOpacities() {
 }
 
 const std::vector<std::uint64_t>& TransferFunctionEditor::histogram(std::size_t bins) {
-    if (mHistogram.size() != bins) {
+    Function& function = current();
+    if (function.histogram.size() != bins) {
         const glm::vec2 data = dataRange();
-        mHistogram = mVolume ? volume::valueHistogram(*mVolume->scalarGrid(), data.x, data.y, bins)
-                             : std::vector<std::uint64_t>(bins, 0);
+        function.histogram =
+            function.volume
+                ? volume::valueHistogram(*function.volume->scalarGrid(), data.x, data.y, bins)
+                : std::vector<std::uint64_t>(bins, 0);
     }
-    return mHistogram;
+    return function.histogram;
 }
 
 bool TransferFunctionEditor::editsPreset() const {

@@ -22,9 +22,10 @@ namespace texsplat::apps {
 /// It edits the nodes' fields, so the scene graph notices an edit like any other change and the
 /// splat nodes re-classify from their grid's value ranges without rebuilding them
 /// (docs/octree.md, "Transfer-function edits"). The range it shows and sets is in data values:
-/// setting it makes the node's `rangeMode` FIXED. Its bounds are the data's value range, read
-/// (once, when first asked for) from the scene's first VolumeData, as the colour legend reads it
-/// (annotation::ColorLegend::ofScene()). A field that is connected follows its connection and is
+/// setting it makes the node's `rangeMode` FIXED. Its bounds are the value range of the data the
+/// function classifies, read once, when first asked for: the VolumeData in effect at the first
+/// splat node that the function is in effect at (the scene's first VolumeData for a function no
+/// splat node uses). A field that is connected follows its connection and is
 /// not offered; the preset only while neither `colors` nor `colorMapFile` replaces it. reset()
 /// restores every field as it was when the editor was made, default flags included, so a range
 /// that came from the data comes from the data again.
@@ -97,9 +98,9 @@ public:
     /// DataError for any other factor.
     void setOpacityFactor(float factor);
 
-    /// @brief How many of the data's values (the scene's first VolumeData) fall into each of
-    /// `bins` equal bins over dataRange(): made once per bin count (one walk over the grid's
-    /// non-empty voxels), all zero without VolumeData.
+    /// @brief How many of the values of the data the selected function classifies fall into
+    /// each of `bins` equal bins over dataRange(): made once per bin count (one walk over the
+    /// grid's non-empty voxels), all zero without VolumeData.
     /// @throws what reading the volume throws.
     const std::vector<std::uint64_t>& histogram(std::size_t bins);
 
@@ -142,6 +143,9 @@ private:
         std::vector<glm::vec2> points; // the opacity control points, before the factor
         float opacityFactor = 1.0f;
         std::optional<glm::vec2> range; // the range in effect, once asked for
+        std::shared_ptr<const nodes::VolumeData> volume; // the data it classifies, if any
+        std::optional<glm::vec2> dataRange;               // the data's value range, once asked for
+        std::vector<std::uint64_t> histogram;             // over dataRange, once asked for
     };
 
     Function& current() { return mFunctions[mSelected]; }
@@ -152,10 +156,10 @@ private:
     // Writes the selected function's points and factor into its fields.
     void writeOpacities();
 
+    // Gives each function the volume it classifies.
+    void findVolumes(sg::Node& root);
+
     std::vector<Function> mFunctions;
-    std::shared_ptr<nodes::VolumeData> mVolume;
-    std::optional<glm::vec2> mDataRange; // the volume's value range, once asked for
-    std::vector<std::uint64_t> mHistogram; // over mDataRange, once asked for
     std::size_t mSelected = 0;
 };
 

@@ -245,6 +245,37 @@ TEST_F(TransferFunctionEditorTest, refusesWhatNoFunctionCanTake) {
     EXPECT_FALSE(editor.isEdited()) << "a refused edit changes nothing";
 }
 
+TEST_F(TransferFunctionEditorTest, eachFunctionShowsTheDataItClassifies) {
+    // As examples/figure8-clouds-winds.iv: two separators, each a function, a volume and a
+    // splat node; then a function that no splat node uses.
+    const auto branch = [](const nodes::TransferFunction::Ptr& transfer, float offset) {
+        auto grid = std::make_shared<texsplat::volume::DenseScalarGrid>(
+            texsplat::volume::GridGeometry(glm::i64vec3(4)), offset);
+        grid->setValue({0, 0, 0}, offset + 1.0f);
+        auto data = nodes::VolumeData::create();
+        data->setGrid(grid);
+        auto separator = sg::Separator::create();
+        separator->addChild(transfer);
+        separator->addChild(data);
+        separator->addChild(nodes::TextureSplat::create());
+        return separator;
+    };
+    auto root = sg::Separator::create();
+    root->addChild(branch(dataRangeFunction(), 10.0f));
+    root->addChild(branch(dataRangeFunction(), 20.0f));
+    root->addChild(dataRangeFunction());
+    TransferFunctionEditor editor(*root);
+    ASSERT_EQ(editor.count(), 3u);
+    EXPECT_EQ(editor.dataRange(), glm::vec2(10.0f, 11.0f));
+    EXPECT_EQ(editor.range(), glm::vec2(10.0f, 11.0f));
+    editor.select(1);
+    EXPECT_EQ(editor.dataRange(), glm::vec2(20.0f, 21.0f));
+    EXPECT_EQ(editor.range(), glm::vec2(20.0f, 21.0f));
+    EXPECT_EQ(editor.histogram(2), (std::vector<std::uint64_t>{63, 1}));
+    editor.select(2);
+    EXPECT_EQ(editor.dataRange(), glm::vec2(10.0f, 11.0f)) << "unused: the first volume's";
+}
+
 TEST_F(TransferFunctionEditorTest, withoutVolumeDataTheBoundsWidenTheFunctionsOwnRange) {
     auto root = sg::Separator::create();
     auto transfer = nodes::TransferFunction::create();
