@@ -8,6 +8,7 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/Action.h"
 #include "scenegraph/actions/SearchAction.h"
+#include "scenegraph/io/WriteAction.h"
 
 #include <algorithm>
 #include <cmath>
@@ -263,6 +264,13 @@ nodes::ColorPreset TransferFunctionEditor::preset() const {
 
 void TransferFunctionEditor::setPreset(nodes::ColorPreset preset) {
     current().node->preset.setValue(preset);
+}
+
+std::string TransferFunctionEditor::sceneText() const {
+    std::string text = sg::WriteAction::writeString(*current().node);
+    // The writer starts a file: "#Inventor V2.1 ascii" and a blank line.
+    const std::size_t body = text.find_first_not_of('\n', text.find('\n'));
+    return body == std::string::npos ? text : text.substr(body);
 }
 
 bool TransferFunctionEditor::isEdited() const {

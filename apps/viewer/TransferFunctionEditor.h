@@ -117,6 +117,10 @@ public:
     /// @brief Sets the preset.
     void setPreset(nodes::ColorPreset preset);
 
+    /// @brief The selected function as scene-file text (its node alone, without the file
+    /// header), to paste into a scene file.
+    std::string sceneText() const;
+
     /// @brief True when any field of the selected function differs from what it was at first.
     bool isEdited() const;
 

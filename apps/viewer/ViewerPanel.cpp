@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 #endif
@@ -203,9 +204,22 @@ bool drawTransferFunction(TransferFunctionEditor& editor) {
             ImGui::EndCombo();
         }
     }
-    if (editor.isEdited() && ImGui::Button("reset")) {
-        editor.reset();
-        editing = true;
+    if (ImGui::Button("copy as text")) {
+        // For the scene file: on the clipboard and on stdout (a terminal keeps it).
+        const std::string text = editor.sceneText();
+        ImGui::SetClipboardText(text.c_str());
+        std::printf("%s", text.c_str());
+        std::fflush(stdout);
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetTooltip("the function as scene-file text, to the clipboard and stdout");
+    }
+    if (editor.isEdited()) {
+        ImGui::SameLine();
+        if (ImGui::Button("reset")) {
+            editor.reset();
+            editing = true;
+        }
     }
     return editing;
 }

@@ -14,6 +14,7 @@
 #include "nodes/volume/DenseGrid.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Separator.h"
+#include "scenegraph/io/SceneReader.h"
 
 #include <gtest/gtest.h>
 
@@ -21,6 +22,7 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace {
@@ -208,6 +210,25 @@ TEST_F(TransferFunctionEditorTest, resetRestoresTheFieldsAndTakesTheRangeFromThe
     EXPECT_FLOAT_EQ(editor.opacityFactor(), 1.0f);
     EXPECT_EQ(editor.range(), glm::vec2(2.0f, 5.0f));
     EXPECT_TRUE(samePixels(render(*root).image, first.image));
+}
+
+TEST_F(TransferFunctionEditorTest, theTextOfAnEditedFunctionReadsBackAsThatFunction) {
+    const auto transfer = dataRangeFunction();
+    transfer->setName("clouds");
+    TransferFunctionEditor editor(*scene(transfer));
+    editor.setRange({2.5f, 4.0f});
+    editor.addOpacityPoint({0.5f, 0.25f});
+    editor.setPreset(nodes::ColorPreset::Magma);
+    const std::string text = editor.sceneText();
+    EXPECT_EQ(text.rfind("DEF clouds TransferFunction {", 0), 0u) << text;
+    const auto read = std::dynamic_pointer_cast<nodes::TransferFunction>(
+        texsplat::sg::SceneReader::readString("#Inventor V2.1 ascii\n" + text));
+    ASSERT_TRUE(read);
+    EXPECT_EQ(read->range.value(), glm::vec2(2.5f, 4.0f));
+    EXPECT_EQ(read->rangeMode.as<nodes::RangeMode>(), nodes::RangeMode::Fixed);
+    EXPECT_EQ(read->opacityValues.values(), transfer->opacityValues.values());
+    EXPECT_EQ(read->opacities.values(), transfer->opacities.values());
+    EXPECT_EQ(read->preset.as<nodes::ColorPreset>(), nodes::ColorPreset::Magma);
 }
 
 TEST_F(TransferFunctionEditorTest, offersOnlyFieldsItMaySet) {
