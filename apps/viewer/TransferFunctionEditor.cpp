@@ -68,8 +68,9 @@ TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
     for (const sg::Path& path :
          pathsOfType(root, nodes::TransferFunction::classType(), sg::SearchAction::Interest::All)) {
         auto node = std::static_pointer_cast<nodes::TransferFunction>(path.tail());
-        const bool seen = std::any_of(mFunctions.begin(), mFunctions.end(),
-                                      [&](const Function& function) { return function.node == node; });
+        const bool seen =
+            std::any_of(mFunctions.begin(), mFunctions.end(),
+                        [&](const Function& function) { return function.node == node; });
         if (seen) { // a USEd node is found once per path
             continue;
         }
@@ -92,13 +93,15 @@ void TransferFunctionEditor::findVolumes(sg::Node& root) {
     const std::vector<sg::Path> first =
         pathsOfType(root, nodes::VolumeData::classType(), sg::SearchAction::Interest::First);
     for (Function& function : mFunctions) {
-        const auto used = std::find_if(inputs.pairs.begin(), inputs.pairs.end(),
-                                       [&](const auto& pair) { return pair.first == function.node.get(); });
+        const auto used =
+            std::find_if(inputs.pairs.begin(), inputs.pairs.end(),
+                         [&](const auto& pair) { return pair.first == function.node.get(); });
         if (used != inputs.pairs.end()) {
             function.volume = std::static_pointer_cast<const nodes::VolumeData>(
                 used->second->shared_from_this());
         } else if (!first.empty()) {
-            function.volume = std::static_pointer_cast<const nodes::VolumeData>(first.front().tail());
+            function.volume =
+                std::static_pointer_cast<const nodes::VolumeData>(first.front().tail());
         }
     }
 }
@@ -135,8 +138,8 @@ glm::vec2 TransferFunctionEditor::range() {
     Function& function = current();
     if (!function.range) {
         const nodes::TransferFunction& node = *function.node;
-        function.range =
-            function.volume ? node.dataScale(*function.volume->scalarGrid()).range : node.range.value();
+        function.range = function.volume ? node.dataScale(*function.volume->scalarGrid()).range
+                                         : node.range.value();
     }
     return *function.range;
 }

@@ -59,8 +59,8 @@ bool drawOpacityCurve(TransferFunctionEditor& editor) {
             const auto height = static_cast<float>(std::log1p(count) /
                                                    std::log1p(static_cast<double>(most)));
             const float x = origin.x + static_cast<float>(column);
-            draw.AddLine(ImVec2(x, origin.y + size.y), ImVec2(x, origin.y + size.y * (1.0f - height)),
-                         IM_COL32(70, 70, 80, 255));
+            draw.AddLine(ImVec2(x, origin.y + size.y),
+                         ImVec2(x, origin.y + size.y * (1.0f - height)), IM_COL32(70, 70, 80, 255));
         }
     }
 
@@ -92,7 +92,9 @@ bool drawOpacityCurve(TransferFunctionEditor& editor) {
     float nearest = 36.0f;
     for (std::size_t index = 0; index < points.size(); ++index) {
         const ImVec2 at = screen(points[index]);
-        const float distance = (at.x - mouse.x) * (at.x - mouse.x) + (at.y - mouse.y) * (at.y - mouse.y);
+        const float dx = at.x - mouse.x;
+        const float dy = at.y - mouse.y;
+        const float distance = dx * dx + dy * dy;
         if (distance <= nearest) {
             nearest = distance;
             near = static_cast<int>(index);
@@ -134,8 +136,9 @@ bool drawOpacityCurve(TransferFunctionEditor& editor) {
                          ImDrawFlags_None, 1.5f);
         for (std::size_t index = 0; index < points.size(); ++index) {
             const bool marked = static_cast<int>(index) == (dragged >= 0 ? dragged : near);
-            draw.AddCircleFilled(screen(points[index]), marked ? 5.0f : 3.5f,
-                                 marked ? IM_COL32(255, 255, 255, 255) : IM_COL32(240, 200, 90, 255));
+            const ImU32 colour =
+                marked ? IM_COL32(255, 255, 255, 255) : IM_COL32(240, 200, 90, 255);
+            draw.AddCircleFilled(screen(points[index]), marked ? 5.0f : 3.5f, colour);
         }
     }
     const int shown = dragged >= 0 ? dragged : near;
@@ -149,7 +152,8 @@ bool drawOpacityCurve(TransferFunctionEditor& editor) {
 
 // The transfer-function section; true while one of its controls is held or changed a field.
 bool drawTransferFunction(TransferFunctionEditor& editor) {
-    if (editor.isEmpty() || !ImGui::CollapsingHeader("transfer function", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (editor.isEmpty() ||
+        !ImGui::CollapsingHeader("transfer function", ImGuiTreeNodeFlags_DefaultOpen)) {
         return false;
     }
     bool editing = false;

@@ -53,8 +53,8 @@ TEST(SplatView, coarserSpacingOnOneAxisWidensTheReach) {
     const glm::mat4 projection = glm::ortho(-5.0f, 5.0f, -5.0f, 5.0f, 1.0f, 100.0f);
     const SplatView even =
         SplatView::fromMatrices(glm::mat4(1.0f), kLookDownZ, projection, glm::vec3(1.0f));
-    const SplatView uneven =
-        SplatView::fromMatrices(glm::mat4(1.0f), kLookDownZ, projection, glm::vec3(1.0f, 1.0f, 4.0f));
+    const SplatView uneven = SplatView::fromMatrices(glm::mat4(1.0f), kLookDownZ, projection,
+                                                     glm::vec3(1.0f, 1.0f, 4.0f));
     // A box of edge 1 at x = 12: out of sight for an even spacing, but with voxels 4 long in z a
     // splat of the same box may reach 4 times as far.
     EXPECT_TRUE(unitBoxOutOfSight(even.refinementView(1.6), {12.0, 0.0, 0.0}));
