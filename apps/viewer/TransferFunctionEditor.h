@@ -117,6 +117,10 @@ public:
     /// @brief Sets the preset.
     void setPreset(nodes::ColorPreset preset);
 
+    /// @brief The selected function's colour map S(t) at `t` in [0, 1] (linear RGB).
+    /// @throws DataError when its fields are invalid.
+    glm::vec3 colorAt(float t) const { return current().node->colorAt(t); }
+
     /// @brief The selected function as scene-file text (its node alone, without the file
     /// header), to paste into a scene file.
     std::string sceneText() const;

@@ -1,6 +1,7 @@
 #include "apps/viewer/ViewerPanel.h"
 
 #include "apps/viewer/TransferFunctionEditor.h"
+#include "nodes/image/detail/Srgb.h"
 
 #ifdef TEXSPLAT_VIEWER_PANEL
 #include <epoxy/gl.h>
@@ -41,27 +42,39 @@ bool drawOpacityCurve(TransferFunctionEditor& editor) {
     draw.AddRectFilled(origin, ImVec2(origin.x + size.x, origin.y + size.y),
                        IM_COL32(16, 16, 20, 255));
 
+    // Per column: the colour map along the bottom edge, and the histogram bar above it in the
+    // same colour, dimmed.
     const glm::vec2 range = editor.range();
     const glm::vec2 data = editor.dataRange();
     constexpr std::size_t kBins = 256;
+    constexpr float kStrip = 5.0f;
     const std::vector<std::uint64_t>& counts = editor.histogram(kBins);
     const std::uint64_t most = *std::max_element(counts.begin(), counts.end());
-    if (most > 0) {
-        const auto columns = static_cast<int>(size.x);
-        for (int column = 0; column < columns; ++column) {
-            const float t = (static_cast<float>(column) + 0.5f) / size.x;
-            const float value = range.x + t * (range.y - range.x);
-            const float bin = (value - data.x) / (data.y - data.x) * static_cast<float>(kBins);
-            if (bin < 0.0f || bin >= static_cast<float>(kBins)) {
-                continue;
-            }
-            const auto count = static_cast<double>(counts[static_cast<std::size_t>(bin)]);
-            const auto height = static_cast<float>(std::log1p(count) /
-                                                   std::log1p(static_cast<double>(most)));
-            const float x = origin.x + static_cast<float>(column);
-            draw.AddLine(ImVec2(x, origin.y + size.y),
-                         ImVec2(x, origin.y + size.y * (1.0f - height)), IM_COL32(70, 70, 80, 255));
+    const auto columns = static_cast<int>(size.x);
+    for (int column = 0; column < columns; ++column) {
+        const float t = (static_cast<float>(column) + 0.5f) / size.x;
+        const glm::vec3 colour = editor.colorAt(t);
+        const auto encoded = [&](float dim) {
+            const auto byte = [dim](float linear) {
+                return static_cast<int>(255.0f * image::detail::linearToSrgb(
+                                                     std::clamp(linear * dim, 0.0f, 1.0f)) +
+                                        0.5f);
+            };
+            return IM_COL32(byte(colour.r), byte(colour.g), byte(colour.b), 255);
+        };
+        const float x = origin.x + static_cast<float>(column);
+        draw.AddLine(ImVec2(x, origin.y + size.y), ImVec2(x, origin.y + size.y - kStrip),
+                     encoded(1.0f));
+        const float value = range.x + t * (range.y - range.x);
+        const float bin = (value - data.x) / (data.y - data.x) * static_cast<float>(kBins);
+        if (most == 0 || bin < 0.0f || bin >= static_cast<float>(kBins)) {
+            continue;
         }
+        const auto count = static_cast<double>(counts[static_cast<std::size_t>(bin)]);
+        const auto height =
+            static_cast<float>(std::log1p(count) / std::log1p(static_cast<double>(most)));
+        draw.AddLine(ImVec2(x, origin.y + size.y - kStrip),
+                     ImVec2(x, origin.y + (size.y - kStrip) * (1.0f - height)), encoded(0.35f));
     }
 
     // The vertical scale: the largest opacity in effect, kept while a point is dragged so that
