@@ -159,13 +159,12 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         });
     }
     const auto emit = [&] {
-        const octree::View order = result.view.octreeView();
-        // Splats go where they show: blocks out of the view's sides make none, and a cut is not
-        // refined there (the same order, with the sides).
-        const octree::View sighted = result.view.refinementView(result.footprint->extent);
+        // The view with its sides: splats go where they show (blocks out of sight make none,
+        // and a cut is not refined there); the order is octreeView()'s.
+        const octree::View order = result.view.refinementView(result.footprint->extent);
         if (fullResolution) {
             mDepthSorter = {}; // slice order needs no sort
-            octree::emitVoxelSplats(*classified, sighted, *splats, emission);
+            octree::emitVoxelSplats(*classified, order, *splats, emission);
             return;
         }
         octree::Cut cut = errorThreshold.value() > 0.0f
@@ -173,7 +172,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                                              errorThreshold.value())
                               : octree::Cut(mCache->octree());
         if (maxSplats.value() > 0) {
-            cut = octree::Refiner::cutOfBudget(std::move(cut), sighted,
+            cut = octree::Refiner::cutOfBudget(std::move(cut), order,
                                                static_cast<std::uint64_t>(maxSplats.value()));
         }
         octree::emitSplats(cut, order, *splats, emission);

@@ -84,21 +84,27 @@ struct SplatSource {
     std::optional<octree::Octree> octree;
 };
 
-void emitFor(SplatSource& source, std::size_t maxSplats, double extent,
+// Every voxel's splat. Without the view's sides, so the list holds what any method's splats
+// reach; the benchmark's camera frames the whole volume anyway.
+void emitVoxels(const SplatSource& source, octree::SplatList& splats) {
+    octree::emitVoxelSplats(*source.classified, source.view.octreeView(), splats);
+}
+
+#ifdef TEXSPLAT_WITH_GL
+// The octree cut of at most `maxSplats` splats, refined for the splats' `extent`: the list the
+// GL fill-rate ceiling draws for a method with a budget.
+void emitCut(SplatSource& source, std::size_t maxSplats, double extent,
              octree::SplatList& splats) {
-    const octree::View order = source.view.octreeView();
-    if (maxSplats == 0) {
-        octree::emitVoxelSplats(*source.classified, order, splats);
-        return;
-    }
     if (!source.octree) {
         source.octree.emplace(source.classified);
     }
-    const octree::Cut cut = octree::Refiner::cutOfBudget(
-        octree::Cut(*source.octree), source.view.refinementView(extent), maxSplats);
+    const octree::View order = source.view.refinementView(extent);
+    const octree::Cut cut = octree::Refiner::cutOfBudget(octree::Cut(*source.octree), order,
+                                                         maxSplats);
     octree::emitSplats(cut, order, splats);
     octree::sortByDepth(splats, order); // as ScalarSplat draws a cut
 }
+#endif
 
 std::string budgetText(double budget) {
     char text[32];
@@ -231,7 +237,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
                                                   camera.projectionMatrix(aspect),
                                                   glm::vec3(source.classified->spacing()));
     octree::SplatList fullList;
-    emitFor(source, 0, 0.0, fullList);
+    emitVoxels(source, fullList);
     report(where + ": load and classify", 1.0);
 
     const std::optional<image::Image> reference = referenceImage(*root, size, where);
@@ -271,7 +277,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
                     splatNode.size.value() * (marks ? marks->windowScale.value() : 1.0f);
                 octree::SplatList cutList;
                 if (method.budget > 0.0) {
-                    emitFor(source, static_cast<std::size_t>(splatNode.maxSplats.value()),
+                    emitCut(source, static_cast<std::size_t>(splatNode.maxSplats.value()),
                             splatNode.size.value(), cutList);
                 }
                 const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
