@@ -95,6 +95,7 @@ ScalarSplat::renderInputs(sg::State& state) const {
 render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::CameraView& camera,
                                              sg::RenderStatistics& statistics) {
     sg::State& state = action.state();
+    mDrewEveryVoxel = false;
     mCache->setWorkProgress(action.workProgress());
     const auto inputs = renderInputs(state);
     const VolumeData& volume = inputs.first;
@@ -132,6 +133,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         errorThreshold.value() == 0.0f &&
         (maxSplats.value() == 0 ||
          static_cast<std::uint64_t>(maxSplats.value()) >= classified->nonEmptyVoxelCount());
+    mDrewEveryVoxel = fullResolution;
     if (vectors) {
         vectors->localToCamera = camera.view * model;
         vectors->isPerspective = camera.projection[3][3] == 0.0f;

@@ -99,6 +99,11 @@ public:
     /// when one that classification reads changes, then notifies as every node does.
     void notify(const sg::Field* source) override;
 
+    /// @brief Whether the last frame drew every non-empty voxel (the full-resolution list, as
+    /// `maxSplats` 0 and `errorThreshold` 0 do; also a budget that holds them all), so that a
+    /// larger budget or none would draw the same splats. False before the first frame.
+    bool drewEveryVoxel() const { return mDrewEveryVoxel; }
+
 protected:
     ScalarSplat();
 
@@ -155,6 +160,7 @@ private:
     std::shared_ptr<const render::SplatFootprint> mFootprint;
     std::shared_ptr<octree::SplatList> mSplatList; // the last frame's, refilled when free
     octree::DepthSorter mDepthSorter; // its buffers, kept while octree cuts are drawn
+    bool mDrewEveryVoxel = false;
 };
 
 } // namespace texsplat::nodes

@@ -28,10 +28,12 @@ ProgressiveRefinement::ProgressiveRefinement(sg::Node& root, std::int32_t intera
     search.apply(root);
     for (const sg::Path& path : search.paths()) {
         auto splat = std::static_pointer_cast<nodes::ScalarSplat>(path.tail());
-        const bool seen = std::any_of(mSplats.begin(), mSplats.end(),
-                                      [&](const auto& entry) { return entry.first == splat; });
-        if (!seen) { // a USEd node is found once per path
-            mSplats.emplace_back(splat, splat->maxSplats.value());
+        const auto seen = std::find_if(mSplats.begin(), mSplats.end(),
+                                       [&](const SplatNode& entry) { return entry.node == splat; });
+        if (seen != mSplats.end()) { // a USEd node is found once per path
+            seen->isShared = true;
+        } else {
+            mSplats.push_back({splat, splat->maxSplats.value()});
         }
     }
 }
@@ -46,6 +48,7 @@ void ProgressiveRefinement::beginInteraction() {
 }
 
 bool ProgressiveRefinement::refine(std::size_t splatsDrawn, double frameSeconds) {
+    mEndedWithoutRedraw = false;
     if (mStage == Stage::FullQuality) {
         return false;
     }
@@ -81,11 +84,12 @@ void ProgressiveRefinement::setInteractiveBudget(std::int32_t budget) {
 bool ProgressiveRefinement::apply(std::int32_t budget) {
     mBudget = budget;
     bool changed = false;
-    for (auto& [splat, original] : mSplats) {
+    for (const SplatNode& splat : mSplats) {
         // The scene's own budget, when it has one, stays the upper limit.
-        const std::int32_t limited = original > 0 ? std::min(original, budget) : budget;
-        if (splat->maxSplats.value() != limited) {
-            splat->maxSplats.setValue(limited);
+        const std::int32_t limited =
+            splat.original > 0 ? std::min(splat.original, budget) : budget;
+        if (splat.node->maxSplats.value() != limited) {
+            splat.node->maxSplats.setValue(limited);
             changed = true;
         }
     }
@@ -95,11 +99,23 @@ bool ProgressiveRefinement::apply(std::int32_t budget) {
 void ProgressiveRefinement::restore() {
     mStage = Stage::FullQuality;
     mBudget = 0;
-    for (auto& [splat, original] : mSplats) {
-        if (splat->maxSplats.value() != original) {
-            splat->maxSplats.setValue(original);
+    bool redraw = false;
+    for (const SplatNode& splat : mSplats) {
+        sg::SFInt32& maxSplats = splat.node->maxSplats;
+        if (maxSplats.value() == splat.original) {
+            continue;
         }
+        // A budget that held every voxel drew the full-resolution list, which is what no budget
+        // draws: the same frame again would be a whole frame's work (seconds for a big volume).
+        const bool drewTheSame = splat.original == 0 && !splat.isShared &&
+                                 splat.node->errorThreshold.value() == 0.0f &&
+                                 splat.node->drewEveryVoxel();
+        const bool notifies = maxSplats.enableNotify(!drewTheSame);
+        maxSplats.setValue(splat.original);
+        maxSplats.enableNotify(notifies);
+        redraw = redraw || !drewTheSame;
     }
+    mEndedWithoutRedraw = !redraw;
 }
 
 } // namespace texsplat::apps

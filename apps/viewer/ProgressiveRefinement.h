@@ -41,6 +41,12 @@ public:
     /// back (stage() is FullQuality).
     bool refine(std::size_t splatsDrawn, double frameSeconds = 0.0);
 
+    /// @brief Whether the last refine() ended refinement with the frame already drawn: each
+    /// splat node's last frame drew what the scene's own settings draw (every voxel, for a node
+    /// without a budget or error threshold of its own), so they were restored without
+    /// notification and no frame follows. False while refining and when a frame follows.
+    bool endedWithoutRedraw() const { return mEndedWithoutRedraw; }
+
     /// @brief Steps are for feedback while they are quick: after a slower frame the next is the
     /// full-quality one (the 1024³ cloud on 2 cores: the 3.2 M-splat cut took 0.8 s, the next
     /// step, 12.8 M, 4 s, the full frame 1.5 s).
@@ -62,14 +68,21 @@ public:
     bool hasSplatNodes() const { return !mSplats.empty(); }
 
 private:
+    struct SplatNode {
+        std::shared_ptr<nodes::ScalarSplat> node;
+        std::int32_t original = 0; // the scene's own maxSplats
+        bool isShared = false;     // on more than one path: its last frame drew several
+    };
+
     bool apply(std::int32_t budget); // true when a node's maxSplats changed
     void restore();
 
-    std::vector<std::pair<std::shared_ptr<nodes::ScalarSplat>, std::int32_t>> mSplats;
+    std::vector<SplatNode> mSplats;
     std::int32_t mInteractiveBudget;
     std::int32_t mBudget = 0;
     std::size_t mLastDrawn = 0; // splats of the previous refinement step
     Stage mStage = Stage::FullQuality;
+    bool mEndedWithoutRedraw = false;
 };
 
 } // namespace texsplat::apps

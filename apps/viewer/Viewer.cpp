@@ -181,7 +181,14 @@ void Viewer::run() {
     double lastFrameSeconds = 0.0;
     // One refinement step per idle moment after a coarse frame was drawn (scheduled below).
     sg::IdleSensor refineStep(queue);
-    refineStep.setCallback([&] { refinement.refine(lastSplats, lastFrameSeconds); });
+    refineStep.setCallback([&] {
+        if (!refinement.refine(lastSplats, lastFrameSeconds) &&
+            refinement.endedWithoutRedraw() && mOptions.timeReport) {
+            std::fprintf(stderr, "at %.2f s: full quality, the last frame's %zu splats\n",
+                         std::chrono::duration<double>(Clock::now() - started).count(),
+                         lastSplats);
+        }
+    });
 
     FramePresenter presenter;
     ViewerPanel panel(window.handle());

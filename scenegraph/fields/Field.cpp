@@ -171,6 +171,9 @@ void Field::propagate(bool clearDefault) {
     if (clearDefault) {
         mIsDefault = false;
     }
+    if (!mIsNotifyEnabled) {
+        return;
+    }
     notifyObservers(this);
     // Index loop: a target may disconnect itself while being updated.
     const std::vector<Field*>& followers = targets();

@@ -80,6 +80,19 @@ public:
     /// @brief Notifies as if the value had changed (without clearing the default flag).
     void touch();
 
+    /// @brief Turns notification off or back on and returns whether it was on (Inventor's
+    /// SoField::enableNotify()). While it is off, a change of the value tells nobody: no
+    /// observer, not the container, and no connected field follows it. For a change that the
+    /// caller knows makes no difference to anything observing the field.
+    bool enableNotify(bool enable) {
+        const bool was = mIsNotifyEnabled;
+        mIsNotifyEnabled = enable;
+        return was;
+    }
+
+    /// @brief Whether a change of the value notifies (enableNotify()); on by default.
+    bool isNotifyEnabled() const { return mIsNotifyEnabled; }
+
     /// @brief Follows `source` from now on (takes its value now). Throws DataError if the
     /// types differ, or the connection would make a cycle or a chain longer than
     /// kMaxConnectionChain links.
@@ -152,6 +165,7 @@ private:
     // Last, so that a derived field's value may fill the padding after them.
     bool mIsDefault = true;
     bool mIsReceiving = false;
+    bool mIsNotifyEnabled = true;
 };
 
 } // namespace texsplat::sg

@@ -8,6 +8,7 @@
 #include "nodes/ScalarSplat.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/gl/GlRenderer.h"
+#include "scenegraph/Observer.h"
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/gl/EglContext.h"
 
@@ -85,6 +86,54 @@ TEST_F(ProgressiveRefinementTest, coarseWhileMovingThenRefinesToTheScenesOwnCut)
         EXPECT_EQ(splat->maxSplats.value(), 0) << "the scene's own setting is restored";
     }
     EXPECT_EQ(render(), full);
+}
+
+// Counts the notifications a node sends its observers (the viewer's change sensor).
+struct ChangeCounter : sg::Observer {
+    void changed(sg::Notifier& /*subject*/, const sg::Field* /*source*/) override { ++changes; }
+    void subjectDestroyed(sg::Notifier& /*subject*/) override {}
+    int changes = 0;
+};
+
+TEST_F(ProgressiveRefinementTest, theFrameThatDrewEveryVoxelIsNotDrawnAgain) {
+    // The last step's budget holds every voxel, so that frame drew the full-resolution list:
+    // the scene's own settings are restored without a notification, and no frame follows.
+    const std::size_t full = render();
+    ProgressiveRefinement refinement(*mRoot, 1000);
+    refinement.beginInteraction();
+    std::size_t drawn = render();
+    ChangeCounter counter;
+    mRoot->addObserver(counter);
+    int steps = 0;
+    int before = counter.changes;
+    while (refinement.refine(drawn)) {
+        ASSERT_LT(++steps, 12) << "refinement does not end";
+        EXPECT_FALSE(refinement.endedWithoutRedraw());
+        EXPECT_GT(counter.changes, before) << "each step notifies: a finer frame follows";
+        before = counter.changes;
+        drawn = render();
+    }
+    mRoot->removeObserver(counter);
+    EXPECT_EQ(drawn, full) << "the last step drew every voxel";
+    EXPECT_TRUE(refinement.endedWithoutRedraw());
+    EXPECT_EQ(counter.changes, before) << "the restore notified: the same frame would be redrawn";
+    for (const nodes::ScalarSplat* splat : splatNodes(*mRoot)) {
+        EXPECT_EQ(splat->maxSplats.value(), 0);
+        EXPECT_TRUE(splat->maxSplats.isNotifyEnabled());
+    }
+}
+
+TEST_F(ProgressiveRefinementTest, aNodeWhoseLastFrameWasACutIsDrawnAgain) {
+    // A slow step ends refinement with a cut on the screen: the full frame must follow.
+    ProgressiveRefinement refinement(*mRoot, 1000);
+    refinement.beginInteraction();
+    const std::size_t drawn = render();
+    ChangeCounter counter;
+    mRoot->addObserver(counter);
+    EXPECT_FALSE(refinement.refine(drawn, 2.0 * ProgressiveRefinement::kQuickStepSeconds));
+    mRoot->removeObserver(counter);
+    EXPECT_FALSE(refinement.endedWithoutRedraw());
+    EXPECT_GE(counter.changes, 1);
 }
 
 TEST_F(ProgressiveRefinementTest, aSlowStepIsFollowedByTheFullQualityFrame) {

@@ -55,6 +55,34 @@ TEST(Field, touchKeepsTheDefaultFlag) {
     cube->size.removeObserver(observer);
 }
 
+TEST(Field, aFieldWithNotificationOffTellsNobodyOfAChange) {
+    TestCube::Ptr cube = TestCube::create();
+    TestCube::Ptr follower = TestCube::create();
+    follower->size.connectFrom(cube->size);
+    RecordingObserver fieldObserver;
+    RecordingObserver nodeObserver;
+    cube->size.addObserver(fieldObserver);
+    cube->addObserver(nodeObserver);
+    EXPECT_TRUE(cube->size.isNotifyEnabled());
+    EXPECT_TRUE(cube->size.enableNotify(false));
+    EXPECT_FALSE(cube->size.isNotifyEnabled());
+    cube->size = 4.0f;
+    cube->size.touch();
+    EXPECT_EQ(cube->size.value(), 4.0f);
+    EXPECT_FALSE(cube->size.isDefault()) << "the value is set all the same";
+    EXPECT_TRUE(fieldObserver.subjects.empty());
+    EXPECT_TRUE(nodeObserver.subjects.empty());
+    EXPECT_NE(follower->size.value(), 4.0f) << "a connected field does not follow";
+
+    EXPECT_FALSE(cube->size.enableNotify(true));
+    cube->size = 5.0f;
+    EXPECT_EQ(fieldObserver.subjects.size(), 1u);
+    EXPECT_EQ(nodeObserver.subjects.size(), 1u);
+    EXPECT_EQ(follower->size.value(), 5.0f);
+    cube->size.removeObserver(fieldObserver);
+    cube->removeObserver(nodeObserver);
+}
+
 TEST(Field, observersHearWhenTheFieldDies) {
     RecordingObserver observer;
     Field* address = nullptr;
