@@ -11,8 +11,8 @@ namespace texsplat::apps {
 
 void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {
     command.add_flag("--colorbar", options.colorbar,
-                     "Draw a legend of the first TransferFunction's colours with the values of "
-                     "its range into the image");
+                     "Draw a legend of the colours of the first splat node's TransferFunction, "
+                     "with the values of its range over that node's data, into the image");
     command
         .add_option("--colorbar-position", options.colorbarPosition,
                     "Where --colorbar draws the legend: right, left, top or bottom")

@@ -1,12 +1,9 @@
 #include "apps/viewer/TransferFunctionEditor.h"
 
-#include "nodes/ScalarSplat.h"
+#include "nodes/actions/SplatInputs.h"
 #include "nodes/detail/DataRange.h"
-#include "nodes/elements/TransferFunctionElement.h"
-#include "nodes/elements/VolumeElement.h"
 #include "nodes/volume/ValueHistogram.h"
 #include "scenegraph/Error.h"
-#include "scenegraph/actions/Action.h"
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/io/WriteAction.h"
 
@@ -34,34 +31,6 @@ void checkFinite(glm::vec2 point) {
     }
 }
 
-// What each splat node reads: the transfer function and the volume in effect where it is
-// traversed (the other nodes do what they do for any action: put themselves into the state).
-class SplatInputs : public sg::Action {
-public:
-    SplatInputs() : Action(methods()) {}
-
-    // (function, volume) at each splat node that has both, in traversal order.
-    std::vector<std::pair<const nodes::TransferFunction*, const nodes::VolumeData*>> pairs;
-
-private:
-    static sg::MethodTable& methods() {
-        static sg::MethodTable table = [] {
-            sg::MethodTable initial;
-            initial.add(nodes::ScalarSplat::classType(), [](sg::Action& action, sg::Node&) {
-                auto& inputs = static_cast<SplatInputs&>(action);
-                const auto* transfer =
-                    inputs.state().get<nodes::TransferFunctionElement>().transferFunction;
-                const auto* volume = inputs.state().get<nodes::VolumeElement>().volume;
-                if (transfer && volume) {
-                    inputs.pairs.emplace_back(transfer, volume);
-                }
-            });
-            return initial;
-        }();
-        return table;
-    }
-};
-
 } // namespace
 
 TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
@@ -88,17 +57,16 @@ TransferFunctionEditor::TransferFunctionEditor(sg::Node& root) {
 }
 
 void TransferFunctionEditor::findVolumes(sg::Node& root) {
-    SplatInputs inputs;
-    inputs.apply(root);
+    const std::vector<nodes::SplatInput> inputs = nodes::splatInputs(root);
     const std::vector<sg::Path> first =
         pathsOfType(root, nodes::VolumeData::classType(), sg::SearchAction::Interest::First);
     for (Function& function : mFunctions) {
-        const auto used =
-            std::find_if(inputs.pairs.begin(), inputs.pairs.end(),
-                         [&](const auto& pair) { return pair.first == function.node.get(); });
-        if (used != inputs.pairs.end()) {
+        const auto used = std::find_if(inputs.begin(), inputs.end(), [&](const auto& input) {
+            return input.transfer == function.node.get();
+        });
+        if (used != inputs.end()) {
             function.volume = std::static_pointer_cast<const nodes::VolumeData>(
-                used->second->shared_from_this());
+                used->volume->shared_from_this());
         } else if (!first.empty()) {
             function.volume =
                 std::static_pointer_cast<const nodes::VolumeData>(first.front().tail());

@@ -2,6 +2,7 @@
 
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
+#include "nodes/actions/SplatInputs.h"
 #include "nodes/annotation/LabelFont.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/SearchAction.h"
@@ -80,11 +81,22 @@ ColorLegend::ColorLegend(ColorMap colorMap, glm::vec2 range, LegendPosition posi
     : mColorMap(std::move(colorMap)), mRange(range), mPosition(position) {}
 
 ColorLegend ColorLegend::ofScene(sg::Node& root, LegendPosition position) {
-    const auto transfer = firstOfType<nodes::TransferFunction>(root);
+    std::shared_ptr<const nodes::TransferFunction> transfer;
+    std::shared_ptr<const nodes::VolumeData> volume;
+    const std::vector<nodes::SplatInput> inputs = nodes::splatInputs(root);
+    if (!inputs.empty()) {
+        // What the first splat node draws: its function over its own volume.
+        transfer = std::static_pointer_cast<const nodes::TransferFunction>(
+            inputs.front().transfer->shared_from_this());
+        volume = std::static_pointer_cast<const nodes::VolumeData>(
+            inputs.front().volume->shared_from_this());
+    } else {
+        transfer = firstOfType<nodes::TransferFunction>(root);
+        volume = firstOfType<nodes::VolumeData>(root);
+    }
     if (!transfer) {
         throw DataError("colour legend: the scene has no TransferFunction");
     }
-    const auto volume = firstOfType<nodes::VolumeData>(root);
     const glm::vec2 range = volume ? transfer->dataScale(*volume->scalarGrid()).range
                                    : transfer->range.value();
     return ColorLegend([transfer](float t) { return transfer->colorAt(t); }, range, position);

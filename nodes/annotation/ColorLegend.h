@@ -38,9 +38,11 @@ public:
     /// @brief A legend of `colorMap` labelled over `range` (range[0] at t = 0).
     ColorLegend(ColorMap colorMap, glm::vec2 range, LegendPosition position);
 
-    /// @brief The legend of the scene's first TransferFunction (in traversal order) over the
-    /// range it uses for the data of the scene's first VolumeData (TransferFunction::dataScale),
-    /// or over its `range` field when there is no VolumeData.
+    /// @brief The legend of what the scene's first splat node draws (in traversal order): the
+    /// TransferFunction in effect there over the range it uses for the data of the VolumeData in
+    /// effect there (TransferFunction::dataScale; nodes::splatInputs()). Without such a splat
+    /// node: the first TransferFunction over the first VolumeData's data, or over its `range`
+    /// field when there is no VolumeData.
     /// @throws DataError when the scene has no TransferFunction; what reading the volume throws.
     static ColorLegend ofScene(sg::Node& root, LegendPosition position);
 

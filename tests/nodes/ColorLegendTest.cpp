@@ -6,6 +6,7 @@
 
 #include "SceneNodesTestSupport.h"
 #include "nodes/NodeTypes.h"
+#include "nodes/TextureSplat.h"
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 #include "nodes/volume/DenseGrid.h"
@@ -108,6 +109,45 @@ TEST(ColorLegend, aSceneGivesItsTransferFunctionAndDataRange) {
                   ColorLegend::ofScene(*sg::Separator::create(), LegendPosition::Right);
               }),
               "colour legend: the scene has no TransferFunction");
+}
+
+TEST(ColorLegend, aSceneGivesWhatItsFirstSplatNodeDraws) {
+    // A function and a volume that no splat node draws come first in the file, as a shared
+    // mask volume or a function kept for later would: the legend is of what is drawn.
+    nodes::registerNodeTypes();
+    const auto rawVolume = [](const std::string& name, float low, float high) {
+        volume::DenseScalarGrid grid(volume::GridGeometry({3, 1, 1}));
+        grid.setValue({0, 0, 0}, low);
+        grid.setValue({1, 0, 0}, 0.5f * (low + high));
+        grid.setValue({2, 0, 0}, high);
+        const std::string path = nodes::test::testPath(name);
+        volume::writeRawVolume(path, grid);
+        auto volume = nodes::VolumeData::create();
+        volume->source.setValue(nodes::VolumeSource::FileRaw);
+        volume->fileName.setValue(path);
+        return volume;
+    };
+    auto drawn = nodes::TransferFunction::create();
+    drawn->preset.setValue(nodes::ColorPreset::Viridis);
+    const auto unused = sg::Separator::create();
+    unused->addChild(magma());
+    unused->addChild(rawVolume("unused.raw", -0.15f, 0.15f));
+    const auto shown = sg::Separator::create();
+    shown->addChild(drawn);
+    shown->addChild(rawVolume("shown.raw", 2.0f, 10.0f));
+    shown->addChild(nodes::TextureSplat::create());
+    const auto root = sg::Separator::create();
+    root->addChild(unused);
+    root->addChild(shown);
+
+    const ColorLegend legend = ColorLegend::ofScene(*root, LegendPosition::Right);
+    EXPECT_EQ(legend.range(), glm::vec2(2.0f, 10.0f));
+    image::Image image(96, 64);
+    legend.draw(image);
+    const image::ImageRegion bar = legend.barRegion(96, 64);
+    EXPECT_EQ(image.pixel(bar.x + bar.width / 2, bar.y + bar.height - 1),
+              glm::vec4(drawn->colorAt(0.5f / static_cast<float>(bar.height)), 1.0f))
+        << "the lowest value in the drawn function's colour";
 }
 
 TEST(ColorLegend, positionsAreNamed) {
