@@ -16,7 +16,9 @@ namespace texsplat::octree {
 /// the eye; for an orthographic view, the side the direction points to) comes first. This is a
 /// visibility order of the nodes' cells, with no sort (docs/octree.md has the proof sketch).
 /// For a perspective view, subtrees whose cells lie wholly behind the eye plane and nodes whose
-/// centre is not in front of it are culled: they cannot be projected. Kernels reach past their
+/// centre is not in front of it are culled: they cannot be projected. For a view with sides
+/// (View::seeingOnly()), nodes whose splats lie wholly out of sight are left out with everything
+/// below them: they cover no pixel. Kernels reach past their
 /// cells, so overlapping splats may be out of centre-depth order; `sortByDepth()` fixes that.
 void traverseBackToFront(const Cut& cut, const View& view,
                          const std::function<void(const NodeRef&)>& visit);

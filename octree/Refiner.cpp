@@ -59,15 +59,51 @@ RefineBudget RefineBudget::forTime(double seconds, double splatsPerSecond) {
     return budget;
 }
 
-Refiner::Refiner(const Octree& octree, const View& view) : Refiner(Cut(octree), view) {}
+namespace {
 
-Refiner::Refiner(Cut cut, const View& view) : mCut(std::move(cut)), mView(view) {
-    if (!mCut.octree().isEmpty()) {
-        forEachNodeOf(mCut, [this](const NodeRef& node) { push(node); });
-    }
+bool isInSight(const Octree& octree, const View& view, const NodeRef& node) {
+    return !view.hasSides() || !view.isOutOfSight(octree.cellMin(node), octree.cellMax(node));
 }
 
-namespace {
+// The splats in sight that splitting @p node, a node in sight, adds: its children in sight less
+// itself; -1 when its splat reaches into sight while its children's smaller ones all lie out of
+// it (the split then takes a splat that the full-resolution image does not have off the image).
+int addedInSight(const Octree& octree, const View& view, const NodeRef& node) {
+    const int children =
+        detail::bitCount(octree.nodes()[static_cast<std::size_t>(node.index)].childMask);
+    if (!view.hasSides() || view.isWhollyInSight(octree.cellMin(node), octree.cellMax(node))) {
+        return children - 1;
+    }
+    std::array<NodeRef, 8> nodes;
+    octree.children(node, nodes);
+    return static_cast<int>(std::count_if(nodes.begin(), nodes.begin() + children,
+                                          [&](const NodeRef& child) {
+                                              return isInSight(octree, view, child);
+                                          })) -
+           1;
+}
+
+// Whether a split adding @p added splats keeps @p inSight within @p maxSplats.
+bool fits(std::uint64_t inSight, int added, std::uint64_t maxSplats) {
+    return added <= 0 || inSight + static_cast<std::uint64_t>(added) <= maxSplats;
+}
+
+// @p inSight after a split adding @p added. A node split has priority > 0, so it is in sight and
+// counted: the count never goes below 0.
+std::uint64_t withAdded(std::uint64_t inSight, int added) {
+    return added >= 0 ? inSight + static_cast<std::uint64_t>(added)
+                      : inSight - static_cast<std::uint64_t>(-added);
+}
+
+// The nodes of @p cut in the view's sight (Refiner::splatsInSight()).
+std::uint64_t countInSight(const Cut& cut, const View& view) {
+    if (cut.octree().isEmpty() || !view.hasSides()) {
+        return cut.splatCount();
+    }
+    std::uint64_t count = 0;
+    forEachNodeOf(cut, [&](const NodeRef& node) { count += isInSight(cut.octree(), view, node); });
+    return count;
+}
 
 // Refiner::priority() of @p node, a node of level >= 1.
 double priorityOf(const Octree& octree, const View& view, const NodeRef& node) {
@@ -86,25 +122,24 @@ double priorityOf(const Octree& octree, const View& view, const NodeRef& node) {
     return static_cast<double>(octree.nodes()[static_cast<std::size_t>(node.index)].error) * size;
 }
 
-std::uint64_t addedSplats(const Octree& octree, std::uint64_t record) {
-    return static_cast<std::uint64_t>(
-               detail::bitCount(octree.nodes()[static_cast<std::size_t>(record)].childMask)) -
-           1;
-}
-
 // Nodes of this level and above hand their children to parallel tasks.
 constexpr int kParallelLevel = 5;
 
 // Writes the bottleneck of @p node (level >= 1) and of its descendants of level >= 1: the
 // smallest priority on the path down from the start cut, infinity for the nodes the start cut
 // splits (their ancestors are split too, so @p above is infinity there). Below a bottleneck of
-// 0 (a node never split) the records keep their 0.
+// 0 (a node never split) the records keep their 0. For the nodes that may be split, also the
+// splats in sight their split adds (addedInSight(), -1 to 7).
 void writeBottlenecks(const Cut& start, const View& view, const NodeRef& node, double above,
-                      std::vector<double>& bottlenecks) {
+                      std::vector<double>& bottlenecks, std::vector<std::int8_t>& added) {
     const Octree& octree = start.octree();
     const double bottleneck =
         start.isSplit(node) ? above : std::min(above, priorityOf(octree, view, node));
-    bottlenecks[static_cast<std::size_t>(node.index)] = bottleneck;
+    const auto index = static_cast<std::size_t>(node.index);
+    bottlenecks[index] = bottleneck;
+    if (bottleneck > 0.0 && !start.isSplit(node)) {
+        added[index] = static_cast<std::int8_t>(addedInSight(octree, view, node));
+    }
     if (node.level == 1 || !(bottleneck > 0.0)) {
         return; // voxels below, or nothing that will be split
     }
@@ -112,7 +147,7 @@ void writeBottlenecks(const Cut& start, const View& view, const NodeRef& node, d
     const int count = octree.children(node, children);
     const auto visit = [&](int i) {
         writeBottlenecks(start, view, children[static_cast<std::size_t>(i)], bottleneck,
-                         bottlenecks);
+                         bottlenecks, added);
     };
     if (node.level >= kParallelLevel) {
         tbb::parallel_for(0, count, visit);
@@ -130,19 +165,20 @@ std::uint64_t keyOf(double bottleneck) {
     return key;
 }
 
-// Where the budget runs out in the order of decreasing bottleneck: the key of the bottleneck
-// whose nodes together no longer fit in @p left added splats while all larger ones do, and how
-// many splats are left for those nodes; no key when every candidate fits. Most significant
-// 11-bit digit first: the records whose digit lies above the crossing bucket fit, those below
-// do not, and the next digit looks only inside the crossing bucket.
+// Where the budget runs out in the order of decreasing bottleneck, counting only the splits
+// that add splats (@p added above 0): the key of the bottleneck whose nodes together no longer
+// fit in @p left added splats while all larger ones do, and how many splats are left for those
+// nodes; no key when every candidate fits. Most significant 11-bit digit first: the records
+// whose digit lies above the crossing bucket fit, those below do not, and the next digit looks
+// only inside the crossing bucket.
 struct Crossing {
     std::uint64_t key;
     std::uint64_t left;
     std::size_t tied; // candidates with that bottleneck
 };
-std::optional<Crossing> findCrossing(const Octree& octree, std::vector<std::uint64_t> records,
+std::optional<Crossing> findCrossing(std::vector<std::uint64_t> records,
                                      const std::vector<double>& bottlenecks,
-                                     std::uint64_t left) {
+                                     const std::vector<std::int8_t>& added, std::uint64_t left) {
     constexpr int kDigitBits = 11;
     constexpr std::size_t kBuckets = std::size_t{1} << kDigitBits;
     std::uint64_t prefix = 0;
@@ -160,7 +196,8 @@ std::optional<Crossing> findCrossing(const Octree& octree, std::vector<std::uint
         tbb::parallel_for(Range(0, records.size(), 4096), [&](const Range& range) {
             Histogram& histogram = partial.local();
             for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                histogram[digitOf(records[i])] += addedSplats(octree, records[i]);
+                const std::int8_t splats = added[static_cast<std::size_t>(records[i])];
+                histogram[digitOf(records[i])] += static_cast<std::uint64_t>(std::max<int>(splats, 0));
             }
         });
         Histogram weights(kBuckets, 0);
@@ -198,6 +235,15 @@ double bottleneckOf(std::uint64_t key) {
 
 } // namespace
 
+Refiner::Refiner(const Octree& octree, const View& view) : Refiner(Cut(octree), view) {}
+
+Refiner::Refiner(Cut cut, const View& view) : mCut(std::move(cut)), mView(view) {
+    if (!mCut.octree().isEmpty()) {
+        forEachNodeOf(mCut, [this](const NodeRef& node) { push(node); });
+    }
+    mSplatsInSight = countInSight(mCut, mView);
+}
+
 double Refiner::priority(const NodeRef& node) const {
     return priorityOf(mCut.octree(), mView, node);
 }
@@ -212,8 +258,8 @@ void Refiner::push(const NodeRef& node) {
 // before its first split that does not fit. They leave the queue after every node of a larger
 // bottleneck and before every other node (whose priorities are below @p threshold), in the
 // queue's own order: priority, then record.
-void Refiner::splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
-                        double threshold, std::uint64_t maxSplats) {
+bool Refiner::splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
+                        double threshold, std::uint64_t& inSight, std::uint64_t maxSplats) {
     const Octree& octree = cut.octree();
     Queue queue;
     const auto offer = [&](const NodeRef& node) {
@@ -226,45 +272,87 @@ void Refiner::splitTied(Cut& cut, const View& view, const std::vector<double>& b
     std::array<NodeRef, 8> children;
     while (!queue.empty()) {
         const Candidate top = queue.top();
-        if (cut.splatCount() + addedSplats(octree, top.node.index) > maxSplats) {
-            return;
+        const int added = addedInSight(octree, view, top.node);
+        if (!fits(inSight, added, maxSplats)) {
+            return true;
         }
         queue.pop();
         cut.splitRecord(top.node.index);
+        inSight = withAdded(inSight, added);
         const int count = octree.children(top.node, children);
         for (int i = 0; i < count; ++i) {
             offer(children[static_cast<std::size_t>(i)]);
         }
     }
+    return false;
 }
 
 Cut Refiner::refineAtOnce(Cut start, const View& view, std::uint64_t maxSplats) {
     const Octree& octree = start.octree();
-    if (octree.isEmpty() || octree.rootLevel() == 0 || start.splatCount() > maxSplats) {
-        return start; // nothing to split, or the queue's first split would not fit
+    if (octree.isEmpty() || octree.rootLevel() == 0) {
+        return start; // nothing to split
     }
+    std::uint64_t inSight = countInSight(start, view);
     std::vector<double> bottlenecks(octree.nodes().size(), 0.0);
+    std::vector<std::int8_t> added(octree.nodes().size(), 0);
     constexpr double kInfinity = std::numeric_limits<double>::infinity();
-    writeBottlenecks(start, view, octree.root(), kInfinity, bottlenecks);
+    writeBottlenecks(start, view, octree.root(), kInfinity, bottlenecks, added);
     std::vector<std::uint64_t> candidates; // what the queue would split, given the budget
+    std::vector<double> lowering;          // the bottlenecks of splits that draw one splat fewer
     for (std::size_t record = 0; record < bottlenecks.size(); ++record) {
         if (bottlenecks[record] > 0.0 && bottlenecks[record] < kInfinity) {
             candidates.push_back(record);
+            if (added[record] < 0) {
+                lowering.push_back(bottlenecks[record]);
+            }
         }
     }
-    const std::optional<Crossing> crossing =
-        findCrossing(octree, candidates, bottlenecks, maxSplats - start.splatCount());
-    const double threshold = crossing ? bottleneckOf(crossing->key) : 0.0;
+    // The queue stops at the first split that does not fit, and splits that lower the count
+    // leave room for those after them. So the search goes by segments of bottlenecks, from the
+    // largest: in each, the crossing of the splits that add, with the room that the lowering
+    // splits above it leave, until that room stops growing; it never passes the queue's stop (the
+    // room counted is at most what the queue has there), and where it stops the queue does. The
+    // nodes tied at the crossing are replayed in the queue's order; when all of them fit
+    // (lowering splits among them), the next segment starts below them.
     Cut cut = std::move(start);
-    for (const std::uint64_t record : candidates) {
-        if (bottlenecks[static_cast<std::size_t>(record)] > threshold) {
-            cut.splitRecord(record);
+    double upper = kInfinity; // the candidates at or above it are decided
+    for (;;) {
+        std::optional<Crossing> crossing;
+        double threshold = 0.0;
+        std::uint64_t room = 0;
+        for (;;) {
+            const std::uint64_t limit = maxSplats + room;
+            crossing = findCrossing(candidates, bottlenecks, added,
+                                    limit > inSight ? limit - inSight : 0);
+            threshold = crossing ? bottleneckOf(crossing->key) : 0.0;
+            const auto lowered = static_cast<std::uint64_t>(
+                std::count_if(lowering.begin(), lowering.end(), [&](double bottleneck) {
+                    return bottleneck > threshold && bottleneck < upper;
+                }));
+            if (lowered == room) {
+                break;
+            }
+            room = lowered;
         }
+        for (const std::uint64_t record : candidates) {
+            if (bottlenecks[static_cast<std::size_t>(record)] > threshold) {
+                cut.splitRecord(record);
+                inSight = withAdded(inSight, added[static_cast<std::size_t>(record)]);
+            }
+        }
+        // A crossing alone at its bottleneck is a split that does not fit.
+        if (!crossing || crossing->tied == 1 ||
+            splitTied(cut, view, bottlenecks, threshold, inSight, maxSplats)) {
+            return cut;
+        }
+        upper = threshold;
+        candidates.erase(std::remove_if(candidates.begin(), candidates.end(),
+                                        [&](std::uint64_t record) {
+                                            return bottlenecks[static_cast<std::size_t>(record)] >=
+                                                   threshold;
+                                        }),
+                         candidates.end());
     }
-    if (crossing && crossing->tied > 1) {
-        splitTied(cut, view, bottlenecks, threshold, maxSplats);
-    }
-    return cut;
 }
 
 Cut Refiner::cutOfBudget(Cut start, const View& view, std::uint64_t maxSplats) {
@@ -274,13 +362,17 @@ Cut Refiner::cutOfBudget(Cut start, const View& view, std::uint64_t maxSplats) {
     // ordering either way), and the queue cheaper in proportion below (50 000: 0.01 s, from 0.1).
     constexpr std::uint64_t kRecordsPerQueueSplat = 4;
     if (maxSplats < start.octree().nodes().size() / kRecordsPerQueueSplat) {
-        Refiner refiner(std::move(start), view);
-        RefineBudget budget;
-        budget.maxSplats = maxSplats;
-        refiner.refine(budget);
-        return std::move(refiner.mCut); // a member of a local is not moved implicitly
+        return byQueue(std::move(start), view, maxSplats);
     }
     return refineAtOnce(std::move(start), view, maxSplats);
+}
+
+Cut Refiner::byQueue(Cut start, const View& view, std::uint64_t maxSplats) {
+    Refiner refiner(std::move(start), view);
+    RefineBudget budget;
+    budget.maxSplats = maxSplats;
+    refiner.refine(budget);
+    return std::move(refiner.mCut); // a member of a local is not moved implicitly
 }
 
 bool Refiner::isComplete() const {
@@ -293,11 +385,13 @@ std::uint64_t Refiner::refine(const RefineBudget& budget) {
     std::array<NodeRef, 8> children;
     while (splits < budget.maxSplits && !isComplete()) {
         const NodeRef node = mCandidates.top().node;
-        if (mCut.splatCount() + addedSplats(octree, node.index) > budget.maxSplats) {
+        const int added = addedInSight(octree, mView, node);
+        if (!fits(mSplatsInSight, added, budget.maxSplats)) {
             break;
         }
         mCandidates.pop();
         mCut.split(node);
+        mSplatsInSight = withAdded(mSplatsInSight, added);
         ++splits;
         const int count = octree.children(node, children);
         for (int i = 0; i < count; ++i) {

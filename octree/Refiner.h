@@ -13,7 +13,9 @@ namespace texsplat::octree {
 
 /// @brief How far one `Refiner::refine()` step may go.
 struct RefineBudget {
-    /// @brief The cut never grows beyond this many splats. A time budget is turned into splats
+    /// @brief The cut never draws more than this many splats: those in the view's sight
+    /// (View::seeingOnly(); all of the cut for a view without sides), since a splat out of sight
+    /// covers no pixel and is not emitted (emitSplats()). A time budget is turned into splats
     /// by the caller from the backend's measured rate (splats per second), which keeps the cut a
     /// function of its inputs: the same budget always gives the same cut.
     std::uint64_t maxSplats = std::numeric_limits<std::uint64_t>::max();
@@ -43,9 +45,12 @@ public:
     /// @brief Continues from @p cut, e.g. one chosen by error threshold.
     Refiner(Cut cut, const View& view);
 
-    /// @brief Splits nodes, largest priority first, while the next split keeps the cut within
-    /// `budget.maxSplats` and fewer than `budget.maxSplits` splits were made. Stops at the
-    /// first node whose split does not fit, so a larger budget refines the same cut further.
+    /// @brief Splits nodes, largest priority first, while the next split keeps the cut's splats
+    /// in sight within `budget.maxSplats` and fewer than `budget.maxSplits` splits were made.
+    /// Stops at the first node whose split does not fit, so a larger budget refines the same cut
+    /// further. A node whose children are all out of sight is split like any other (its splat
+    /// reaches into sight where the full-resolution image has nothing of its voxels): that split
+    /// draws one splat fewer.
     /// @return the number of splits made.
     std::uint64_t refine(const RefineBudget& budget);
 
@@ -69,6 +74,9 @@ public:
     /// @brief The current cut.
     [[nodiscard]] const Cut& cut() const { return mCut; }
 
+    /// @brief How many of the cut's nodes are in the view's sight: what the budget counts.
+    [[nodiscard]] std::uint64_t splatsInSight() const { return mSplatsInSight; }
+
     /// @brief `error * projected size` of @p node for this refiner's view: the node's error
     /// times its largest cell extent (orthographic) or that extent over its distance to the eye
     /// (perspective, at most 2 for a node around the eye; 0 behind the eye or out of sight).
@@ -88,13 +96,17 @@ private:
     using Queue = std::priority_queue<Candidate, std::vector<Candidate>, LowerPriority>;
 
     void push(const NodeRef& node);
-    // refineAtOnce()'s replay of the queue over the nodes tied at the budget's bottleneck.
-    static void splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
-                          double threshold, std::uint64_t maxSplats);
+    // refineAtOnce()'s replay of the queue over the nodes tied at the budget's bottleneck, from
+    // `inSight` splats in sight (updated); true when it stopped at a split that does not fit.
+    static bool splitTied(Cut& cut, const View& view, const std::vector<double>& bottlenecks,
+                          double threshold, std::uint64_t& inSight, std::uint64_t maxSplats);
+    // The queue's cut of `maxSplats` from `start`.
+    static Cut byQueue(Cut start, const View& view, std::uint64_t maxSplats);
 
     Cut mCut;
     View mView;
     Queue mCandidates;
+    std::uint64_t mSplatsInSight = 0;
 };
 
 } // namespace texsplat::octree

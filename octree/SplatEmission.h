@@ -41,8 +41,9 @@ SplatVector vectorSplat(const VectorEmission& emission, glm::vec3 position, glm:
 /// @brief Replaces the contents of @p splats by the splats of @p cut for @p view, back to front
 /// (`traverseBackToFront()`): one splat per node, at the centre of the node's voxels, with the
 /// node's mean colour and extinction, sized by the node's largest block edge in voxels (2^level
-/// inside the grid; less where the block is clipped by the grid's far faces). With @p vectors
-/// (the grid must have vectors) each splat also carries the node's mean vector (vectorSplat()).
+/// inside the grid; less where the block is clipped by the grid's far faces). For a view with
+/// sides (View::seeingOnly()) the nodes out of sight are left out. With @p vectors (the grid
+/// must have vectors) each splat also carries the node's mean vector (vectorSplat()).
 void emitSplats(const Cut& cut, const View& view, SplatList& splats,
                 const VectorEmission* vectors = nullptr);
 

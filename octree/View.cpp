@@ -87,6 +87,21 @@ bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge) const 
     return false;
 }
 
+bool View::isWhollyInSight(glm::dvec3 low, glm::dvec3 high) const {
+    if (!mHasSides) {
+        return true;
+    }
+    for (const glm::dvec4& side : mSides) {
+        // The corner of the box farthest to the outer side; NaN compares false (not inside).
+        const glm::dvec3 outer(side.x >= 0.0 ? low.x : high.x, side.y >= 0.0 ? low.y : high.y,
+                               side.z >= 0.0 ? low.z : high.z);
+        if (!(glm::dot(glm::dvec3(side), outer) + side.w >= 0.0)) {
+            return false;
+        }
+    }
+    return true;
+}
+
 glm::dvec3 View::farthestCorner(glm::dvec3 low, glm::dvec3 high) const {
     // Per axis, the upper face when the direction's component is positive.
     return {mDirection.x > 0.0 ? high.x : low.x, mDirection.y > 0.0 ? high.y : low.y,

@@ -42,6 +42,11 @@ public:
     /// [@p low, @p high] (say the voxels of a block) all lie wholly outside one of the sides.
     [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge) const;
 
+    /// @brief Whether the box [@p low, @p high] lies wholly inside every side of seeingOnly()
+    /// (always for a view without them): then no splat of a node within it is out of sight, and
+    /// a traversal need not ask isOutOfSight() below it.
+    [[nodiscard]] bool isWhollyInSight(glm::dvec3 low, glm::dvec3 high) const;
+
     /// @brief Whether the view has sides (seeingOnly()).
     [[nodiscard]] bool hasSides() const { return mHasSides; }
 

@@ -53,6 +53,19 @@ public:
                  mView.isBoxBehindEye(mOctree.cellMin(node), mOctree.cellMax(node)));
     }
 
+    /// @brief Whether the splat of @p node lies wholly out of the view's sight
+    /// (View::seeingOnly()): it covers no pixel, and neither does any node below it.
+    [[nodiscard]] bool isOutOfSight(const NodeRef& node) const {
+        return mView.hasSides() &&
+               mView.isOutOfSight(mOctree.cellMin(node), mOctree.cellMax(node));
+    }
+
+    /// @brief Whether every node below @p node (itself included) is in sight.
+    [[nodiscard]] bool isWhollyInSight(const NodeRef& node) const {
+        return !mView.hasSides() ||
+               mView.isWhollyInSight(mOctree.cellMin(node), mOctree.cellMax(node));
+    }
+
     /// @brief Writes the children of @p node, a split node, back to front to @p children and
     /// returns how many there are.
     int children(const NodeRef& node, std::array<NodeRef, 8>& children) const {
@@ -85,11 +98,20 @@ template <typename Visit>
 void forEachBackToFrontFrom(const BackToFrontDescent& descent, const NodeRef& start,
                             Visit&& visit) {
     const Cut& cut = descent.cut();
-    std::vector<NodeRef> pending{start};
+    // With each node, whether everything below it is known to be in sight: then no node below
+    // needs the test (a view without sides never needs it).
+    struct Pending {
+        NodeRef node;
+        bool inSight;
+    };
+    std::vector<Pending> pending{{start, descent.isWhollyInSight(start)}};
     std::array<NodeRef, 8> children;
     while (!pending.empty()) {
-        const NodeRef node = pending.back();
+        const auto [node, inSight] = pending.back();
         pending.pop_back();
+        if (!inSight && descent.isOutOfSight(node)) {
+            continue; // neither it nor anything below it covers a pixel
+        }
         if (!cut.isSplit(node)) {
             if (descent.isDrawn(node)) {
                 visit(node);
@@ -99,19 +121,21 @@ void forEachBackToFrontFrom(const BackToFrontDescent& descent, const NodeRef& st
         if (!descent.isEntered(node)) {
             continue;
         }
+        const bool below = inSight || descent.isWhollyInSight(node);
         const int count = descent.children(node, children);
         if (node.level == 1) {
             // Voxel children are never split: visit them at once instead of through the stack.
             for (int i = 0; i < count; ++i) {
-                if (descent.isDrawn(children[static_cast<std::size_t>(i)])) {
-                    visit(children[static_cast<std::size_t>(i)]);
+                const NodeRef& voxel = children[static_cast<std::size_t>(i)];
+                if ((below || !descent.isOutOfSight(voxel)) && descent.isDrawn(voxel)) {
+                    visit(voxel);
                 }
             }
             continue;
         }
         // The stack pops last-in first: push the nearest child first.
         for (int i = count - 1; i >= 0; --i) {
-            pending.push_back(children[static_cast<std::size_t>(i)]);
+            pending.push_back({children[static_cast<std::size_t>(i)], below});
         }
     }
 }

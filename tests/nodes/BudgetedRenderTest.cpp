@@ -122,9 +122,10 @@ std::size_t splatsInTheImage(const render::Frame& frame) {
 
 TEST(BudgetedRender, aZoomedCutSpendsItsBudgetWhereTheImageIs) {
     // Zoomed 4 times into the tornado: nodes whose splats lie wholly outside the image are not
-    // split, so the budget refines what the image shows. 37 % of the cut's 5000 splats have
-    // their centre in the image; with the splits spread over the whole volume, 9 % had. (The
-    // rest are the children out of sight of nodes split in sight, and splats reaching in.)
+    // split, nor drawn, nor counted in the budget, so the budget refines what the image shows.
+    // 61 % of the cut's 5000 splats have their centre in the image (the rest reach in from
+    // outside); with the splits spread over the whole volume, 9 % had, and 37 % while the
+    // children out of sight of nodes split in sight were drawn and counted.
     const std::shared_ptr<sg::Separator> root = tornado();
     auto& camera = dynamic_cast<PerspectiveCamera&>(*root->child(0));
     camera.heightAngle.setValue(camera.heightAngle.value() / 4.0f);
@@ -132,7 +133,8 @@ TEST(BudgetedRender, aZoomedCutSpendsItsBudgetWhereTheImageIs) {
     render::FrameAction action(kSize, kSize);
     const render::Frame frame = action.collect(*root);
     const std::size_t inside = splatsInTheImage(frame);
-    EXPECT_GT(inside, action.statistics().splats / 4);
+    EXPECT_GT(inside, action.statistics().splats / 2);
+    EXPECT_GT(action.statistics().splats, 5000u - 7u) << "the budget is spent on what shows";
 }
 
 TEST(BudgetedRender, aZoomedFullFrameLeavesOutOnlySplatsThatCoverNoPixel) {

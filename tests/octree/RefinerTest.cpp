@@ -168,8 +168,50 @@ TEST(Refiner, spendsTheBudgetOnWhatIsInSight) {
         }
     }
     EXPECT_GT(outOfSight, 0u) << "the test needs nodes out of sight";
+    // The budget counts the splats drawn, those in sight: the cut holds more nodes than the
+    // budget, and its traversal for the view visits exactly the counted ones.
+    EXPECT_EQ(refiner.splatsInSight(), inSight(refiner.cut()));
+    EXPECT_LE(refiner.splatsInSight(), kBudget);
+    EXPECT_GT(refiner.splatsInSight() + 7, kBudget) << "stopped by the budget";
+    EXPECT_GT(refiner.cut().splatCount(), kBudget);
+    std::uint64_t visited = 0;
+    traverseBackToFront(refiner.cut(), sighted, [&](const NodeRef& node) {
+        ++visited;
+        EXPECT_FALSE(sighted.isOutOfSight(octree.cellMin(node), octree.cellMax(node)));
+    });
+    EXPECT_EQ(visited, refiner.splatsInSight());
     // What the queue reaches, refineAtOnce() reaches.
     EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), sighted, kBudget) == refiner.cut());
+}
+
+TEST(Refiner, aSplitWhoseChildrenAreAllOutOfSightDrawsOneSplatFewer) {
+    // Eight voxels along x, cells from -0.5 to 7.5, and sight from x = 13.5 on: the root's splat
+    // (edge 8, reach 8) reaches in, its two children's (edge 4, reach 4) do not. The full
+    // resolution image has nothing of them, so the root is split and nothing is drawn.
+    auto grid = std::make_shared<ClassifiedGrid>(glm::u64vec3(8, 1, 1), glm::dvec3(1.0),
+                                                 glm::dvec3(0.0));
+    for (std::uint64_t i = 0; i < 8; ++i) {
+        grid->setVoxel({i, 0, 0}, glm::vec3(0.1f * static_cast<float>(i + 1)), 1.0f);
+    }
+    const Octree octree(grid);
+    const View view = View::orthographic({0.0, 0.0, 1.0})
+                          .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -13.5),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0)},
+                                      1.0);
+    Refiner refiner(octree, view);
+    EXPECT_EQ(refiner.splatsInSight(), 1u);
+    EXPECT_EQ(refiner.refine(splats(1)), 1u) << "a split that lowers the count always fits";
+    EXPECT_EQ(refiner.cut().splatCount(), 2u);
+    EXPECT_EQ(refiner.splatsInSight(), 0u);
+    EXPECT_TRUE(refiner.isComplete());
+    std::size_t drawn = 0;
+    traverseBackToFront(refiner.cut(), view, [&](const NodeRef&) { ++drawn; });
+    EXPECT_EQ(drawn, 0u);
+    EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, 1) == refiner.cut());
+    EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, 0) == refiner.cut())
+        << "it fits even a budget of nothing";
 }
 
 TEST(Refiner, isDeterministic) {
@@ -254,6 +296,17 @@ TEST(Refiner, refineAtOnceMakesTheQueuesCutForEveryBudget) {
         {"perspective outside", View::perspective({-9.0, 4.0, 30.0}, {0.3, 0.0, -1.0})},
         {"perspective inside", View::perspective({5.2, 6.1, 4.9}, {0.0, 1.0, 0.0})},
         {"perspective on the axis", View::perspective({7.5, 7.5, -20.0}, {0.0, 0.0, 1.0})},
+        // Sides through the grids: splits counted by the children in sight, none wasted.
+        {"perspective seeing x >= 4, y <= 10",
+         View::perspective({-9.0, 4.0, 30.0}, {0.3, 0.0, -1.0})
+             .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -4.0), glm::dvec4(0.0, -1.0, 0.0, 10.0),
+                          glm::dvec4(0.0, 0.0, 0.0, 1.0), glm::dvec4(0.0, 0.0, 0.0, 1.0)},
+                         1.0)},
+        {"orthographic seeing x + y >= 12, z <= 9",
+         View::orthographic({0.3, -0.5, 0.8})
+             .seeingOnly({glm::dvec4(1.0, 1.0, 0.0, -12.0), glm::dvec4(0.0, 0.0, -1.0, 9.0),
+                          glm::dvec4(0.0, 0.0, 0.0, 1.0), glm::dvec4(0.0, 0.0, 0.0, 1.0)},
+                         2.3)},
     };
     const std::vector<std::pair<std::string, std::shared_ptr<ClassifiedGrid>>> grids = {
         {"random 16^3", randomGrid(glm::u64vec3(16), 5)},

@@ -176,6 +176,11 @@ TEST(SplatEmission, cutSplatsAreTheSerialTraversalsForAnyNumberOfThreads) {
         View::orthographic({0.4, -1.0, 0.3}),
         View::perspective({-30.0, 50.0, 70.0}, {0.5, -0.6, -0.7}),
         View::perspective({18.0, 14.0, 20.0}, {0.3, 0.8, -0.2}), // the eye inside: culled nodes
+        // Sides through the grid: nodes out of sight left out, subtrees and single voxels.
+        View::perspective({-30.0, 50.0, 70.0}, {0.5, -0.6, -0.7})
+            .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -10.0), glm::dvec4(0.0, -1.0, 0.5, 30.0),
+                         glm::dvec4(0.0, 0.0, 0.0, 1.0), glm::dvec4(0.0, 0.0, 0.0, 1.0)},
+                        1.1),
     };
     for (std::size_t v = 0; v < views.size(); ++v) {
         const View& view = views[v];
@@ -195,6 +200,9 @@ TEST(SplatEmission, cutSplatsAreTheSerialTraversalsForAnyNumberOfThreads) {
             };
             const SplatList serial = emitWith(1);
             ASSERT_EQ(serial.size(), nodes.size()) << "view " << v << ", budget " << budget;
+            if (view.hasSides() && budget >= 6000) {
+                EXPECT_LT(nodes.size(), cut.splatCount()) << "nodes out of sight are left out";
+            }
             for (std::size_t i = 0; i < nodes.size(); ++i) {
                 ASSERT_EQ(serial.splats()[i].position, glm::vec3(octree.center(nodes[i])))
                     << "view " << v << ", budget " << budget << ", splat " << i;

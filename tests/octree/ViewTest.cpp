@@ -84,3 +84,18 @@ TEST(View, aNodeIsOutOfSightWhenItsSplatLiesWhollyOutsideASide) {
     EXPECT_EQ(errorOf([&] { (void)plain.seeingOnly(sides, -1.0); }),
               "View: a splat's reach must be finite and >= 0, got -1.000000");
 }
+
+TEST(View, aBoxIsWhollyInSightWhenItLiesInsideEverySide) {
+    const View plain = View::orthographic({0.0, 0.0, 1.0});
+    const View::Sides sides{glm::dvec4(1.0, 0.0, 0.0, 0.0), glm::dvec4(-1.0, 0.0, 0.0, 10.0),
+                            glm::dvec4(0.0, 1.0, 0.0, 0.0), glm::dvec4(0.0, -1.0, 0.0, 10.0)};
+    const View view = plain.seeingOnly(sides, 1.0);
+    EXPECT_TRUE(view.isWhollyInSight({0.0, 2.0, -5.0}, {10.0, 4.0, 5.0})) << "touching two sides";
+    EXPECT_FALSE(view.isWhollyInSight({-0.5, 2.0, 0.0}, {4.0, 4.0, 1.0})) << "across a side";
+    EXPECT_FALSE(view.isWhollyInSight({2.0, 9.0, 0.0}, {4.0, 10.5, 1.0})) << "across another";
+    EXPECT_TRUE(plain.isWhollyInSight({100.0, 100.0, 0.0}, {101.0, 101.0, 1.0})) << "no sides";
+    View::Sides unknown = sides;
+    unknown[1] = glm::dvec4(std::nan(""), 0.0, 0.0, 10.0);
+    EXPECT_FALSE(plain.seeingOnly(unknown, 0.0).isWhollyInSight({1.0, 1.0, 0.0}, {2.0, 2.0, 1.0}))
+        << "a plane that is not finite: not known to be inside (and hides nothing)";
+}
