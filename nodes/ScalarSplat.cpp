@@ -163,7 +163,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     const auto emit = [&] {
         // The view with its sides: splats go where they show (blocks out of sight make none,
         // and a cut is not refined there); the order is octreeView()'s.
-        const octree::View order = result.view.refinementView(result.footprint->extent);
+        const octree::View order = result.view.refinementView(result.footprint->reach());
         if (fullResolution) {
             mDepthSorter = {}; // slice order needs no sort
             octree::emitVoxelSplats(*classified, order, *splats, emission);

@@ -82,12 +82,14 @@ SliceOrder::SliceOrder(const ClassifiedGrid& grid, const View& view)
     }
     const glm::dvec3 spacing = grid.spacing();
     const double voxelEdge = std::max({spacing.x, spacing.y, spacing.z});
+    const double voxelHalfWidth = 0.5 * std::min({spacing.x, spacing.y, spacing.z});
     grid.forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex first) {
         if (!mOutOfSight.empty()) {
             const glm::u64vec3 begin = block * kSize;
             const glm::u64vec3 end = glm::min(begin + kSize, grid.dims());
             if (view.isOutOfSight(grid.toWorld(glm::dvec3(begin) - 0.5),
-                                  grid.toWorld(glm::dvec3(end) - 0.5), voxelEdge)) {
+                                  grid.toWorld(glm::dvec3(end) - 0.5), voxelEdge,
+                                  voxelHalfWidth)) {
                 mOutOfSight[static_cast<std::size_t>(first / ClassifiedGrid::kBlockVoxels)] = true;
                 return;
             }

@@ -65,14 +65,17 @@ View View::seeingOnly(const Sides& sides, double reach) const {
 
 bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high) const {
     const glm::dvec3 extent = high - low;
-    return isOutOfSight(low, high, std::max({extent.x, extent.y, extent.z}));
+    return isOutOfSight(low, high, std::max({extent.x, extent.y, extent.z}),
+                        0.5 * std::min({extent.x, extent.y, extent.z}));
 }
 
-bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge) const {
+bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge,
+                        double nodeHalfWidth) const {
     if (!mHasSides) {
         return false;
     }
-    const double margin = mReach * nodeEdge;
+    const double reach = mReach * nodeEdge;
+    const double margin = reach - std::min(nodeHalfWidth, 0.5 * reach);
     const glm::dvec3 widenedLow = low - margin;
     const glm::dvec3 widenedHigh = high + margin;
     for (const glm::dvec4& side : mSides) {

@@ -28,9 +28,10 @@ public:
     using Sides = std::array<glm::dvec4, 4>;
 
     /// @brief This view seeing only what lies within @p sides, where a splat reaches at most
-    /// @p reach times its node's largest edge beyond the node's cells: a node whose splat lies
-    /// wholly outside (isOutOfSight()) draws nothing, so a cut need not refine it (Refiner).
-    /// Ordering is unchanged. A plane that is not finite hides nothing.
+    /// @p reach times its node's largest edge from the node's centre (the centre of its cells):
+    /// a node whose splat lies wholly outside (isOutOfSight()) draws nothing, so a cut need not
+    /// refine it (Refiner) nor draw it. Ordering is unchanged. A plane that is not finite hides
+    /// nothing.
     /// @throws DataError when @p reach is negative or not finite.
     [[nodiscard]] View seeingOnly(const Sides& sides, double reach) const;
 
@@ -38,9 +39,14 @@ public:
     /// the sides of seeingOnly() (never for a view without them).
     [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high) const;
 
-    /// @brief Whether the splats of nodes of largest edge @p nodeEdge within the cells
-    /// [@p low, @p high] (say the voxels of a block) all lie wholly outside one of the sides.
-    [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge) const;
+    /// @brief Whether the splats of nodes of largest edge @p nodeEdge and smallest half-width
+    /// @p nodeHalfWidth within the cells [@p low, @p high] (say the voxels of a block) all lie
+    /// wholly outside one of the sides. The cells of a node within it lie within the box, and its
+    /// splat reaches reach · nodeEdge from its centre, so at most reach · nodeEdge less its
+    /// half-width beyond them; the credit is at most half the reach, so that a child is never in
+    /// sight where its parent is not.
+    [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge,
+                                    double nodeHalfWidth) const;
 
     /// @brief Whether the box [@p low, @p high] lies wholly inside every side of seeingOnly()
     /// (always for a view without them): then no splat of a node within it is out of sight, and

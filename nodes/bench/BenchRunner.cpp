@@ -91,14 +91,14 @@ void emitVoxels(const SplatSource& source, octree::SplatList& splats) {
 }
 
 #ifdef TEXSPLAT_WITH_GL
-// The octree cut of at most `maxSplats` splats, refined for the splats' `extent`: the list the
-// GL fill-rate ceiling draws for a method with a budget.
+// The octree cut of at most `maxSplats` splats whose squares reach `extent` voxels (any shape
+// draws within their corners): the list the GL fill-rate ceiling draws for a method with a budget.
 void emitCut(SplatSource& source, std::size_t maxSplats, double extent,
              octree::SplatList& splats) {
     if (!source.octree) {
         source.octree.emplace(source.classified);
     }
-    const octree::View order = source.view.refinementView(extent);
+    const octree::View order = source.view.refinementView(extent * std::sqrt(2.0));
     const octree::Cut cut = octree::Refiner::cutOfBudget(octree::Cut(*source.octree), order,
                                                          maxSplats);
     octree::emitSplats(cut, order, splats);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <sstream>
 
@@ -53,6 +54,18 @@ FootprintTexture::FootprintTexture(const RadialKernel& kernel, int resolution, d
             mTexels[static_cast<size_t>(row) * resolution + column] = static_cast<float>(
                 kernel.footprint(std::hypot(-extent + (column + 0.5) * texel,
                                             -extent + (row + 0.5) * texel)));
+}
+
+double FootprintTexture::reach() const {
+    const double texel = 2.0 * mExtent / mResolution;
+    double farthest = -std::numeric_limits<double>::infinity();
+    for (int row = 0; row < mResolution; ++row)
+        for (int column = 0; column < mResolution; ++column)
+            if (mTexels[static_cast<size_t>(row) * mResolution + column] != 0.0f)
+                farthest = std::max(farthest, std::hypot(-mExtent + (column + 0.5) * texel,
+                                                         -mExtent + (row + 0.5) * texel));
+    // A lookup blends the four texels around it, so it reaches a diagonal past their centres.
+    return std::clamp(farthest + texel * std::sqrt(2.0), 0.0, mExtent * std::sqrt(2.0));
 }
 
 FootprintTexture FootprintTexture::gouraudFan(const RadialKernel& kernel, double extent,

@@ -68,6 +68,10 @@ public:
     /// @brief The half-width E of the quad in voxel units.
     double extent() const { return mExtent; }
 
+    /// @brief How far from the centre, in voxels, the bilinear lookup is not 0: the farthest
+    /// texel centre holding a value, plus a texel's diagonal, at most the quad's corner E·√2.
+    double reach() const;
+
     /// @brief Row-major texels, row 0 at y = −E, each the footprint at the texel centre.
     const std::vector<float>& texels() const { return mTexels; }
 

@@ -45,6 +45,13 @@ struct SplatFootprint {
     int azimuthSamples = 7; ///< GouraudPolygon: vertices per ring
     /// @brief VectorSquare, CombinedSquare: the vector splat table.
     std::shared_ptr<const kernel::VectorSplatTable> table;
+
+    /// @brief How far from its centre, in voxels at size 1, a splat draws anything: where the
+    /// footprint texture is not 0 (TexturedSquare: the kernel's support, 1.556 for the paper's;
+    /// GouraudPolygon: the fan), or the corner of a square that turns with its vector
+    /// (VectorSquare, CombinedSquare: the marks fill it). SplatView::refinementView() widens a
+    /// node by it.
+    double reach() const;
 };
 
 } // namespace texsplat::render

@@ -46,7 +46,7 @@ octree::View SplatView::octreeView() const {
                          : octree::View::orthographic(direction);
 }
 
-octree::View SplatView::refinementView(double extent) const {
+octree::View SplatView::refinementView(double reach) const {
     // A point is inside where -w <= x <= w and -w <= y <= w in clip space: rows 3 ± 0, 3 ± 1
     // of the local-to-clip matrix (glm is column-major: m[column][row]).
     const glm::dmat4 m(localToClip);
@@ -55,12 +55,12 @@ octree::View SplatView::refinementView(double extent) const {
     };
     const octree::View::Sides sides{row(3) + row(0), row(3) - row(0), row(3) + row(1),
                                     row(3) - row(1)};
-    // A square reaches `extent` sizes from its centre, √2 of that at its corners (vector squares
-    // turn); a node's size is its largest edge in voxels, at most its largest world edge over
-    // the finest spacing voxels, each at most the coarsest spacing long.
+    // A splat draws within `reach` sizes of its centre; a node's size is its largest edge in
+    // voxels, at most its largest world edge over the finest spacing voxels, each at most the
+    // coarsest spacing long.
     const double finest = std::min({spacing.x, spacing.y, spacing.z});
     const double coarsest = std::max({spacing.x, spacing.y, spacing.z});
-    return octreeView().seeingOnly(sides, extent * std::sqrt(2.0) * coarsest / finest);
+    return octreeView().seeingOnly(sides, reach * coarsest / finest);
 }
 
 } // namespace texsplat::render

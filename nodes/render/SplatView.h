@@ -38,10 +38,11 @@ struct SplatView {
     octree::View octreeView() const;
 
     /// @brief octreeView() seeing only the four sides of the view volume (local space), for
-    /// splats whose squares reach `extent` voxels from their centre at size 1 (SplatFootprint):
-    /// what a cut is refined for, so that its splits go where they show (octree::Refiner).
-    /// @throws DataError when `extent` is negative or not finite.
-    octree::View refinementView(double extent) const;
+    /// splats that draw up to `reach` voxels from their centre at size 1
+    /// (SplatFootprint::reach()): what a cut is refined and drawn for, so that its splits go
+    /// where they show and what shows nothing is left out (octree::Refiner, octree::emitSplats).
+    /// @throws DataError when `reach` is negative or not finite.
+    octree::View refinementView(double reach) const;
 };
 
 } // namespace texsplat::render

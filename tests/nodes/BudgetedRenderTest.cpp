@@ -5,9 +5,11 @@
 #include "nodes/NodeTypes.h"
 #include "nodes/PerspectiveCamera.h"
 #include "nodes/ScalarSplat.h"
+#include "nodes/TextureSplat.h"
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 #include "nodes/image/Image.h"
+#include "nodes/volume/ExternalGrid.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/SplatEmission.h"
@@ -155,6 +157,40 @@ TEST(BudgetedRender, aZoomedFullFrameLeavesOutOnlySplatsThatCoverNoPixel) {
     const render::cpu::CpuRenderer renderer(2);
     sg::RenderStatistics statistics;
     const image::Image sighted = renderer.draw(frame, statistics);
+    frame.splats[0].splats = every;
+    EXPECT_EQ(renderer.draw(frame, statistics).pixels(), sighted.pixels());
+}
+
+TEST(BudgetedRender, splatsReachingIntoTheImageFromOutsideAreDrawn) {
+    // Voxels 0 to 15 along x; the image's right edge at x = 6.6, so the block of voxels 8 to 15
+    // lies wholly outside it, its nearest voxel 1.4 voxels out: the paper's kernel (support
+    // 1.556) still reaches the last column of pixels (centres 0.0625 voxels inside). A reach
+    // shorter than the footprint texture's (0.8 of it, 1.30 voxels) left the block out.
+    registerNodeTypes();
+    const auto root = std::dynamic_pointer_cast<sg::Separator>(sg::SceneReader::readString(R"(#Inventor V2.1 ascii
+        Separator {
+            OrthographicCamera { position 2.6 1.5 20 height 8 nearDistance 1 farDistance 40 }
+            TransferFunction { rangeMode FIXED range 0 1 opacities [ 0.5, 0.5 ] }
+        })"));
+    const volume::GridGeometry geometry({16, 4, 4});
+    auto volume = VolumeData::create();
+    volume->setGrid(volume::ExternalScalarGrid::owning(geometry, std::vector<float>(256, 1.0f)));
+    root->addChild(volume);
+    root->addChild(TextureSplat::create());
+    render::FrameAction action(64, 64);
+    render::Frame frame = action.collect(*root);
+    ASSERT_EQ(frame.splats.size(), 1u);
+    const auto& transfer = dynamic_cast<const TransferFunction&>(*root->child(1));
+    auto every = std::make_shared<octree::SplatList>();
+    octree::emitVoxelSplats(*transfer.classify(*volume->scalarGrid()),
+                            frame.splats[0].view.octreeView(), *every);
+    ASSERT_EQ(every->size(), 256u);
+    EXPECT_EQ(frame.splats[0].splats->size(), 256u) << "no block lies beyond the reach";
+
+    const render::cpu::CpuRenderer renderer(1);
+    sg::RenderStatistics statistics;
+    const image::Image sighted = renderer.draw(frame, statistics);
+    EXPECT_GT(sighted.pixel(63, 32).a, 0.0f) << "the block outside reaches the last column";
     frame.splats[0].splats = every;
     EXPECT_EQ(renderer.draw(frame, statistics).pixels(), sighted.pixels());
 }

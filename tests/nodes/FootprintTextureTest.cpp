@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -29,6 +30,38 @@ TEST(FootprintTexture, texelsHoldTheFootprintAtTexelCentres) {
     EXPECT_NEAR(texture.sample({0.6, 0.2}), kernel.footprint(std::hypot(0.6, 0.2)), 1e-7);
     EXPECT_EQ(texture.sample({1.7, 0.0}), 0.0);
     EXPECT_EQ(texture.texels()[0], 0.0f); // the corner lies outside the support
+}
+
+TEST(FootprintTexture, itsReachHoldsEveryPointTheLookupDoesNotReadAsZero) {
+    const CubicKernel kernel = CubicKernel::paper();
+    const auto farthestNonZero = [](const FootprintTexture& texture) {
+        // The lookup on a fine grid over the quad.
+        double farthest = 0.0;
+        const double extent = texture.extent();
+        for (int row = 0; row <= 400; ++row) {
+            for (int column = 0; column <= 400; ++column) {
+                const double x = -extent + 2.0 * extent * column / 400.0;
+                const double y = -extent + 2.0 * extent * row / 400.0;
+                if (texture.sample({x, y}) != 0.0) {
+                    farthest = std::max(farthest, std::hypot(x, y));
+                }
+            }
+        }
+        return farthest;
+    };
+    // The paper's: the kernel's support 1.556, and a texel's diagonal past it at most.
+    const FootprintTexture paper(kernel, 64);
+    EXPECT_GE(paper.reach(), farthestNonZero(paper));
+    EXPECT_GE(paper.reach(), kernel.support() - 1e-9);
+    EXPECT_LE(paper.reach(), kernel.support() + 3.2 / 64 * std::sqrt(2.0));
+    // A quad narrower than the support: its corner.
+    const FootprintTexture narrow(kernel, 16, 0.8);
+    EXPECT_DOUBLE_EQ(narrow.reach(), 0.8 * std::sqrt(2.0));
+    EXPECT_GE(narrow.reach(), farthestNonZero(narrow));
+    // The polygonal Gaussian's fan: its radius, and a texel's diagonal past it at most.
+    const FootprintTexture fan = FootprintTexture::gouraudFan(kernel, 1.6, 3, 7, 64);
+    EXPECT_GE(fan.reach(), farthestNonZero(fan));
+    EXPECT_LE(fan.reach(), 1.6 + 3.2 / 64 * std::sqrt(2.0));
 }
 
 TEST(FootprintTexture, rippleShrinksWithResolutionAndStaysBelowThePapersFlatness) {

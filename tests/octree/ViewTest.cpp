@@ -65,15 +65,22 @@ TEST(View, normalizesHugeAndTinyDirections) {
 
 TEST(View, aNodeIsOutOfSightWhenItsSplatLiesWhollyOutsideASide) {
     const View plain = View::orthographic({0.0, 0.0, 1.0});
-    // Sight: 0 <= x <= 10, 0 <= y <= 10; splats reach one edge beyond their cells.
+    // Sight: 0 <= x <= 10, 0 <= y <= 10; splats reach one edge from their centre.
     const View::Sides sides{glm::dvec4(1.0, 0.0, 0.0, 0.0), glm::dvec4(-1.0, 0.0, 0.0, 10.0),
                             glm::dvec4(0.0, 1.0, 0.0, 0.0), glm::dvec4(0.0, -1.0, 0.0, 10.0)};
     const View view = plain.seeingOnly(sides, 1.0);
     EXPECT_FALSE(view.isOutOfSight({2.0, 2.0, -5.0}, {4.0, 4.0, 5.0})) << "inside";
     EXPECT_FALSE(view.isOutOfSight({-3.0, 2.0, 0.0}, {1.0, 4.0, 1.0})) << "across a side";
-    EXPECT_FALSE(view.isOutOfSight({11.0, 2.0, 0.0}, {12.0, 3.0, 1.0})) << "its splat reaches in";
-    EXPECT_TRUE(view.isOutOfSight({11.5, 2.0, 0.0}, {12.5, 3.0, 1.0}));
-    EXPECT_TRUE(view.isOutOfSight({2.0, -4.0, 0.0}, {4.0, -2.5, 1.0})) << "edge 2, 1.5 away";
+    EXPECT_FALSE(view.isOutOfSight({10.4, 2.0, 0.0}, {11.4, 3.0, 1.0})) << "its splat reaches in";
+    EXPECT_TRUE(view.isOutOfSight({10.6, 2.0, 0.0}, {11.6, 3.0, 1.0})) << "centre 1.1 away";
+    EXPECT_TRUE(view.isOutOfSight({2.0, -4.0, 0.0}, {4.0, -2.5, 1.0})) << "edge 2, 2.0 away";
+    // Voxels of edge 1 in a block: each reaches 1 from its centre, half a voxel past its cell.
+    EXPECT_FALSE(view.isOutOfSight({10.4, 2.0, 0.0}, {18.4, 10.0, 8.0}, 1.0, 0.5));
+    EXPECT_TRUE(view.isOutOfSight({10.6, 2.0, 0.0}, {18.6, 10.0, 8.0}, 1.0, 0.5));
+    // The credit is at most half the reach: a reach of 0.5 edges still widens a cell by 0.25.
+    const View near = plain.seeingOnly(sides, 0.5);
+    EXPECT_FALSE(near.isOutOfSight({10.2, 2.0, 0.0}, {11.2, 3.0, 1.0}));
+    EXPECT_TRUE(near.isOutOfSight({10.3, 2.0, 0.0}, {11.3, 3.0, 1.0}));
     EXPECT_FALSE(plain.isOutOfSight({100.0, 100.0, 0.0}, {101.0, 101.0, 1.0})) << "no sides";
     EXPECT_DOUBLE_EQ(view.direction().z, 1.0) << "ordering is unchanged";
 
