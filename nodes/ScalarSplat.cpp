@@ -203,6 +203,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     return result;
 }
 
+double ScalarSplat::splatReach() { return footprint()->reach(); }
+
 std::shared_ptr<const render::SplatFootprint> ScalarSplat::footprint() {
     if (!mFootprint) {
         mFootprint = std::make_shared<const render::SplatFootprint>(

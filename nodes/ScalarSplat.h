@@ -99,6 +99,10 @@ public:
     /// when one that classification reads changes, then notifies as every node does.
     void notify(const sg::Field* source) override;
 
+    /// @brief How far this node's splats draw from their centre, in voxels at size 1, for the
+    /// current fields (SplatFootprint::reach()): what its cuts are refined and drawn for.
+    double splatReach();
+
     /// @brief Whether the last frame drew every non-empty voxel (the full-resolution list, as
     /// `maxSplats` 0 and `errorThreshold` 0 do; also a budget that holds them all), so that a
     /// larger budget or none would draw the same splats. False before the first frame.

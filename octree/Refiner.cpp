@@ -65,9 +65,10 @@ bool isInSight(const Octree& octree, const View& view, const NodeRef& node) {
     return !view.hasSides() || !view.isOutOfSight(octree.cellMin(node), octree.cellMax(node));
 }
 
-// The splats in sight that splitting @p node, a node in sight, adds: its children in sight less
-// itself; -1 when its splat reaches into sight while its children's smaller ones all lie out of
-// it (the split then takes a splat that the full-resolution image does not have off the image).
+// The splats in sight that splitting @p node adds: its children in sight less itself when it is
+// in sight. -1 when its splat reaches into sight while its children's all lie out of it (the
+// split takes a splat off the image that the full-resolution image does not have); 8 for a node
+// clipped at the grid's far faces whose own splat is out of sight while its children's are not.
 int addedInSight(const Octree& octree, const View& view, const NodeRef& node) {
     const int children =
         detail::bitCount(octree.nodes()[static_cast<std::size_t>(node.index)].childMask);
@@ -80,7 +81,7 @@ int addedInSight(const Octree& octree, const View& view, const NodeRef& node) {
                                           [&](const NodeRef& child) {
                                               return isInSight(octree, view, child);
                                           })) -
-           1;
+           (isInSight(octree, view, node) ? 1 : 0);
 }
 
 // Whether a split adding @p added splats keeps @p inSight within @p maxSplats.
@@ -88,11 +89,25 @@ bool fits(std::uint64_t inSight, int added, std::uint64_t maxSplats) {
     return added <= 0 || inSight + static_cast<std::uint64_t>(added) <= maxSplats;
 }
 
-// @p inSight after a split adding @p added. A node split has priority > 0, so it is in sight and
-// counted: the count never goes below 0.
+// @p inSight after a split adding @p added. A split that lowers the count takes a node that is
+// counted, so the count of a whole cut never goes below 0 (a running sum in another order than
+// the queue's may wrap around on the way, and comes back).
 std::uint64_t withAdded(std::uint64_t inSight, int added) {
     return added >= 0 ? inSight + static_cast<std::uint64_t>(added)
                       : inSight - static_cast<std::uint64_t>(-added);
+}
+
+// What is left of @p maxSplats for splits that add, with @p room from splits that lower the
+// count, after @p inSight: maxSplats + room - inSight, at least 0, saturating at the largest
+// count (an unlimited budget stays unlimited).
+std::uint64_t leftOf(std::uint64_t maxSplats, std::uint64_t room, std::uint64_t inSight) {
+    constexpr std::uint64_t kLargest = std::numeric_limits<std::uint64_t>::max();
+    if (maxSplats >= inSight) {
+        const std::uint64_t left = maxSplats - inSight;
+        return room > kLargest - left ? kLargest : left + room;
+    }
+    const std::uint64_t over = inSight - maxSplats;
+    return room > over ? room - over : 0;
 }
 
 // The nodes of @p cut in the view's sight (Refiner::splatsInSight()).
@@ -111,7 +126,7 @@ double priorityOf(const Octree& octree, const View& view, const NodeRef& node) {
     const glm::dvec3 high = octree.cellMax(node);
     const glm::dvec3 extent = high - low;
     double size = std::max({extent.x, extent.y, extent.z});
-    if (view.isBoxBehindEye(low, high) || view.isOutOfSight(low, high)) {
+    if (view.isBoxBehindEye(low, high) || view.isSubtreeOutOfSight(low, high)) {
         return 0.0;
     }
     if (view.isPerspective()) {
@@ -197,7 +212,8 @@ std::optional<Crossing> findCrossing(std::vector<std::uint64_t> records,
             Histogram& histogram = partial.local();
             for (std::size_t i = range.begin(); i < range.end(); ++i) {
                 const std::int8_t splats = added[static_cast<std::size_t>(records[i])];
-                histogram[digitOf(records[i])] += static_cast<std::uint64_t>(std::max<int>(splats, 0));
+                histogram[digitOf(records[i])] +=
+                    static_cast<std::uint64_t>(std::max<int>(splats, 0));
             }
         });
         Histogram weights(kBuckets, 0);
@@ -313,17 +329,27 @@ Cut Refiner::refineAtOnce(Cut start, const View& view, std::uint64_t maxSplats) 
     // splits above it leave, until that room stops growing; it never passes the queue's stop (the
     // room counted is at most what the queue has there), and where it stops the queue does. The
     // nodes tied at the crossing are replayed in the queue's order; when all of them fit
-    // (lowering splits among them), the next segment starts below them.
+    // (lowering splits among them), the next segment starts below them. Each pass is a whole
+    // select; should lowering splits interleave with adding ones so that it takes more than a
+    // few, the queue (the same cut) is cheaper.
+    constexpr int kMostSelects = 16;
+    std::optional<Cut> original;
+    if (!lowering.empty()) {
+        original = start;
+    }
     Cut cut = std::move(start);
     double upper = kInfinity; // the candidates at or above it are decided
-    for (;;) {
+    for (int selects = 0;;) {
         std::optional<Crossing> crossing;
         double threshold = 0.0;
         std::uint64_t room = 0;
         for (;;) {
-            const std::uint64_t limit = maxSplats + room;
-            crossing = findCrossing(candidates, bottlenecks, added,
-                                    limit > inSight ? limit - inSight : 0);
+            // Only lowering splits make more than one select.
+            if (++selects > kMostSelects && original) {
+                return byQueue(std::move(*original), view, maxSplats);
+            }
+            crossing =
+                findCrossing(candidates, bottlenecks, added, leftOf(maxSplats, room, inSight));
             threshold = crossing ? bottleneckOf(crossing->key) : 0.0;
             const auto lowered = static_cast<std::uint64_t>(
                 std::count_if(lowering.begin(), lowering.end(), [&](double bottleneck) {

@@ -69,6 +69,11 @@ bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high) const {
                         0.5 * std::min({extent.x, extent.y, extent.z}));
 }
 
+bool View::isSubtreeOutOfSight(glm::dvec3 low, glm::dvec3 high) const {
+    const glm::dvec3 extent = high - low;
+    return isOutOfSight(low, high, std::max({extent.x, extent.y, extent.z}), 0.0);
+}
+
 bool View::isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge,
                         double nodeHalfWidth) const {
     if (!mHasSides) {

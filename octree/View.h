@@ -36,15 +36,22 @@ public:
     [[nodiscard]] View seeingOnly(const Sides& sides, double reach) const;
 
     /// @brief Whether the splat of a node with cells [@p low, @p high] lies wholly outside one of
-    /// the sides of seeingOnly() (never for a view without them).
+    /// the sides of seeingOnly() (never for a view without them): the node's own splat, which
+    /// reaches beyond its cells by reach · its largest edge less its smallest half-width (at most
+    /// half the reach). Not inherited: a thin child clipped at the grid's far faces can splat as
+    /// large as its parent and reach past it (isSubtreeOutOfSight() is).
     [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high) const;
+
+    /// @brief Whether the splats of a node with cells [@p low, @p high] and of every node within
+    /// it lie wholly outside one of the sides: its cells widened by reach · its largest edge,
+    /// which no node within it (cells inside, edge no larger) reaches past. So when a node's
+    /// subtree is out of sight, so is each of its children's.
+    [[nodiscard]] bool isSubtreeOutOfSight(glm::dvec3 low, glm::dvec3 high) const;
 
     /// @brief Whether the splats of nodes of largest edge @p nodeEdge and smallest half-width
     /// @p nodeHalfWidth within the cells [@p low, @p high] (say the voxels of a block) all lie
-    /// wholly outside one of the sides. The cells of a node within it lie within the box, and its
-    /// splat reaches reach · nodeEdge from its centre, so at most reach · nodeEdge less its
-    /// half-width beyond them; the credit is at most half the reach, so that a child is never in
-    /// sight where its parent is not.
+    /// wholly outside one of the sides: each reaches reach · nodeEdge from its centre, so beyond
+    /// its cells by that less its half-width (credited up to half the reach).
     [[nodiscard]] bool isOutOfSight(glm::dvec3 low, glm::dvec3 high, double nodeEdge,
                                     double nodeHalfWidth) const;
 

@@ -53,12 +53,13 @@ bool ProgressiveRefinement::refine(std::size_t splatsDrawn, double frameSeconds)
         return false;
     }
     // The octree refiner stops at the first split that does not fit its budget, and a split
-    // adds at most 7 splats (8 children for 1). A cut further below its budget than that had
+    // adds at most 8 splats drawn (8 children for 1, or for none where the node itself lies out
+    // of the window's sight and its children do not). A cut further below its budget than that had
     // nothing left to split: the whole tree (or the scene's own limit) is drawn. The count is the
     // sum over the splat nodes, so with several of them one finished node can end refinement
     // early; then the scene's own settings come a step sooner, never a coarser image. A step
     // that added nothing ends it too.
-    constexpr std::size_t kLargestSplitGrowth = 7;
+    constexpr std::size_t kLargestSplitGrowth = 8;
     const std::size_t budgets = static_cast<std::size_t>(mBudget) * mSplats.size();
     const bool reachedAll = splatsDrawn + kLargestSplitGrowth * mSplats.size() < budgets ||
                             (mStage == Stage::Refining && splatsDrawn <= mLastDrawn);
@@ -110,10 +111,14 @@ void ProgressiveRefinement::restore() {
         const bool drewTheSame = splat.original == 0 && !splat.isShared &&
                                  splat.node->errorThreshold.value() == 0.0f &&
                                  splat.node->drewEveryVoxel();
-        const bool notifies = maxSplats.enableNotify(!drewTheSame);
-        maxSplats.setValue(splat.original);
-        maxSplats.enableNotify(notifies);
-        redraw = redraw || !drewTheSame;
+        if (drewTheSame) {
+            const bool notifies = maxSplats.enableNotify(false);
+            maxSplats.setValue(splat.original);
+            maxSplats.enableNotify(notifies);
+        } else {
+            maxSplats.setValue(splat.original);
+            redraw = true;
+        }
     }
     mEndedWithoutRedraw = !redraw;
 }

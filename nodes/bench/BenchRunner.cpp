@@ -91,14 +91,15 @@ void emitVoxels(const SplatSource& source, octree::SplatList& splats) {
 }
 
 #ifdef TEXSPLAT_WITH_GL
-// The octree cut of at most `maxSplats` splats whose squares reach `extent` voxels (any shape
-// draws within their corners): the list the GL fill-rate ceiling draws for a method with a budget.
-void emitCut(SplatSource& source, std::size_t maxSplats, double extent,
+// The octree cut of at most `maxSplats` splats that draw up to `reach` voxels from their centre,
+// as the method's node makes it: the list the GL fill-rate ceiling draws for a method with a
+// budget.
+void emitCut(SplatSource& source, std::size_t maxSplats, double reach,
              octree::SplatList& splats) {
     if (!source.octree) {
         source.octree.emplace(source.classified);
     }
-    const octree::View order = source.view.refinementView(extent * std::sqrt(2.0));
+    const octree::View order = source.view.refinementView(reach);
     const octree::Cut cut = octree::Refiner::cutOfBudget(octree::Cut(*source.octree), order,
                                                          maxSplats);
     octree::emitSplats(cut, order, splats);
@@ -268,7 +269,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
             result.isFullQuality = method.isFullQuality();
 #ifdef TEXSPLAT_WITH_GL
             if (backend == render::Backend::Gl) {
-                const auto& splatNode = static_cast<const nodes::ScalarSplat&>(*node);
+                auto& splatNode = static_cast<nodes::ScalarSplat&>(*node);
                 // The ceiling draws the very list this method draws (the full list, or its
                 // octree cut), with quads as large as the method's (vector marks reach past the
                 // scalar splat).
@@ -278,7 +279,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
                 octree::SplatList cutList;
                 if (method.budget > 0.0) {
                     emitCut(source, static_cast<std::size_t>(splatNode.maxSplats.value()),
-                            splatNode.size.value(), cutList);
+                            splatNode.splatReach(), cutList);
                 }
                 const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
                 images.push_back(measureGl(*root, size, *ceiling, source.view, extent, drawn,

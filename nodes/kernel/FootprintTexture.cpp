@@ -36,7 +36,8 @@ void FootprintTexture::checkPath(const std::string& path) {
 }
 
 FootprintTexture::FootprintTexture(int resolution, double extent, std::vector<float> texels)
-    : mResolution(resolution), mExtent(extent), mTexels(std::move(texels)) {}
+    : mResolution(resolution), mExtent(extent), mTexels(std::move(texels)),
+      mReach(farthestReach()) {}
 
 FootprintTexture::FootprintTexture(const RadialKernel& kernel, int resolution, double extent)
     : mResolution(resolution), mExtent(extent) {
@@ -54,9 +55,10 @@ FootprintTexture::FootprintTexture(const RadialKernel& kernel, int resolution, d
             mTexels[static_cast<size_t>(row) * resolution + column] = static_cast<float>(
                 kernel.footprint(std::hypot(-extent + (column + 0.5) * texel,
                                             -extent + (row + 0.5) * texel)));
+    mReach = farthestReach();
 }
 
-double FootprintTexture::reach() const {
+double FootprintTexture::farthestReach() const {
     const double texel = 2.0 * mExtent / mResolution;
     double farthest = -std::numeric_limits<double>::infinity();
     for (int row = 0; row < mResolution; ++row)
@@ -129,6 +131,7 @@ FootprintTexture FootprintTexture::gouraudFan(const RadialKernel& kernel, double
                 static_cast<float>(value.value_or(0.0));
         }
     }
+    result.mReach = result.farthestReach();
     return result;
 }
 

@@ -69,8 +69,9 @@ public:
     double extent() const { return mExtent; }
 
     /// @brief How far from the centre, in voxels, the bilinear lookup is not 0: the farthest
-    /// texel centre holding a value, plus a texel's diagonal, at most the quad's corner E·√2.
-    double reach() const;
+    /// texel centre holding a value, plus a texel's diagonal, at most the quad's corner E·√2
+    /// (found once, when the texture is made).
+    double reach() const { return mReach; }
 
     /// @brief Row-major texels, row 0 at y = −E, each the footprint at the texel centre.
     const std::vector<float>& texels() const { return mTexels; }
@@ -107,9 +108,13 @@ private:
     FootprintTexture(int resolution, double extent, std::vector<float> texels);
 
 
+    // reach() of the texels.
+    double farthestReach() const;
+
     int mResolution;
     double mExtent;
     std::vector<float> mTexels;
+    double mReach = 0.0;
 };
 
 } // namespace texsplat::kernel

@@ -53,11 +53,16 @@ public:
                  mView.isBoxBehindEye(mOctree.cellMin(node), mOctree.cellMax(node)));
     }
 
-    /// @brief Whether the splat of @p node lies wholly out of the view's sight
-    /// (View::seeingOnly()): it covers no pixel, and neither does any node below it.
+    /// @brief Whether @p node draws nothing in the view's sight (View::seeingOnly()): its own
+    /// splat when it is a node of the cut, its subtree's when it is split.
     [[nodiscard]] bool isOutOfSight(const NodeRef& node) const {
-        return mView.hasSides() &&
-               mView.isOutOfSight(mOctree.cellMin(node), mOctree.cellMax(node));
+        if (!mView.hasSides()) {
+            return false;
+        }
+        const glm::dvec3 low = mOctree.cellMin(node);
+        const glm::dvec3 high = mOctree.cellMax(node);
+        return mCut.isSplit(node) ? mView.isSubtreeOutOfSight(low, high)
+                                  : mView.isOutOfSight(low, high);
     }
 
     /// @brief Whether every node below @p node (itself included) is in sight.
@@ -110,7 +115,7 @@ void forEachBackToFrontFrom(const BackToFrontDescent& descent, const NodeRef& st
         const auto [node, inSight] = pending.back();
         pending.pop_back();
         if (!inSight && descent.isOutOfSight(node)) {
-            continue; // neither it nor anything below it covers a pixel
+            continue; // it covers no pixel, nor does anything below it
         }
         if (!cut.isSplit(node)) {
             if (descent.isDrawn(node)) {

@@ -103,7 +103,8 @@ TEST_F(ViewCommandTest, startsCoarseRefinesToFullQualityAndReportsEachFrame) {
     }
     // The tornado's 92,297 voxels: 1000 splats first, then 4000, 16000, 64000, 256000 (which
     // holds them all: the full-resolution list, which is what the scene's own settings draw, so
-    // no frame follows).
+    // no frame follows). A step slower than ProgressiveRefinement::kQuickStepSeconds (the 64000
+    // one under a sanitizer) is followed by the full-quality frame instead.
     const auto output = runTexsplat(
         "view --frames 14 --size 64x48 --interactive-splats 1000 --time-report", "xvfb-run -a");
     ASSERT_EQ(output.exitCode, 0) << output.standardError;
@@ -119,16 +120,21 @@ TEST_F(ViewCommandTest, startsCoarseRefinesToFullQualityAndReportsEachFrame) {
         << frames.front();
     EXPECT_NE(frames[1].find(": refining while idle, budget 4000, "), std::string::npos)
         << frames[1];
-    ASSERT_GE(frames.size(), 6u) << output.standardError;
-    const std::string& last = frames[frames.size() - 2];
-    EXPECT_NE(last.find(": refining while idle, budget 256000, 92297 splats; "),
-              std::string::npos)
-        << output.standardError;
-    EXPECT_NE(last.find(" draw "), std::string::npos) << last;
-    EXPECT_EQ(frames.back().rfind("at ", 0), 0u) << frames.back();
-    EXPECT_NE(frames.back().find(": full quality, the last frame's 92297 splats"),
-              std::string::npos)
-        << output.standardError;
+    const std::string& last = frames.back();
+    if (last.rfind("at ", 0) == 0) {
+        // The last step drew every voxel: it is the full-quality frame, not drawn again.
+        EXPECT_NE(last.find(": full quality, the last frame's 92297 splats"), std::string::npos)
+            << output.standardError;
+        const std::string& step = frames[frames.size() - 2];
+        EXPECT_NE(step.find(": refining while idle, budget 256000, 92297 splats; "),
+                  std::string::npos)
+            << output.standardError;
+        EXPECT_NE(step.find(" draw "), std::string::npos) << step;
+    } else {
+        EXPECT_NE(last.find(": full quality, 92297 splats; "), std::string::npos)
+            << output.standardError;
+        EXPECT_NE(last.find(" draw "), std::string::npos) << last;
+    }
 }
 
 TEST_F(ViewCommandTest, aKeyTappedWhileAFrameRendersIsNotLost) {

@@ -167,11 +167,13 @@ TEST(BudgetedRender, splatsReachingIntoTheImageFromOutsideAreDrawn) {
     // 1.556) still reaches the last column of pixels (centres 0.0625 voxels inside). A reach
     // shorter than the footprint texture's (0.8 of it, 1.30 voxels) left the block out.
     registerNodeTypes();
-    const auto root = std::dynamic_pointer_cast<sg::Separator>(sg::SceneReader::readString(R"(#Inventor V2.1 ascii
+    constexpr const char* kScene = R"(#Inventor V2.1 ascii
         Separator {
             OrthographicCamera { position 2.6 1.5 20 height 8 nearDistance 1 farDistance 40 }
             TransferFunction { rangeMode FIXED range 0 1 opacities [ 0.5, 0.5 ] }
-        })"));
+        })";
+    const auto root =
+        std::dynamic_pointer_cast<sg::Separator>(sg::SceneReader::readString(kScene));
     const volume::GridGeometry geometry({16, 4, 4});
     auto volume = VolumeData::create();
     volume->setGrid(volume::ExternalScalarGrid::owning(geometry, std::vector<float>(256, 1.0f)));

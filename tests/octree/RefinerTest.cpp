@@ -156,7 +156,8 @@ TEST(Refiner, spendsTheBudgetOnWhatIsInSight) {
     Refiner refiner(octree, sighted);
     refiner.refine(splats(kBudget));
     EXPECT_GT(inSight(refiner.cut()), inSight(plain.cut()) * 3 / 2);
-    // No node out of sight is split: each node of the cut out of sight has a parent in sight.
+    // No node whose subtree is out of sight is split: each node of the cut out of sight has a
+    // parent whose subtree is in sight.
     std::size_t outOfSight = 0;
     for (const NodeRef& node : nodesOf(refiner.cut())) {
         if (sighted.isOutOfSight(octree.cellMin(node), octree.cellMax(node))) {
@@ -164,7 +165,7 @@ TEST(Refiner, spendsTheBudgetOnWhatIsInSight) {
             const glm::u64vec3 parent = node.coord / std::uint64_t{2};
             const glm::dvec3 low = octree.cellMin(NodeRef{0, parent, node.level + 1});
             const glm::dvec3 high = octree.cellMax(NodeRef{0, parent, node.level + 1});
-            EXPECT_FALSE(sighted.isOutOfSight(low, high)) << "level " << node.level;
+            EXPECT_FALSE(sighted.isSubtreeOutOfSight(low, high)) << "level " << node.level;
         }
     }
     EXPECT_GT(outOfSight, 0u) << "the test needs nodes out of sight";
@@ -172,7 +173,7 @@ TEST(Refiner, spendsTheBudgetOnWhatIsInSight) {
     // budget, and its traversal for the view visits exactly the counted ones.
     EXPECT_EQ(refiner.splatsInSight(), inSight(refiner.cut()));
     EXPECT_LE(refiner.splatsInSight(), kBudget);
-    EXPECT_GT(refiner.splatsInSight() + 7, kBudget) << "stopped by the budget";
+    EXPECT_GT(refiner.splatsInSight() + 8, kBudget) << "stopped by the budget";
     EXPECT_GT(refiner.cut().splatCount(), kBudget);
     std::uint64_t visited = 0;
     traverseBackToFront(refiner.cut(), sighted, [&](const NodeRef& node) {
@@ -212,6 +213,88 @@ TEST(Refiner, aSplitWhoseChildrenAreAllOutOfSightDrawsOneSplatFewer) {
     EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, 1) == refiner.cut());
     EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, 0) == refiner.cut())
         << "it fits even a budget of nothing";
+}
+
+TEST(Refiner, aThinChildClippedAtTheGridsFaceIsDrawnWhereItsParentsSplatIsNot) {
+    // 5³ voxels: the root (edge 5, centre x = 2) has an upper-x child one voxel thick (x = 4)
+    // and 4 voxels across, whose splat (reach 1.63 · 4 from x = 4) reaches x = 10.52, past the
+    // root's own splat (1.63 · 5 from x = 2: 10.15). Sight from x = 10.3 on: the root's splat is
+    // out of sight, its subtree is not.
+    auto grid = std::make_shared<ClassifiedGrid>(glm::u64vec3(5), glm::dvec3(1.0),
+                                                 glm::dvec3(0.0));
+    for (std::uint64_t k = 0; k < 5; ++k) {
+        for (std::uint64_t j = 0; j < 5; ++j) {
+            for (std::uint64_t i = 0; i < 5; ++i) {
+                grid->setVoxel({i, j, k}, glm::vec3(0.1f * static_cast<float>(i + j + k + 1)),
+                               1.0f);
+            }
+        }
+    }
+    const Octree octree(grid);
+    const View view = View::orthographic({0.0, 0.0, 1.0})
+                          .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -10.3),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0)},
+                                      1.63);
+    const NodeRef root = octree.root();
+    ASSERT_TRUE(view.isOutOfSight(octree.cellMin(root), octree.cellMax(root)));
+    ASSERT_FALSE(view.isSubtreeOutOfSight(octree.cellMin(root), octree.cellMax(root)));
+    EXPECT_EQ(Refiner(octree, view).splatsInSight(), 0u);
+    EXPECT_GT(Refiner(octree, view).priority(root), 0.0) << "its subtree shows";
+    // The root split: its three children at x = 4 that are 4 voxels across show, the others
+    // (the one-voxel corner and the four at x < 4) do not.
+    Cut cut(octree);
+    cut.split(root);
+    const auto inSight = [&](const NodeRef& node) {
+        return !view.isOutOfSight(octree.cellMin(node), octree.cellMax(node));
+    };
+    std::uint64_t counted = 0;
+    for (const NodeRef& node : nodesOf(cut)) {
+        counted += inSight(node) ? 1 : 0;
+    }
+    EXPECT_EQ(counted, 3u);
+    EXPECT_EQ(Refiner(cut, view).splatsInSight(), counted);
+    std::uint64_t drawn = 0;
+    traverseBackToFront(cut, view, [&](const NodeRef& node) {
+        EXPECT_TRUE(inSight(node));
+        ++drawn;
+    });
+    EXPECT_EQ(drawn, counted) << "the traversal does not prune the root on its own splat";
+    // Refined on, they go too: their children's splats (1.63 · 2 from x = 4) do not reach.
+    Refiner refiner(octree, view);
+    refiner.refine(splats(100));
+    EXPECT_EQ(refiner.splatsInSight(), 0u);
+    EXPECT_TRUE(refiner.cut().isSplit(root));
+    EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, 100) == refiner.cut());
+}
+
+TEST(Refiner, anUnlimitedBudgetWithSplitsThatLowerTheCountEnds) {
+    // 16 × 16 voxels, sight from x = 18 on, a reach of one edge: the root's split adds one (its
+    // two children at x >= 8 reach x = 19.5), then each of those splits lowers the count (their
+    // children reach 17.5 at most). An unlimited budget (RefineBudget's default, what forTime()
+    // gives for no limit) plus the room those lowering splits leave wrapped round to 0, and the
+    // search went back and forth between the two for ever.
+    auto grid = std::make_shared<ClassifiedGrid>(glm::u64vec3(16, 16, 1), glm::dvec3(1.0),
+                                                 glm::dvec3(0.0));
+    for (std::uint64_t j = 0; j < 16; ++j) {
+        for (std::uint64_t i = 0; i < 16; ++i) {
+            grid->setVoxel({i, j, 0}, glm::vec3(0.05f * static_cast<float>(i + j + 1)), 1.0f);
+        }
+    }
+    const Octree octree(grid);
+    const View view = View::orthographic({0.0, 0.0, 1.0})
+                          .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -18.0),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
+                                       glm::dvec4(0.0, 0.0, 0.0, 1.0)},
+                                      1.0);
+    constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
+    Refiner queue(octree, view);
+    queue.refine(RefineBudget{});
+    EXPECT_EQ(queue.splatsInSight(), 0u);
+    EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, kUnlimited) == queue.cut());
+    EXPECT_TRUE(Refiner::refineAtOnce(Cut(octree), view, kUnlimited - 1) == queue.cut());
 }
 
 TEST(Refiner, isDeterministic) {
