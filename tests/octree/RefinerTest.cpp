@@ -33,6 +33,13 @@ RefineBudget splats(std::uint64_t maxSplats) {
     return budget;
 }
 
+// Looking along z, seeing x >= @p x only, splats reaching @p reach edges from their centre.
+View seeingFrom(double x, double reach) {
+    const glm::dvec4 everywhere(0.0, 0.0, 0.0, 1.0);
+    return View::orthographic({0.0, 0.0, 1.0})
+        .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -x), everywhere, everywhere, everywhere}, reach);
+}
+
 std::vector<NodeRef> nodesOf(const Cut& cut) {
     std::vector<NodeRef> nodes;
     traverseBackToFront(cut, View::orthographic({0.0, 0.0, 1.0}),
@@ -195,12 +202,7 @@ TEST(Refiner, aSplitWhoseChildrenAreAllOutOfSightDrawsOneSplatFewer) {
         grid->setVoxel({i, 0, 0}, glm::vec3(0.1f * static_cast<float>(i + 1)), 1.0f);
     }
     const Octree octree(grid);
-    const View view = View::orthographic({0.0, 0.0, 1.0})
-                          .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -13.5),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0)},
-                                      1.0);
+    const View view = seeingFrom(13.5, 1.0);
     Refiner refiner(octree, view);
     EXPECT_EQ(refiner.splatsInSight(), 1u);
     EXPECT_EQ(refiner.refine(splats(1)), 1u) << "a split that lowers the count always fits";
@@ -231,12 +233,7 @@ TEST(Refiner, aThinChildClippedAtTheGridsFaceIsDrawnWhereItsParentsSplatIsNot) {
         }
     }
     const Octree octree(grid);
-    const View view = View::orthographic({0.0, 0.0, 1.0})
-                          .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -10.3),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0)},
-                                      1.63);
+    const View view = seeingFrom(10.3, 1.63);
     const NodeRef root = octree.root();
     ASSERT_TRUE(view.isOutOfSight(octree.cellMin(root), octree.cellMax(root)));
     ASSERT_FALSE(view.isSubtreeOutOfSight(octree.cellMin(root), octree.cellMax(root)));
@@ -283,12 +280,7 @@ TEST(Refiner, anUnlimitedBudgetWithSplitsThatLowerTheCountEnds) {
         }
     }
     const Octree octree(grid);
-    const View view = View::orthographic({0.0, 0.0, 1.0})
-                          .seeingOnly({glm::dvec4(1.0, 0.0, 0.0, -18.0),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0),
-                                       glm::dvec4(0.0, 0.0, 0.0, 1.0)},
-                                      1.0);
+    const View view = seeingFrom(18.0, 1.0);
     constexpr std::uint64_t kUnlimited = std::numeric_limits<std::uint64_t>::max();
     Refiner queue(octree, view);
     queue.refine(RefineBudget{});
