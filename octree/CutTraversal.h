@@ -17,8 +17,9 @@ namespace texsplat::octree {
 /// visibility order of the nodes' cells, with no sort (docs/octree.md has the proof sketch).
 /// For a perspective view, subtrees whose cells lie wholly behind the eye plane and nodes whose
 /// centre is not in front of it are culled: they cannot be projected. For a view with sides
-/// (View::seeingOnly()), nodes whose splats lie wholly out of sight are left out with everything
-/// below them: they cover no pixel. Kernels reach past their
+/// (View::seeingOnly()), nodes of the cut whose splats lie wholly out of sight are left out, and
+/// split nodes whose subtree does (View::isSubtreeOutOfSight()) with everything below them: they
+/// cover no pixel. Kernels reach past their
 /// cells, so overlapping splats may be out of centre-depth order; `sortByDepth()` fixes that.
 void traverseBackToFront(const Cut& cut, const View& view,
                          const std::function<void(const NodeRef&)>& visit);

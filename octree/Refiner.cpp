@@ -144,7 +144,7 @@ constexpr int kParallelLevel = 5;
 // smallest priority on the path down from the start cut, infinity for the nodes the start cut
 // splits (their ancestors are split too, so @p above is infinity there). Below a bottleneck of
 // 0 (a node never split) the records keep their 0. For the nodes that may be split, also the
-// splats in sight their split adds (addedInSight(), -1 to 7).
+// splats in sight their split adds (addedInSight(), -1 to 8).
 void writeBottlenecks(const Cut& start, const View& view, const NodeRef& node, double above,
                       std::vector<double>& bottlenecks, std::vector<std::int8_t>& added) {
     const Octree& octree = start.octree();

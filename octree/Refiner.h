@@ -34,8 +34,8 @@ struct RefineBudget {
 /// Made to be driven in steps by an IdleSensor: the viewer shows the coarse cut while the user
 /// interacts and calls `refine()` while idle, redrawing `cut()` after each step. The order is
 /// deterministic: ties in priority are broken by node index, so equal inputs give equal cuts.
-/// Nodes with zero priority (uniform blocks, blocks behind the eye or out of the view's sight,
-/// View::seeingOnly()) are never split: splitting them would cost splats without reducing any
+/// Nodes with zero priority (uniform blocks, blocks behind the eye or whose subtree is out of the
+/// view's sight, View::seeingOnly()) are never split: splitting them would cost splats without reducing any
 /// error that shows.
 class Refiner {
 public:
@@ -79,7 +79,8 @@ public:
 
     /// @brief `error * projected size` of @p node for this refiner's view: the node's error
     /// times its largest cell extent (orthographic) or that extent over its distance to the eye
-    /// (perspective, at most 2 for a node around the eye; 0 behind the eye or out of sight).
+    /// (perspective, at most 2 for a node around the eye; 0 behind the eye or when nothing in its
+    /// subtree can show, View::isSubtreeOutOfSight()).
     [[nodiscard]] double priority(const NodeRef& node) const;
 
 private:

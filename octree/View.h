@@ -30,7 +30,8 @@ public:
     /// @brief This view seeing only what lies within @p sides, where a splat reaches at most
     /// @p reach times its node's largest edge from the node's centre (the centre of its cells):
     /// a node whose splat lies wholly outside (isOutOfSight()) draws nothing, so a cut need not
-    /// refine it (Refiner) nor draw it. Ordering is unchanged. A plane that is not finite hides
+    /// draw it, nor refine a node whose whole subtree does (isSubtreeOutOfSight(); Refiner).
+    /// Ordering is unchanged. A plane that is not finite hides
     /// nothing.
     /// @throws DataError when @p reach is negative or not finite.
     [[nodiscard]] View seeingOnly(const Sides& sides, double reach) const;
