@@ -26,6 +26,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -93,7 +95,8 @@ ScalarSplat::renderInputs(sg::State& state) const {
 }
 
 render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::CameraView& camera,
-                                             sg::RenderStatistics& statistics) {
+                                             sg::RenderStatistics& statistics,
+                                             std::uint64_t previewVoxels) {
     sg::State& state = action.state();
     mDrewEveryVoxel = false;
     mCache->setWorkProgress(action.workProgress());
@@ -117,8 +120,26 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     });
     const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
     const render::detail::ClassificationCache::Builds before = mCache->builds();
-    const std::shared_ptr<const octree::ClassifiedGrid> classified =
-        timed(statistics, sg::RenderPhase::Classify, [&] {
+    // An interactive frame right after a transfer-function edit of a large grid draws the
+    // blocks' means from their value histograms (a grid 8 times coarser, made without reading a
+    // voxel) instead of classifying every block again; the next frame that is not interactive
+    // is exact. (Vector and combined splats classify their own way and have no preview.)
+    std::shared_ptr<const octree::ClassifiedGrid> classified;
+    if (!vectors && volume.scalarGrid()->storedVoxelCount() >= previewVoxels) {
+        // Its histograms (once per grid) and grid of means take a 64th and a 512th of what the
+        // classified grid would: the frame's estimate bounds them.
+        classified = timed(statistics, sg::RenderPhase::Classify, [&] {
+            return detail::withNodeContext(*this, [&] {
+                return withMemoryStage("previewing the edit", memory.classified,
+                                       detail::kSplatMemoryAdvice, [&] {
+                                           return mCache->preview(volume.scalarGrid(), transfer);
+                                       });
+            });
+        });
+    }
+    const bool isPreview = classified != nullptr;
+    if (!isPreview) {
+        classified = timed(statistics, sg::RenderPhase::Classify, [&] {
             return detail::withNodeContext(*this, [&] {
                 return withMemoryStage("classifying", memory.classified,
                                        detail::kSplatMemoryAdvice, [&] {
@@ -126,6 +147,10 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                        });
             });
         });
+    }
+    const auto tree = [&]() -> const octree::Octree& {
+        return isPreview ? mCache->previewOctree() : mCache->octree();
+    };
     // A budget that holds every non-empty voxel draws them all, in slice order: the
     // full-resolution image is within the budget, and its order costs about a quarter of an
     // octree cut's as fine (the viewer's last refinement steps of a big volume).
@@ -133,7 +158,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         errorThreshold.value() == 0.0f &&
         (maxSplats.value() == 0 ||
          static_cast<std::uint64_t>(maxSplats.value()) >= classified->nonEmptyVoxelCount());
-    mDrewEveryVoxel = fullResolution;
+    mDrewEveryVoxel = fullResolution && !isPreview;
     if (vectors) {
         vectors->localToCamera = camera.view * model;
         vectors->isPerspective = camera.projection[3][3] == 0.0f;
@@ -156,7 +181,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         timed(statistics, sg::RenderPhase::Classify, [&] {
             detail::withNodeContext(*this, [&] {
                 withMemoryStage("building the octree", memory.octree, detail::kSplatMemoryAdvice,
-                                [this] { mCache->octree(); });
+                                [&] { tree(); });
             });
         });
     }
@@ -170,9 +195,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
             return;
         }
         octree::Cut cut = errorThreshold.value() > 0.0f
-                              ? octree::Cut::byRelativeError(mCache->octree(),
-                                                             errorThreshold.value())
-                              : octree::Cut(mCache->octree());
+                              ? octree::Cut::byRelativeError(tree(), errorThreshold.value())
+                              : octree::Cut(tree());
         if (maxSplats.value() > 0) {
             cut = octree::Refiner::cutOfBudget(std::move(cut), order,
                                                static_cast<std::uint64_t>(maxSplats.value()));
@@ -192,12 +216,14 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     statistics.builds.valueRanges += after.valueRanges - before.valueRanges;
     statistics.builds.classifications += after.classifications - before.classifications;
     statistics.builds.octrees += after.octrees - before.octrees;
+    statistics.builds.valueHistograms += after.valueHistograms - before.valueHistograms;
+    statistics.builds.previews += after.previews - before.previews;
     statistics.splats += splats->size();
     sg::FrameMemory& bytes = statistics.memory;
     const volume::VectorGridPtr vectorGrid = vectors ? volume.vectorGrid() : nullptr;
     bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
     bytes.classified += classified->memoryBytes() + mCache->valueRangeBytes();
-    bytes.octree += fullResolution ? 0 : mCache->octree().memoryBytes();
+    bytes.octree += fullResolution ? 0 : tree().memoryBytes();
     bytes.splats += splats->memoryBytes() + mDepthSorter.memoryBytes();
     result.splats = splats;
     return result;
@@ -216,7 +242,11 @@ std::shared_ptr<const render::SplatFootprint> ScalarSplat::footprint() {
 void ScalarSplat::collectFrame(render::FrameAction& action) {
     const render::CameraView camera =
         render::CameraView::current(action.state(), *this, action.aspectRatio());
-    action.frame().splats.push_back(frameSplats(action, camera, action.statistics()));
+    const std::uint64_t previewVoxels = action.isInteractive()
+                                            ? action.previewMinimumVoxels()
+                                            : std::numeric_limits<std::uint64_t>::max();
+    action.frame().splats.push_back(
+        frameSplats(action, camera, action.statistics(), previewVoxels));
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {

@@ -39,8 +39,9 @@ namespace texsplat::nodes {
 /// Per frame: the scalar grid of the VolumeData (loaded on first use), classified into emission
 /// C and extinction τ per unit length (cached with its octree until the volume's grid or the
 /// transfer function changes; voxels that classify to zero make no splat; the grid's block value
-/// ranges, octree::ValueRanges, are made once per grid and let a transfer-function edit skip
-/// the blocks it hides without a new data hierarchy), ordered for the view
+/// ranges and histograms, octree::ValueRanges and octree::ValueHistograms, are made once per grid
+/// and let a transfer-function edit skip the blocks it hides without a new data hierarchy, and
+/// an interactive frame preview the edit from the blocks' means), ordered for the view
 /// (see below), and drawn facing the eye from FrameAction's frame: by the GL backend as instanced
 /// quads (render::GlRenderer), or by the CPU backend (render::cpu::CpuRenderer).
 /// Optical properties are per unit length of the volume's local space; a Transform above the
@@ -105,7 +106,8 @@ public:
 
     /// @brief Whether the last frame drew every non-empty voxel (the full-resolution list, as
     /// `maxSplats` 0 and `errorThreshold` 0 do; also a budget that holds them all), so that a
-    /// larger budget or none would draw the same splats. False before the first frame.
+    /// larger budget or none would draw the same splats. False before the first frame and after
+    /// a preview of a transfer-function edit (FrameAction::setInteractive()).
     bool drewEveryVoxel() const { return mDrewEveryVoxel; }
 
 protected:
@@ -153,9 +155,12 @@ private:
 
     /// @brief This frame's splats for `camera`: classified (cached), ordered and emitted as the
     /// fields say, the times added to `statistics`; classification and the octree build report
-    /// to `action`'s work progress, which may cancel them. What every backend draws.
+    /// to `action`'s work progress, which may cancel them. What every backend draws. Right
+    /// after a transfer-function edit of a grid storing at least `previewVoxels` voxels, scalar
+    /// splats draw the edit's preview (ClassificationCache::preview()) instead: the interactive
+    /// frames' (render::FrameAction::previewMinimumVoxels(); the largest uint64 for others).
     render::FrameSplats frameSplats(sg::Action& action, const render::CameraView& camera,
-                                    sg::RenderStatistics& statistics);
+                                    sg::RenderStatistics& statistics, std::uint64_t previewVoxels);
 
     /// @brief The footprint for the current fields, made once until a shaping field changes.
     std::shared_ptr<const render::SplatFootprint> footprint();

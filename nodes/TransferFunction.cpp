@@ -6,6 +6,7 @@
 #include "nodes/detail/NodeContext.h"
 #include "nodes/detail/TransferTable.h"
 #include "nodes/elements/TransferFunctionElement.h"
+#include "octree/ValueHistograms.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/Action.h"
@@ -415,6 +416,42 @@ TransferFunction::classifyRecording(const volume::ScalarGrid& grid, octree::Valu
     const std::shared_ptr<const detail::TransferTable> checked = table();
     return classifyBlocks(*checked, scaleOf(*checked, grid), grid, progress, &ranges,
                           [](glm::u64vec3) { return true; });
+}
+
+std::shared_ptr<octree::ClassifiedGrid>
+TransferFunction::classifyBlockMeans(const volume::ScalarGrid& grid,
+                                     const octree::ValueRanges& ranges,
+                                     const octree::ValueHistograms& histograms) const {
+    constexpr double kBlockSize = octree::ClassifiedGrid::kBlockSize;
+    const std::shared_ptr<const detail::TransferTable> checked = table();
+    const DataScale scale = scaleOf(*checked, grid, &ranges);
+    const volume::GridGeometry& geometry = grid.geometry();
+    const glm::dvec3 spacing = geometry.spacing();
+    const glm::u64vec3 blockDims =
+        (glm::u64vec3(geometry.dims()) + (octree::ClassifiedGrid::kBlockSize - 1)) /
+        octree::ClassifiedGrid::kBlockSize;
+    auto means = std::make_shared<octree::ClassifiedGrid>(
+        blockDims, spacing * kBlockSize, geometry.origin() + spacing * ((kBlockSize - 1.0) / 2.0));
+    const std::vector<octree::ValueHistograms::Block>& blocks = histograms.blocks();
+    std::vector<glm::vec4> blockMeans(blocks.size());
+    tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t b) {
+        const octree::ValueHistograms::Block& block = blocks[b];
+        glm::vec4 sum(0.0f);
+        if (!isTransparentWith(*checked, block.range.x, block.range.y, scale)) {
+            for (std::size_t bin = 0; bin < block.counts.size(); ++bin) {
+                if (block.counts[bin] > 0) {
+                    const Classification result = classifyWith(*checked, block.means[bin], scale);
+                    sum += static_cast<float>(block.counts[bin]) *
+                           glm::vec4(result.color, result.extinction);
+                }
+            }
+        }
+        blockMeans[b] = sum / static_cast<float>(octree::ClassifiedGrid::kBlockVoxels);
+    });
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        means->setVoxel(blocks[b].coordinates, glm::vec3(blockMeans[b]), blockMeans[b].w);
+    }
+    return means;
 }
 
 std::shared_ptr<octree::ClassifiedGrid>

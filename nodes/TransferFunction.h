@@ -197,6 +197,18 @@ public:
     std::shared_ptr<octree::ClassifiedGrid>
     classifyRecording(const volume::ScalarGrid& grid, octree::ValueRanges& ranges,
                       const sg::WorkProgress& progress = {}) const;
+    /// @brief A grid with one voxel per 8³ block of `grid`, at the block's centre (the grid's
+    /// origin moved by 3.5 voxels, its spacing 8 times `grid`'s), holding the block's mean
+    /// classification as the octree's node of the block would (empty voxels count as zero, a
+    /// block clipped by the grid's upper faces as a whole one), computed from the block's value
+    /// histogram without reading a voxel: the bins' counts times the function at the bins' mean
+    /// values (octree::ValueHistograms says how close that is). `ranges` and `histograms` are
+    /// `grid`'s (classifyRecording(), volume::blockValueHistograms()). What an interactive frame
+    /// draws right after an edit: 16 evaluations of the function per block instead of 512.
+    /// @throws DataError when the fields are invalid.
+    std::shared_ptr<octree::ClassifiedGrid>
+    classifyBlockMeans(const volume::ScalarGrid& grid, const octree::ValueRanges& ranges,
+                       const octree::ValueHistograms& histograms) const;
     /// @brief Whether every value in [`minimum`, `maximum`] classifies over `scale` to no
     /// emission and no extinction. Exact where it answers true (never true for a range holding a
     /// visible value); it may answer false for a range whose values are all transparent only

@@ -11,6 +11,7 @@ class Octree;
 class Refiner;
 class SliceOrder;
 class SplatList;
+class ValueHistograms;
 class ValueRanges;
 class View;
 struct NodeRef;

@@ -75,9 +75,10 @@ void reportFrame(int frame, double sinceStart, const ProgressiveRefinement& refi
     if (refinement.budget() > 0) {
         budget = ", budget " + std::to_string(refinement.budget());
     }
-    std::fprintf(stderr, "frame %d at %.2f s: %s%s, %zu splats; %s s\n", frame, sinceStart,
+    const char* preview = statistics.builds.previews > 0 ? " (a preview of the edit)" : "";
+    std::fprintf(stderr, "frame %d at %.2f s: %s%s, %zu splats%s; %s s\n", frame, sinceStart,
                  ProgressiveRefinement::toString(refinement.stage()), budget.c_str(),
-                 static_cast<std::size_t>(statistics.splats), phases.c_str());
+                 static_cast<std::size_t>(statistics.splats), preview, phases.c_str());
 }
 
 void onScroll(GLFWwindow* window, double /*x*/, double y) {
@@ -278,7 +279,10 @@ void Viewer::run() {
             const Clock::time_point start = Clock::now();
             const sg::RenderStatistics* rendered = nullptr;
             try {
-                rendered = &frames.render(root);
+                // Coarse frames preview a transfer-function edit from the blocks' value
+                // histograms; the refinement steps after it classify exactly.
+                rendered = &frames.render(
+                    root, refinement.stage() == ProgressiveRefinement::Stage::Interactive);
             } catch (const sg::Cancelled& error) {
                 std::fprintf(stderr, "texsplat view: %s\n", error.what());
                 window.requestClose();

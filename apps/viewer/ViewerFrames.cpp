@@ -40,7 +40,8 @@ void ViewerFrames::setWorkProgress(sg::WorkProgress progress) {
     }
 }
 
-const sg::RenderStatistics& ViewerFrames::render(sg::Node& root) {
+const sg::RenderStatistics& ViewerFrames::render(sg::Node& root, bool interactive) {
+    mFrameAction->setInteractive(interactive);
     const render::Frame& frame = mFrameAction->collect(root);
     if (mCpu) {
         image::Image image = mCpu->draw(frame, mFrameAction->statistics());

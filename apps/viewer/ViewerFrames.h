@@ -39,9 +39,10 @@ public:
     /// be cancelled (then render() throws sg::Cancelled and the next frame starts them again).
     void setWorkProgress(sg::WorkProgress progress);
 
-    /// @brief Draws `root` into the target; answers the frame's statistics.
+    /// @brief Draws `root` into the target, an `interactive` frame or not
+    /// (render::FrameAction::setInteractive()); answers the frame's statistics.
     /// @throws sg::Cancelled when the work progress cancelled a step.
-    const sg::RenderStatistics& render(sg::Node& root);
+    const sg::RenderStatistics& render(sg::Node& root, bool interactive);
 
     /// @brief Whether a frame was drawn since the last resize().
     bool hasFrame() const { return mHasFrame; }

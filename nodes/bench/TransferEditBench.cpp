@@ -3,6 +3,8 @@
 #include "nodes/ScalarSplat.h"
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
+#include "nodes/image/ImageComparison.h"
+#include "nodes/volume/ValueHistogram.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "octree/ClassifiedGrid.h"
@@ -13,6 +15,9 @@
 
 #include <chrono>
 #include <cstdio>
+#include <iterator>
+#include <limits>
+#include <optional>
 
 namespace texsplat::bench {
 namespace {
@@ -53,17 +58,20 @@ void raiseRangeMinimum(nodes::TransferFunction& transfer) {
 constexpr Edit kEdits[] = {{"opacities x 0.5", halveOpacities},
                            {"range from 30 %", raiseRangeMinimum}};
 
-// A CPU frame of `root`: its wall time less loading, and its statistics.
+// A CPU frame of `root`: its wall time less loading, its statistics and image.
 struct Timed {
     double seconds = 0.0;
     sg::RenderStatistics statistics;
+    image::Image image;
 };
 
-Timed timeFrame(sg::Node& root, glm::ivec2 size, const render::cpu::CpuRenderer& renderer) {
+Timed timeFrame(sg::Node& root, glm::ivec2 size, const render::cpu::CpuRenderer& renderer,
+                bool interactive = false) {
     render::FrameAction action(size.x, size.y);
+    action.setInteractive(interactive);
+    action.setPreviewMinimumVoxels(0); // the preview is measured whatever the grid's size
     const Clock::time_point start = Clock::now();
-    renderer.draw(action.collect(root), action.statistics(), false);
-    Timed timed;
+    Timed timed{0.0, {}, renderer.draw(action.collect(root), action.statistics(), false)};
     timed.seconds = std::chrono::duration<double>(Clock::now() - start).count() -
                     action.statistics().time(sg::RenderPhase::Load);
     timed.statistics = action.statistics();
@@ -101,19 +109,42 @@ std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, gl
     const std::vector<float> opacities = transfer.opacities.values();
     const glm::vec2 range = transfer.range.value();
     const int rangeMode = transfer.rangeMode.value();
+    const auto restore = [&] {
+        transfer.opacities.setValue(opacities);
+        transfer.range.setValue(range);
+        transfer.rangeMode.setValue(rangeMode);
+    };
+    // The first preview makes the grid's block value histograms, once: not in any row.
+    timeFrame(*scene, size, renderer);
+    kEdits[0].apply(transfer);
+    timeFrame(*scene, size, renderer, true);
+    restore();
     std::vector<TransferEditTime> rows;
+    std::vector<std::optional<image::Image>> fullResolution(std::size(kEdits));
     for (const std::uint64_t budget : maxSplats) {
-        for (const Edit& edit : kEdits) {
+        for (std::size_t e = 0; e < std::size(kEdits); ++e) {
+            const Edit& edit = kEdits[e];
             for (nodes::ScalarSplat* splat : splatNodes) {
                 splat->maxSplats.setValue(static_cast<int>(budget));
             }
-            transfer.opacities.setValue(opacities);
-            transfer.range.setValue(range);
-            transfer.rangeMode.setValue(rangeMode);
+            restore();
             timeFrame(*scene, size, renderer); // classifies, builds what the budget needs
             edit.apply(transfer);
+            const Timed preview = timeFrame(*scene, size, renderer, true);
             const Timed edited = timeFrame(*scene, size, renderer);
             TransferEditTime row;
+            row.previewSeconds = preview.seconds;
+            row.previewSplats = preview.statistics.splats;
+            if (budget == 0) {
+                fullResolution[e] = edited.image;
+            }
+            const auto psnr = [&](const image::Image& image) {
+                return fullResolution[e]
+                           ? image::ImageComparison(*fullResolution[e], image).rgb().psnr
+                           : std::numeric_limits<double>::quiet_NaN();
+            };
+            row.editPsnr = psnr(edited.image);
+            row.previewPsnr = psnr(preview.image);
             row.edit = edit.name;
             row.maxSplats = budget;
             row.splats = edited.statistics.splats;
@@ -135,6 +166,8 @@ std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, gl
                     ranges.add(glm::u64vec3(index), value);
                 });
             });
+            row.valueHistogramSeconds =
+                secondsOf([&] { const auto histograms = volume::blockValueHistograms(*grid); });
             rows.push_back(row);
         }
     }
@@ -143,16 +176,19 @@ std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, gl
 
 std::string transferEditTable(const std::vector<TransferEditTime>& rows) {
     std::string table = "edit              budget     splats   after edit   re-classify all   "
-                        "ratio   value ranges (once)  rebuilt\n";
+                        "ratio   preview   its splats   dB after edit / preview   "
+                        "value ranges, histograms (once)  rebuilt\n";
     for (const TransferEditTime& row : rows) {
-        char line[256];
+        char line[320];
         std::snprintf(line, sizeof line,
-                      "%-16s %7s %10zu   %8.3f s   %13.3f s   %5.2f   %16.3f s   %zu\n",
+                      "%-16s %7s %10zu   %8.3f s   %13.3f s   %5.2f   %5.3f s   %10zu   "
+                      "%13.1f / %7.1f   %9.3f s, %9.3f s           %zu\n",
                       row.edit.c_str(),
                       row.maxSplats == 0 ? "full" : std::to_string(row.maxSplats).c_str(),
                       row.splats, row.editSeconds, row.reclassifySeconds,
-                      row.reclassifySeconds / row.editSeconds, row.valueRangeSeconds,
-                      row.editValueRanges);
+                      row.reclassifySeconds / row.editSeconds, row.previewSeconds,
+                      row.previewSplats, row.editPsnr, row.previewPsnr, row.valueRangeSeconds,
+                      row.valueHistogramSeconds, row.editValueRanges);
         table += line;
     }
     return table;

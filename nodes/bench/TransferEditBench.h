@@ -21,7 +21,17 @@ struct TransferEditTime {
     /// drawing, plus classifying every voxel of the grid with the edited function (no block
     /// skipped, a DATA range scanned) and, with a budget, building the octree over that.
     double reclassifySeconds = 0.0;
+    /// @brief The interactive frame after the same edit (render::FrameAction::setInteractive()):
+    /// the edit's preview from the blocks' value histograms, which classifies no voxel.
+    double previewSeconds = 0.0;
+    std::size_t previewSplats = 0;   ///< splats that preview drew
+    /// @brief RGB PSNR (dB, peak 1) against the full-resolution frame after the same edit, of
+    /// the exact frame at this budget (infinite at full resolution) and of the preview; NaN when
+    /// no full-resolution frame of the edit was measured before (budgets without a 0 first).
+    double editPsnr = 0.0;
+    double previewPsnr = 0.0;
     double valueRangeSeconds = 0.0;  ///< making the grid's value ranges once (the first frame)
+    double valueHistogramSeconds = 0.0; ///< its block value histograms (once, the first preview)
     std::size_t editValueRanges = 0; ///< value ranges the edited frame made (0: none rebuilt)
 };
 
@@ -31,7 +41,10 @@ struct TransferEditTime {
 /// of `range` becomes transparent; the range becomes FIXED) — the wall time of the next CPU frame
 /// after the edit on a scene that already drew a frame (loading not counted), against the same
 /// frame with the classification (and octree) made as before value ranges existed: every voxel
-/// of the first VolumeData's grid classified by the first TransferFunction.
+/// of the first VolumeData's grid classified by the first TransferFunction; and the interactive
+/// frame right after the edit, its preview (timed before the exact frame, which it does not
+/// make faster: a preview classifies nothing; the grid's block value histograms, made for the
+/// first preview, are made before the first row and timed on their own).
 /// @throws DataError when the scene has no TransferFunction, VolumeData or splat node; what
 /// rendering throws.
 std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, glm::ivec2 size,

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "octree/ValueHistograms.h"
+#include "scenegraph/WorkProgress.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,5 +21,13 @@ extern template std::vector<std::uint64_t> valueHistogram(const Grid<float>&, do
                                                           std::size_t);
 extern template std::vector<std::uint64_t> valueHistogram(const Grid<glm::vec3>&, double, double,
                                                           std::size_t);
+
+/// @brief The value histogram of every 8³ block of `grid` that holds a value
+/// (octree::ValueHistograms): one walk over the grid's occupied blocks, in parallel batches
+/// (oneTBB), in their order for any number of threads. `progress` (when set) hears "summarizing
+/// the data's blocks" and the fraction done, and may cancel.
+/// @throws sg::Cancelled when `progress` cancels.
+octree::ValueHistograms blockValueHistograms(const Grid<float>& grid,
+                                             const sg::WorkProgress& progress = {});
 
 } // namespace texsplat::volume

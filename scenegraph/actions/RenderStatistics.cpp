@@ -35,6 +35,8 @@ FrameBuilds& FrameBuilds::operator+=(const FrameBuilds& other) {
     valueRanges += other.valueRanges;
     classifications += other.classifications;
     octrees += other.octrees;
+    valueHistograms += other.valueHistograms;
+    previews += other.previews;
     splatBatches += other.splatBatches;
     return *this;
 }

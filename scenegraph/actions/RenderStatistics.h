@@ -45,6 +45,8 @@ struct FrameBuilds {
     std::size_t valueRanges = 0;     ///< block value ranges of a grid (octree::ValueRanges)
     std::size_t classifications = 0; ///< classified grids
     std::size_t octrees = 0;         ///< octrees over a classified grid
+    std::size_t valueHistograms = 0; ///< block value histograms of a grid, for previews
+    std::size_t previews = 0;        ///< previews of a transfer-function edit (block means)
     std::size_t splatBatches = 0;    ///< GL splat batches (shaders, footprint textures)
 
     /// @brief Adds another frame's counts.

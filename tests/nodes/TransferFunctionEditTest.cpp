@@ -1,7 +1,8 @@
 // Transfer-function edits without a new data hierarchy (issue 13): a scalar grid's block value
-// ranges are made once and serve every transfer function; classification with them skips the
-// blocks a function hides and gives the same classified grid, and an edit after the first frame
-// draws what a fresh scene with the new function draws.
+// ranges and histograms are made once and serve every transfer function; classification with
+// them skips the blocks a function hides and gives the same classified grid, an edit after the
+// first frame draws what a fresh scene with the new function draws, and an interactive frame
+// previews an edit from the blocks' histograms without classifying.
 #include "nodes/volume/SparseGrid.h"
 
 #include "nodes/NodeTypes.h"
@@ -13,13 +14,17 @@
 #include "nodes/render/SceneFraming.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/ValueHistogram.h"
 #include "octree/ClassifiedGrid.h"
+#include "octree/ValueHistograms.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Separator.h"
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdint>
 #include <limits>
 #include <memory>
@@ -91,6 +96,7 @@ TEST_F(TransferFunctionEdit, classifyingWithTheValueRangesGivesTheSameGrid) {
     // A grid's first classification records the ranges on the way.
     octree::ValueRanges ranges(glm::u64vec3(64));
     const auto first = ramp({0.0f, 1.0f}, {0.0f, 2.0f})->classifyRecording(*grid, ranges);
+    EXPECT_EQ(volume::blockValueHistograms(*grid).blocks().size(), ranges.blockCount());
     EXPECT_EQ(ranges.blockCount(), added.blockCount());
     EXPECT_EQ(ranges.valueRange(), added.valueRange());
     const auto straddles = [](float low, float high) { return low < 0.05f && high > 0.1f; };
@@ -184,13 +190,72 @@ TEST_F(TransferFunctionEdit, aFirstClassificationGivesEveryVoxelWhatItsValueClas
     }
 }
 
+// Every block's mean classification, as the octree's block nodes hold it: from the classified
+// grid, and from the histograms without classifying. Where each bin of a block holds one distinct
+// value (the data in steps of 1/8, bins at most 1/16 wide) the two agree for any function,
+// steps included; for other data, where the function is linear over a block's values (the
+// extinction of an opacity ramp; the colour map bends, so colours only come close).
+TEST_F(TransferFunctionEdit, theBlockMeansFromTheHistogramsAreTheClassifiedBlocksMeans) {
+    const auto balls = twoBalls();
+    auto stepped = std::make_shared<volume::SparseScalarGrid>(balls->geometry());
+    balls->forEachActive([&](const glm::i64vec3& index, float value) {
+        stepped->setValue(index, std::round(value * 8.0f) / 8.0f);
+    });
+    struct Case {
+        std::shared_ptr<volume::SparseScalarGrid> grid;
+        TransferFunction::Ptr transfer;
+        float colorTolerance; // of 1 + the expected value
+    };
+    const std::vector<Case> cases{
+        {stepped, ramp({0.0f, 0.3f, 0.3f, 0.6f, 1.0f}, {0.0f, 0.0f, 2.0f, 0.5f, 3.0f}), 1e-5f},
+        {stepped, ramp({0.0f, 0.1f, 0.7f}, {0.0f, 4.0f, 0.0f}), 1e-5f},
+        {balls, ramp({0.0f, 1.0f}, {0.0f, 2.0f}), 1e-3f}};
+    for (std::size_t c = 0; c < cases.size(); ++c) {
+        SCOPED_TRACE(c);
+        const volume::ScalarGrid& grid = *cases[c].grid;
+        const TransferFunction& transfer = *cases[c].transfer;
+        octree::ValueRanges ranges(glm::u64vec3(64));
+        const auto classified = transfer.classifyRecording(grid, ranges);
+        const octree::ValueHistograms histograms = volume::blockValueHistograms(grid);
+        const auto means = transfer.classifyBlockMeans(grid, ranges, histograms);
+        EXPECT_EQ(means->dims(), glm::u64vec3(8));
+        EXPECT_EQ(means->spacing(), glm::dvec3(8.0));
+        EXPECT_EQ(means->origin(), glm::dvec3(3.5));
+        std::size_t compared = 0;
+        for (std::uint64_t z = 0; z < 8; ++z)
+            for (std::uint64_t y = 0; y < 8; ++y)
+                for (std::uint64_t x = 0; x < 8; ++x) {
+                    glm::vec4 sum(0.0f);
+                    for (std::uint64_t v = 0; v < 512; ++v) {
+                        sum += classified->voxel(glm::u64vec3(x, y, z) * std::uint64_t{8} +
+                                                 glm::u64vec3(v % 8, v / 8 % 8, v / 64));
+                    }
+                    const glm::vec4 expected = sum / 512.0f;
+                    const glm::vec4 got = means->voxel({x, y, z});
+                    for (int channel = 0; channel < 4; ++channel) {
+                        const float tolerance = channel < 3 ? cases[c].colorTolerance : 1e-5f;
+                        EXPECT_NEAR(got[channel], expected[channel],
+                                    tolerance * (1.0f + expected[channel]))
+                            << "block " << x << ' ' << y << ' ' << z << " channel " << channel;
+                    }
+                    compared += expected != glm::vec4(0.0f) ? 1 : 0;
+                }
+        EXPECT_GE(compared, 16u);
+        EXPECT_EQ(means->blockCount(), 1u) << "an 8³ grid of means is one block";
+    }
+}
+
 struct Rendered {
     image::Image image;
     sg::FrameBuilds builds;
 };
 
-Rendered renderFrame(sg::Node& root) {
+// A frame of `root`; an interactive one previews edits of grids storing `previewVoxels` voxels
+// or more (by default every grid: the two balls are a small one).
+Rendered renderFrame(sg::Node& root, bool interactive = false, std::uint64_t previewVoxels = 0) {
     render::FrameAction action(72, 64);
+    action.setInteractive(interactive);
+    action.setPreviewMinimumVoxels(previewVoxels);
     const render::cpu::CpuRenderer renderer(2);
     image::Image image = renderer.draw(action.collect(root), action.statistics(), false);
     return {std::move(image), action.statistics().builds};
@@ -242,6 +307,86 @@ TEST_F(TransferFunctionEdit, anEditKeepsTheValueRangesAndDrawsWhatAFreshSceneDra
         EXPECT_EQ(differingPixels(afterEdit.image, fresh.image), 0);
         EXPECT_GT(differingPixels(afterEdit.image, first.image), 100) << "the edit shows";
     }
+}
+
+// The sum of `image`'s opacities: how much of the background it covers.
+double coverage(const image::Image& image) {
+    double sum = 0.0;
+    for (int y = 0; y < image.height(); ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            sum += static_cast<double>(image.pixel(x, y).a);
+        }
+    return sum;
+}
+
+TEST_F(TransferFunctionEdit, anInteractiveFrameAfterAnEditPreviewsItWithoutClassifying) {
+    for (const int maxSplats : {0, 20}) { // every block mean, and a cut of them
+        SCOPED_TRACE(maxSplats);
+        const auto transfer = ramp({0.0f, 1.0f}, {0.0f, 2.0f});
+        const sg::Node::Ptr edited = scene(transfer, maxSplats);
+        const Rendered unedited = renderFrame(*edited, true);
+        EXPECT_EQ(unedited.builds.classifications, 1u) << "nothing to preview before a first frame";
+        EXPECT_EQ(unedited.builds.previews, 0u);
+        EXPECT_EQ(differingPixels(renderFrame(*edited, true).image, unedited.image), 0)
+            << "no edit, no preview: the exact frame";
+        transfer->opacityValues.setValue({0.0f, 0.3f, 1.0f});
+        transfer->opacities.setValue({0.0f, 0.0f, 3.0f});
+        const Rendered preview = renderFrame(*edited, true);
+        EXPECT_EQ(preview.builds.classifications, 0u);
+        EXPECT_EQ(preview.builds.octrees, 0u);
+        EXPECT_EQ(preview.builds.valueHistograms, 1u) << "for the grid's first preview";
+        EXPECT_EQ(preview.builds.previews, 1u);
+        const Rendered previewAgain = renderFrame(*edited, true);
+        EXPECT_EQ(previewAgain.builds.previews, 0u) << "kept until the function changes";
+        EXPECT_EQ(differingPixels(previewAgain.image, preview.image), 0);
+        // The same preview from a scene that started with another function.
+        const auto other = ramp({0.0f, 0.5f, 1.0f}, {1.0f, 0.0f, 1.0f});
+        const sg::Node::Ptr otherScene = scene(other, maxSplats);
+        renderFrame(*otherScene);
+        other->opacityValues.setValue({0.0f, 0.3f, 1.0f});
+        other->opacities.setValue({0.0f, 0.0f, 3.0f});
+        EXPECT_EQ(differingPixels(renderFrame(*otherScene, true).image, preview.image), 0);
+        // The next frame that is not interactive is exact: a fresh scene's.
+        const Rendered exact = renderFrame(*edited);
+        EXPECT_EQ(exact.builds.classifications, 1u);
+        EXPECT_EQ(exact.builds.valueRanges, 0u);
+        EXPECT_EQ(differingPixels(
+                      exact.image,
+                      renderFrame(*scene(ramp({0.0f, 0.3f, 1.0f}, {0.0f, 0.0f, 3.0f}), maxSplats))
+                          .image),
+                  0);
+        // The preview shows the edit: a cut of the preview covers about what the exact cut after
+        // the edit covers, and the edit changed that a lot. (Every block mean covers more than
+        // the full-resolution image: a block's splat spreads its mean extinction over 8³ voxels
+        // and 1 - e^-τ is concave; the octree's block nodes do the same.)
+        if (maxSplats > 0) {
+            EXPECT_LT(std::abs(coverage(preview.image) - coverage(exact.image)),
+                      0.2 * std::abs(coverage(unedited.image) - coverage(exact.image)));
+        }
+        // The next edit makes a new preview.
+        transfer->opacities.setValue({0.0f, 0.0f, 1.0f});
+        const Rendered nextPreview = renderFrame(*edited, true);
+        EXPECT_EQ(nextPreview.builds.previews, 1u);
+        EXPECT_EQ(nextPreview.builds.valueHistograms, 0u) << "made once per grid";
+        EXPECT_GT(differingPixels(nextPreview.image, preview.image), 100);
+    }
+}
+
+// A grid that classifies in milliseconds is not previewed: the viewer's default threshold.
+TEST_F(TransferFunctionEdit, anInteractiveFrameClassifiesAnEditOfASmallGridExactly) {
+    const auto transfer = ramp({0.0f, 1.0f}, {0.0f, 2.0f});
+    const sg::Node::Ptr edited = scene(transfer, 400);
+    renderFrame(*edited);
+    transfer->opacities.setValue({0.0f, 1.0f});
+    const std::uint64_t stored = twoBalls()->storedVoxelCount();
+    const Rendered exact = renderFrame(*edited, true, stored + 1);
+    EXPECT_EQ(exact.builds.previews, 0u);
+    EXPECT_EQ(exact.builds.classifications, 1u);
+    transfer->opacities.setValue({0.0f, 3.0f});
+    const Rendered preview = renderFrame(*edited, true, stored);
+    EXPECT_EQ(preview.builds.previews, 1u) << "from that many stored voxels on";
+    EXPECT_EQ(preview.builds.classifications, 0u);
+    EXPECT_GT(render::FrameAction(1, 1).previewMinimumVoxels(), stored);
 }
 
 } // namespace

@@ -1,6 +1,7 @@
 #include "nodes/render/detail/ClassificationCache.h"
 
 #include "nodes/TransferFunction.h"
+#include "nodes/volume/ValueHistogram.h"
 
 namespace texsplat::render::detail {
 
@@ -17,6 +18,7 @@ ClassificationCache::classified(const volume::ScalarGridPtr& grid,
         }
         // The grid's first classification makes its value ranges in the same pass.
         mValueRanges.reset();
+        mHistograms.reset();
         auto ranges =
             std::make_unique<octree::ValueRanges>(glm::u64vec3(grid->geometry().dims()));
         std::shared_ptr<const octree::ClassifiedGrid> result =
@@ -43,9 +45,51 @@ ClassificationCache::classified(const ClassificationInputs& inputs,
     return mClassified;
 }
 
+std::shared_ptr<const octree::ClassifiedGrid>
+ClassificationCache::preview(const volume::ScalarGridPtr& grid,
+                             const nodes::TransferFunction& transfer) {
+    const bool current = mClassified && mInputs.grids.size() == 1 && mInputs.grids[0] == grid &&
+                         &transfer == mTransfer && !mTransferChanged;
+    if (current || !mValueRanges || grid != mValueRangesGrid) {
+        return nullptr;
+    }
+    if (&transfer != mTransfer) {
+        // Another function: the classification is not by it (observe() makes the preview stale).
+        observe(&transfer);
+        mTransferChanged = true;
+    }
+    // The classification by an earlier function serves no frame any more.
+    mOctree.reset();
+    mClassified.reset();
+    if (!mPreview || mPreviewStale || grid != mPreviewGrid) {
+        mPreviewOctree.reset();
+        mPreview.reset();
+        if (!mHistograms) {
+            // Once per grid, for its first edit previewed: one more walk over its blocks.
+            mHistograms = std::make_unique<octree::ValueHistograms>(
+                volume::blockValueHistograms(*grid, mProgress));
+            ++mBuilds.valueHistograms;
+        }
+        mPreview = transfer.classifyBlockMeans(*grid, *mValueRanges, *mHistograms);
+        mPreviewGrid = grid;
+        mPreviewStale = false;
+        ++mBuilds.previews;
+    }
+    return mPreview;
+}
+
+const octree::Octree& ClassificationCache::previewOctree() {
+    if (!mPreviewOctree) {
+        mPreviewOctree = std::make_unique<octree::Octree>(mPreview, mProgress);
+    }
+    return *mPreviewOctree;
+}
+
 void ClassificationCache::invalidate() {
     mOctree.reset();
     mClassified.reset();
+    mPreviewOctree.reset();
+    mPreview.reset();
 }
 
 const octree::Octree& ClassificationCache::octree() {
@@ -58,11 +102,13 @@ const octree::Octree& ClassificationCache::octree() {
 
 void ClassificationCache::changed(sg::Notifier& /*subject*/, const sg::Field* /*source*/) {
     mTransferChanged = true;
+    mPreviewStale = true;
 }
 
 void ClassificationCache::subjectDestroyed(sg::Notifier& /*subject*/) {
     mTransfer = nullptr;
     mTransferChanged = true;
+    mPreviewStale = true;
 }
 
 void ClassificationCache::observe(const nodes::TransferFunction* transfer) {
@@ -74,6 +120,7 @@ void ClassificationCache::observe(const nodes::TransferFunction* transfer) {
         const_cast<nodes::TransferFunction*>(mTransfer)->removeObserver(*this);
     }
     mTransfer = transfer;
+    mPreviewStale = true; // edits of an unobserved function went unheard
     if (mTransfer) {
         const_cast<nodes::TransferFunction*>(mTransfer)->addObserver(*this);
     }

@@ -3,6 +3,7 @@
 #include "nodes/volume/Grid.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/Octree.h"
+#include "octree/ValueHistograms.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Observer.h"
 #include "scenegraph/WorkProgress.h"
@@ -35,8 +36,10 @@ struct ClassificationInputs {
 /// A splat node's classified grid and octree, kept across frames ("cache classification and
 /// the octree on the node"): rebuilt when the inputs differ from last time, when the transfer
 /// function is replaced or changes (observed), or after invalidate(). A scalar grid's block value
-/// ranges (octree::ValueRanges) depend on the data alone: made once per grid, they survive every
-/// transfer-function change and let classification skip what the new function hides.
+/// ranges and histograms (octree::ValueRanges, octree::ValueHistograms) depend on the data alone:
+/// made once per grid (the ranges with its first classification, the histograms for its first
+/// preview), they survive every transfer-function change, let classification skip what the new
+/// function hides, and give an interactive frame its preview of an edit.
 class ClassificationCache final : public sg::Observer {
 public:
     /// How many times each structure was made since the cache was: what a test of "a transfer
@@ -45,6 +48,8 @@ public:
         std::uint64_t valueRanges = 0;
         std::uint64_t classifications = 0;
         std::uint64_t octrees = 0;
+        std::uint64_t valueHistograms = 0;
+        std::uint64_t previews = 0;
     };
 
     /// Makes the classified grid from the inputs.
@@ -69,13 +74,26 @@ public:
     /// progress).
     const octree::Octree& octree();
 
+    /// For an interactive frame right after `transfer` changed: the grid of `grid`'s block means
+    /// under `transfer` (TransferFunction::classifyBlockMeans(), from the grid's block value
+    /// histograms, made on the first call for a grid, reading no voxel after that), made once
+    /// per version of the function; the classification by an earlier function is released. Null
+    /// when there is nothing to preview: classified() holds `grid` classified by `transfer` as
+    /// it is (draw that), or `grid` was never classified here.
+    std::shared_ptr<const octree::ClassifiedGrid> preview(const volume::ScalarGridPtr& grid,
+                                                          const nodes::TransferFunction& transfer);
+
+    /// The octree over the last preview() grid, built on first use.
+    const octree::Octree& previewOctree();
+
     /// Where the scalar classification and the octree build made from now on report, and may be
     /// cancelled (the action's, set by the splat node each frame).
     void setWorkProgress(sg::WorkProgress progress) { mProgress = std::move(progress); }
 
-    /// Bytes of the value ranges held (0 before a scalar grid was classified).
+    /// Bytes of the value ranges and histograms held (0 before a scalar grid was classified).
     std::uint64_t valueRangeBytes() const {
-        return mValueRanges ? mValueRanges->memoryBytes() : 0;
+        return (mValueRanges ? mValueRanges->memoryBytes() : 0) +
+               (mHistograms ? mHistograms->memoryBytes() : 0);
     }
 
     /// What was made so far.
@@ -93,10 +111,15 @@ private:
     ClassificationInputs mInputs;
     const nodes::TransferFunction* mTransfer = nullptr;
     bool mTransferChanged = false;
+    bool mPreviewStale = true; // the transfer function changed since the preview was made
     std::shared_ptr<const octree::ClassifiedGrid> mClassified;
     std::unique_ptr<octree::Octree> mOctree;
     volume::ScalarGridPtr mValueRangesGrid;
     std::unique_ptr<octree::ValueRanges> mValueRanges;
+    std::unique_ptr<octree::ValueHistograms> mHistograms;
+    std::shared_ptr<const octree::ClassifiedGrid> mPreview;
+    volume::ScalarGridPtr mPreviewGrid; // the grid mPreview previews
+    std::unique_ptr<octree::Octree> mPreviewOctree;
     Builds mBuilds;
     sg::WorkProgress mProgress;
 };
