@@ -17,6 +17,7 @@
 #include "tests/nodes/SplatSpansReference.h"
 
 #include "BenchmarkBaseline.h"
+#include "CompositeFloor.h"
 
 #include <benchmark/benchmark.h>
 
@@ -130,5 +131,20 @@ BENCHMARK(CompositeSplatsBaselineScalar)
     ->Apply(workloads)
     ->Unit(benchmark::kMillisecond);
 TEXSPLAT_BENCHMARK_BASELINE(CompositeSplatsSimd, CompositeSplatsBaselineScalar);
+
+// The same vectors as the stamped loop on Marschner–Lobb 128³, with one stamp load for the
+// footprint and the least arithmetic (CompositeFloor.h): how close the loop is to what its
+// vectors cost.
+void CompositeSplatsFloor(benchmark::State& state) {
+    timeComposite(
+        state,
+        [](const CompositeWorkload& workload, ColorPlanes& planes) {
+            texsplat::microbench::compositeFloor(workload.splats.data(), workload.splats.size(),
+                                                 *workload.stamps(), planes);
+        },
+        std::string("floor, ") + texsplat::render::cpu::compositeTarget());
+}
+BENCHMARK(CompositeSplatsFloor)->Args({0, 128, 1, 1})->Unit(benchmark::kMillisecond);
+TEXSPLAT_BENCHMARK_BASELINE(CompositeSplatsFloor, CompositeSplatsSimd);
 
 } // namespace
