@@ -99,6 +99,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                                              std::uint64_t previewVoxels) {
     sg::State& state = action.state();
     mDrewEveryVoxel = false;
+    mDrewPreview = false;
     mCache->setWorkProgress(action.workProgress());
     const auto inputs = renderInputs(state);
     const VolumeData& volume = inputs.first;
@@ -120,34 +121,31 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     });
     const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
     const render::detail::ClassificationCache::Builds before = mCache->builds();
+    // The classified grid, timed, its allocation named by `stage` if it fails.
+    const auto classifying = [&](const char* stage, const auto& make) {
+        return timed(statistics, sg::RenderPhase::Classify, [&] {
+            return detail::withNodeContext(*this, [&] {
+                return withMemoryStage(stage, memory.classified, detail::kSplatMemoryAdvice, make);
+            });
+        });
+    };
     // An interactive frame right after a transfer-function edit of a large grid draws the
     // blocks' means from their value histograms (a grid 8 times coarser, made without reading a
     // voxel) instead of classifying every block again; the next frame that is not interactive
-    // is exact. (Vector and combined splats classify their own way and have no preview.)
+    // is exact. The histograms (once per grid) and the means take a 64th and a 512th of what the
+    // classified grid would: the frame's estimate bounds them.
     std::shared_ptr<const octree::ClassifiedGrid> classified;
-    if (!vectors && volume.scalarGrid()->storedVoxelCount() >= previewVoxels) {
-        // Its histograms (once per grid) and grid of means take a 64th and a 512th of what the
-        // classified grid would: the frame's estimate bounds them.
-        classified = timed(statistics, sg::RenderPhase::Classify, [&] {
-            return detail::withNodeContext(*this, [&] {
-                return withMemoryStage("previewing the edit", memory.classified,
-                                       detail::kSplatMemoryAdvice, [&] {
-                                           return mCache->preview(volume.scalarGrid(), transfer);
-                                       });
-            });
+    if (previewsEdits() && volume.scalarGrid()->storedVoxelCount() >= previewVoxels) {
+        classified = classifying("previewing the edit", [&] {
+            return mCache->preview(volume.scalarGrid(), transfer);
         });
     }
     const bool isPreview = classified != nullptr;
     if (!isPreview) {
-        classified = timed(statistics, sg::RenderPhase::Classify, [&] {
-            return detail::withNodeContext(*this, [&] {
-                return withMemoryStage("classifying", memory.classified,
-                                       detail::kSplatMemoryAdvice, [&] {
-                                           return classify(*mCache, state, volume, transfer, model);
-                                       });
-            });
-        });
+        classified = classifying(
+            "classifying", [&] { return classify(*mCache, state, volume, transfer, model); });
     }
+    mDrewPreview = isPreview;
     const auto tree = [&]() -> const octree::Octree& {
         return isPreview ? mCache->previewOctree() : mCache->octree();
     };
@@ -219,10 +217,11 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     statistics.builds.valueHistograms += after.valueHistograms - before.valueHistograms;
     statistics.builds.previews += after.previews - before.previews;
     statistics.splats += splats->size();
+    statistics.previewed += isPreview ? 1 : 0;
     sg::FrameMemory& bytes = statistics.memory;
     const volume::VectorGridPtr vectorGrid = vectors ? volume.vectorGrid() : nullptr;
     bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
-    bytes.classified += classified->memoryBytes() + mCache->valueRangeBytes();
+    bytes.classified += classified->memoryBytes() + mCache->dataSummaryBytes();
     bytes.octree += fullResolution ? 0 : tree().memoryBytes();
     bytes.splats += splats->memoryBytes() + mDepthSorter.memoryBytes();
     result.splats = splats;

@@ -110,6 +110,11 @@ public:
     /// a preview of a transfer-function edit (FrameAction::setInteractive()).
     bool drewEveryVoxel() const { return mDrewEveryVoxel; }
 
+    /// @brief Whether the last frame drew a preview of a transfer-function edit (an interactive
+    /// frame, render::FrameAction::setInteractive()): the grid's block means, not its cut, so its
+    /// splat count says nothing of how far a budget would refine.
+    bool drewPreview() const { return mDrewPreview; }
+
 protected:
     ScalarSplat();
 
@@ -128,6 +133,12 @@ protected:
     /// @brief For splats that carry vectors: the table size and seed their emission needs
     /// (the matrices are filled in per frame); nothing (the default) for scalar splats.
     virtual std::optional<octree::VectorEmission> vectorEmission() const { return std::nullopt; }
+
+    /// @brief Whether an interactive frame may preview a transfer-function edit from the grid's
+    /// block value histograms (ClassificationCache::preview()): where classify() is this base's,
+    /// the scalar grid through the transfer function. Vector and combined splats classify their
+    /// own way and have no preview.
+    virtual bool previewsEdits() const { return true; }
 
     /// @brief Whether the splats stand for an emission-absorption medium that RayCastAction can
     /// integrate (scalar and combined splats); vector splats are marks, not a medium.
@@ -170,6 +181,7 @@ private:
     std::shared_ptr<octree::SplatList> mSplatList; // the last frame's, refilled when free
     octree::DepthSorter mDepthSorter; // its buffers, kept while octree cuts are drawn
     bool mDrewEveryVoxel = false;
+    bool mDrewPreview = false;
 };
 
 } // namespace texsplat::nodes

@@ -6,6 +6,7 @@
 #include "nodes/detail/NodeContext.h"
 #include "nodes/detail/TransferTable.h"
 #include "nodes/elements/TransferFunctionElement.h"
+#include "nodes/volume/BlockBatches.h"
 #include "octree/ValueHistograms.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Error.h"
@@ -301,29 +302,6 @@ bool TransferFunction::isTransparentBetween(float minimum, float maximum,
 namespace {
 
 constexpr const char* kClassifyStep = "classifying";
-// Blocks classified in parallel between two progress reports: 2^19 voxels, 8 MiB of classified
-// blocks held until the grid takes them.
-constexpr std::size_t kBlocksPerBatch = 1024;
-
-// The smallest and largest of `voxels`' non-empty values (an empty range, min > max, if none).
-glm::vec2 valueRangeOf(const volume::ScalarGrid::VoxelBlock& voxels) {
-    float lowest = std::numeric_limits<float>::infinity();
-    float highest = -std::numeric_limits<float>::infinity();
-    if (voxels.nonEmpty.all()) { // a dense grid's inner block: a loop the compiler vectorizes
-        for (const float value : voxels.values) {
-            lowest = std::min(lowest, value);
-            highest = std::max(highest, value);
-        }
-        return {lowest, highest};
-    }
-    for (std::size_t v = 0; v < voxels.values.size(); ++v) {
-        if (voxels.nonEmpty[v]) {
-            lowest = std::min(lowest, voxels.values[v]);
-            highest = std::max(highest, voxels.values[v]);
-        }
-    }
-    return {lowest, highest};
-}
 
 // Classifies the non-empty voxels of `grid`'s blocks for which `isWanted(block)` holds (block
 // coordinates), telling `progress` the fraction of the blocks done; with `recording`, adds the
@@ -345,53 +323,45 @@ classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
     auto classified = std::make_shared<octree::ClassifiedGrid>(
         glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
     const std::vector<glm::i64vec3> blocks = grid.occupiedBlocks();
-    std::vector<ClassifiedBlock> batch(std::min(blocks.size(), kBlocksPerBatch));
+    std::vector<ClassifiedBlock> batch(std::min(blocks.size(), volume::kBlocksPerBatch));
     std::vector<std::uint32_t> nonEmpty(batch.size());
     std::vector<glm::vec2> ranges(batch.size());
-    sg::reportWork(progress, kClassifyStep, 0.0);
-    for (std::size_t begin = 0; begin < blocks.size(); begin += kBlocksPerBatch) {
-        const std::size_t count = std::min(kBlocksPerBatch, blocks.size() - begin);
-        tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
-            const glm::u64vec3 block(blocks[begin + i]);
-            nonEmpty[i] = 0;
-            const bool wanted = isWanted(block);
-            if (!wanted && recording == nullptr) {
-                return;
+    const auto classifyBlock = [&](std::size_t i, const glm::i64vec3& block) {
+        nonEmpty[i] = 0;
+        const bool wanted = isWanted(glm::u64vec3(block));
+        if (!wanted && recording == nullptr) {
+            return;
+        }
+        volume::ScalarGrid::VoxelBlock voxels;
+        grid.readBlock(block, voxels);
+        const glm::vec2 range = volume::valueRangeOf(voxels);
+        ranges[i] = range;
+        if (!wanted || !(range.x <= range.y) ||
+            isTransparentWith(checked, range.x, range.y, scale)) {
+            return;
+        }
+        ClassifiedBlock& out = batch[i];
+        for (std::size_t v = 0; v < voxels.values.size(); ++v) {
+            out[v] = glm::vec4(0.0f);
+            if (!voxels.nonEmpty[v]) {
+                continue;
             }
-            volume::ScalarGrid::VoxelBlock voxels;
-            grid.readBlock(blocks[begin + i], voxels);
-            const glm::vec2 range = valueRangeOf(voxels);
-            ranges[i] = range;
-            if (!wanted || !(range.x <= range.y) ||
-                isTransparentWith(checked, range.x, range.y, scale)) {
-                return;
-            }
-            ClassifiedBlock& out = batch[i];
-            for (std::size_t v = 0; v < voxels.values.size(); ++v) {
-                out[v] = glm::vec4(0.0f);
-                if (!voxels.nonEmpty[v]) {
-                    continue;
-                }
-                const Classification result = classifyWith(checked, voxels.values[v], scale);
-                if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
-                    out[v] = glm::vec4(result.color, result.extinction);
-                    ++nonEmpty[i];
-                }
-            }
-        });
-        for (std::size_t i = 0; i < count; ++i) {
-            const glm::u64vec3 block(blocks[begin + i]);
-            if (recording != nullptr && ranges[i].x <= ranges[i].y) {
-                recording->addBlock(block, ranges[i]);
-            }
-            if (nonEmpty[i] > 0) {
-                classified->setBlock(block, batch[i]);
+            const Classification result = classifyWith(checked, voxels.values[v], scale);
+            if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
+                out[v] = glm::vec4(result.color, result.extinction);
+                ++nonEmpty[i];
             }
         }
-        sg::reportWork(progress, kClassifyStep,
-                       static_cast<double>(begin + count) / static_cast<double>(blocks.size()));
-    }
-    sg::reportWork(progress, kClassifyStep, 1.0);
+    };
+    const auto takeBlock = [&](std::size_t i, const glm::i64vec3& block) {
+        if (recording != nullptr && ranges[i].x <= ranges[i].y) {
+            recording->addBlock(glm::u64vec3(block), ranges[i]);
+        }
+        if (nonEmpty[i] > 0) {
+            classified->setBlock(glm::u64vec3(block), batch[i]);
+        }
+    };
+    volume::inBlockBatches(blocks, progress, kClassifyStep, classifyBlock, takeBlock);
     return classified;
 }
 

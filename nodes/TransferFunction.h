@@ -199,10 +199,11 @@ public:
                       const sg::WorkProgress& progress = {}) const;
     /// @brief A grid with one voxel per 8³ block of `grid`, at the block's centre (the grid's
     /// origin moved by 3.5 voxels, its spacing 8 times `grid`'s), holding the block's mean
-    /// classification as the octree's node of the block would (empty voxels count as zero, a
-    /// block clipped by the grid's upper faces as a whole one), computed from the block's value
-    /// histogram without reading a voxel: the bins' counts times the function at the bins' mean
-    /// values (octree::ValueHistograms says how close that is). `ranges` and `histograms` are
+    /// classification as the octree's node of the block does (empty voxels count as zero; a
+    /// block clipped by the grid's upper faces is taken whole: its voxels' sum over 512, at the
+    /// whole block's centre), computed from the block's value histogram without reading a
+    /// voxel: the bins' counts times the function at the bins' mean values
+    /// (octree::ValueHistograms says how close that is). `ranges` and `histograms` are
     /// `grid`'s (classifyRecording(), volume::blockValueHistograms()). What an interactive frame
     /// draws right after an edit: 16 evaluations of the function per block instead of 512.
     /// @throws DataError when the fields are invalid.

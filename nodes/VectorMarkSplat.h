@@ -97,6 +97,8 @@ protected:
     bool isInMask(float value) const;
 
     std::optional<octree::VectorEmission> vectorEmission() const override;
+    /// @brief False: the vector and combined grids are classified here, with their vectors.
+    bool previewsEdits() const override { return false; }
     render::MarkDrawing markDrawing() const override;
     bool isDrawingField(const sg::Field* field) const override;
     bool isClassificationField(const sg::Field* field) const override;

@@ -1,27 +1,23 @@
 #include "octree/ValueHistograms.h"
 
+#include "scenegraph/Assert.h"
+
 #include <algorithm>
-#include <limits>
+#include <cmath>
 
 namespace texsplat::octree {
 
-std::optional<ValueHistograms::Block>
-ValueHistograms::summarize(glm::u64vec3 coordinates, const BlockValues& values,
-                           const BlockMask& nonEmpty) {
-    float lowest = std::numeric_limits<float>::infinity();
-    float highest = -std::numeric_limits<float>::infinity();
-    for (std::size_t v = 0; v < values.size(); ++v) {
-        if (nonEmpty[v]) {
-            lowest = std::min(lowest, values[v]);
-            highest = std::max(highest, values[v]);
-        }
-    }
-    if (!(lowest <= highest)) {
-        return std::nullopt;
-    }
+ValueHistograms::Block ValueHistograms::summarize(glm::u64vec3 coordinates,
+                                                  const BlockValues& values,
+                                                  const BlockMask& nonEmpty, glm::vec2 range) {
+    // A NaN or infinity would make no bin (and an index out of the bins).
+    TEXSPLAT_ASSERT(std::isfinite(range.x) && std::isfinite(range.y) && range.x <= range.y,
+                    "ValueHistograms::summarize: no finite range");
+    const float lowest = range.x;
+    const float highest = range.y;
     Block block;
     block.coordinates = coordinates;
-    block.range = glm::vec2(lowest, highest);
+    block.range = range;
     // In double: the width of a range from -3e38 to 3e38 overflows float.
     const double width = static_cast<double>(highest) - lowest;
     const double binsPerValue = width > 0.0 ? kBins / width : 0.0;

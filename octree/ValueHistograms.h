@@ -8,7 +8,6 @@
 #include <array>
 #include <bitset>
 #include <cstdint>
-#include <optional>
 #include <vector>
 
 namespace texsplat::octree {
@@ -23,8 +22,8 @@ namespace texsplat::octree {
 /// What it is for: a transfer function gives a block's mean classification from it without
 /// reading a voxel (TransferFunction::classifyBlockMeans(), the interactive preview of an edit;
 /// docs/octree.md, "Transfer-function edits"): the sum over the bins of count × the function at
-/// the bin's mean. That is exact where the function is linear over each bin's values (so for a
-/// block of at most kBins distinct values, and for a function linear over the block's range)
+/// the bin's mean. That is exact where the function is linear over each bin's values (so where
+/// each bin holds one distinct value, and for a function linear over the block's range)
 /// and otherwise off by the function's bend within a bin, at most its variation over a
 /// sixteenth of the block's range. 128 bytes per block holding a value.
 class ValueHistograms {
@@ -45,9 +44,10 @@ public:
     };
 
     /// @brief The summary of block @p coordinates from its voxels (x fastest, as the grids read
-    /// blocks): the finite values where @p nonEmpty is set. Nothing when there is none.
-    [[nodiscard]] static std::optional<Block>
-    summarize(glm::u64vec3 coordinates, const BlockValues& values, const BlockMask& nonEmpty);
+    /// blocks): the finite values where @p nonEmpty is set (at least one), whose smallest and
+    /// largest are @p range (found by the caller in the same read).
+    [[nodiscard]] static Block summarize(glm::u64vec3 coordinates, const BlockValues& values,
+                                         const BlockMask& nonEmpty, glm::vec2 range);
 
     /// @brief Keeps @p block (any order; one block once).
     void add(const Block& block) { mBlocks.push_back(block); }

@@ -58,11 +58,17 @@ bool ProgressiveRefinement::refine(std::size_t splatsDrawn, double frameSeconds)
     // nothing left to split: the whole tree (or the scene's own limit) is drawn. The count is the
     // sum over the splat nodes, so with several of them one finished node can end refinement
     // early; then the scene's own settings come a step sooner, never a coarser image. A step
-    // that added nothing ends it too.
+    // that added nothing ends it too. A preview of a transfer-function edit (block means, fewer
+    // than a budget's splats) says neither: the steps after it classify and refine.
     constexpr std::size_t kLargestSplitGrowth = 8;
     const std::size_t budgets = static_cast<std::size_t>(mBudget) * mSplats.size();
-    const bool reachedAll = splatsDrawn + kLargestSplitGrowth * mSplats.size() < budgets ||
-                            (mStage == Stage::Refining && splatsDrawn <= mLastDrawn);
+    const bool previewed = std::any_of(mSplats.begin(), mSplats.end(),
+                                       [](const SplatNode& splat) {
+                                           return splat.node->drewPreview();
+                                       });
+    const bool reachedAll = !previewed &&
+                            (splatsDrawn + kLargestSplitGrowth * mSplats.size() < budgets ||
+                             (mStage == Stage::Refining && splatsDrawn <= mLastDrawn));
     if (!reachedAll && frameSeconds <= kQuickStepSeconds) {
         mStage = Stage::Refining;
         mLastDrawn = splatsDrawn;

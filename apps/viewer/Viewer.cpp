@@ -75,7 +75,7 @@ void reportFrame(int frame, double sinceStart, const ProgressiveRefinement& refi
     if (refinement.budget() > 0) {
         budget = ", budget " + std::to_string(refinement.budget());
     }
-    const char* preview = statistics.builds.previews > 0 ? " (a preview of the edit)" : "";
+    const char* preview = statistics.previewed > 0 ? " (a preview of the edit)" : "";
     std::fprintf(stderr, "frame %d at %.2f s: %s%s, %zu splats%s; %s s\n", frame, sinceStart,
                  ProgressiveRefinement::toString(refinement.stage()), budget.c_str(),
                  static_cast<std::size_t>(statistics.splats), preview, phases.c_str());

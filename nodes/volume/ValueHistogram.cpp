@@ -1,9 +1,10 @@
 #include "nodes/volume/ValueHistogram.h"
 
+#include "nodes/volume/BlockBatches.h"
+
 #include "scenegraph/Assert.h"
 
 #include <glm/geometric.hpp>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <optional>
@@ -39,31 +40,26 @@ octree::ValueHistograms blockValueHistograms(const Grid<float>& grid,
     static_assert(Grid<float>::kBlockEdge ==
                       static_cast<std::int64_t>(octree::ClassifiedGrid::kBlockSize),
                   "the grid's read blocks are the histograms' blocks");
-    constexpr const char* kStep = "summarizing the data's blocks";
-    // Blocks read in parallel between two progress reports (2^19 voxels).
-    constexpr std::size_t kBlocksPerBatch = 1024;
     const std::vector<glm::i64vec3> blocks = grid.occupiedBlocks();
     std::vector<std::optional<octree::ValueHistograms::Block>> batch(
         std::min(blocks.size(), kBlocksPerBatch));
     octree::ValueHistograms histograms;
-    sg::reportWork(progress, kStep, 0.0);
-    for (std::size_t begin = 0; begin < blocks.size(); begin += kBlocksPerBatch) {
-        const std::size_t count = std::min(kBlocksPerBatch, blocks.size() - begin);
-        tbb::parallel_for(std::size_t{0}, count, [&](std::size_t i) {
+    inBlockBatches(
+        blocks, progress, "summarizing the data's blocks",
+        [&](std::size_t slot, const glm::i64vec3& block) {
             typename Grid<float>::VoxelBlock voxels;
-            grid.readBlock(blocks[begin + i], voxels);
-            batch[i] = octree::ValueHistograms::summarize(glm::u64vec3(blocks[begin + i]),
-                                                          voxels.values, voxels.nonEmpty);
-        });
-        for (std::size_t i = 0; i < count; ++i) {
-            if (batch[i]) {
-                histograms.add(*batch[i]);
+            grid.readBlock(block, voxels);
+            const glm::vec2 range = valueRangeOf(voxels);
+            batch[slot] = range.x <= range.y
+                              ? std::optional(octree::ValueHistograms::summarize(
+                                    glm::u64vec3(block), voxels.values, voxels.nonEmpty, range))
+                              : std::nullopt;
+        },
+        [&](std::size_t slot, const glm::i64vec3& /*block*/) {
+            if (batch[slot]) {
+                histograms.add(*batch[slot]);
             }
-        }
-        sg::reportWork(progress, kStep,
-                       static_cast<double>(begin + count) / static_cast<double>(blocks.size()));
-    }
-    sg::reportWork(progress, kStep, 1.0);
+        });
     return histograms;
 }
 

@@ -24,7 +24,7 @@ extern template std::vector<std::uint64_t> valueHistogram(const Grid<glm::vec3>&
 
 /// @brief The value histogram of every 8³ block of `grid` that holds a value
 /// (octree::ValueHistograms): one walk over the grid's occupied blocks, in parallel batches
-/// (oneTBB), in their order for any number of threads. `progress` (when set) hears "summarizing
+/// (inBlockBatches()), in their order for any number of threads. `progress` (when set) hears "summarizing
 /// the data's blocks" and the fraction done, and may cancel.
 /// @throws sg::Cancelled when `progress` cancels.
 octree::ValueHistograms blockValueHistograms(const Grid<float>& grid,

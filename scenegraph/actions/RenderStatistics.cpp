@@ -26,6 +26,7 @@ RenderStatistics& RenderStatistics::operator+=(const RenderStatistics& other) {
     }
     splats += other.splats;
     triangles += other.triangles;
+    previewed += other.previewed;
     memory.keepLarger(other.memory);
     builds += other.builds;
     return *this;

@@ -58,6 +58,7 @@ struct RenderStatistics {
     std::array<double, kRenderPhaseCount> seconds{}; ///< wall seconds per RenderPhase
     std::size_t splats = 0;    ///< splats drawn (instances)
     std::size_t triangles = 0; ///< opaque triangles drawn (splat quads not counted)
+    std::size_t previewed = 0; ///< splat nodes that drew a preview of a transfer-function edit
     FrameMemory memory;        ///< bytes the frame's drawing keeps
     FrameBuilds builds;        ///< what the frame made rather than kept
 

@@ -6,6 +6,7 @@
 
 #include "apps/SceneSetup.h"
 #include "nodes/ScalarSplat.h"
+#include "nodes/TransferFunction.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/gl/GlRenderer.h"
 #include "scenegraph/Observer.h"
@@ -175,6 +176,39 @@ TEST_F(ProgressiveRefinementTest, theScenesOwnBudgetStaysTheLimit) {
     for (const nodes::ScalarSplat* splat : splats) {
         EXPECT_EQ(splat->maxSplats.value(), kSceneBudget);
     }
+}
+
+TEST_F(ProgressiveRefinementTest, aPreviewOfAnEditIsFollowedByRefinementSteps) {
+    // While a control of the transfer function is held, interactive frames draw the edit's
+    // preview: one splat per 8³ block, far fewer than the budget, which says nothing of the cut.
+    const std::vector<nodes::ScalarSplat*> splats = splatNodes(*mRoot);
+    ASSERT_FALSE(splats.empty());
+    sg::SearchAction search;
+    search.setType(nodes::TransferFunction::classType());
+    search.apply(*mRoot);
+    ASSERT_FALSE(search.paths().empty());
+    auto& transfer = static_cast<nodes::TransferFunction&>(*search.paths().front().tail());
+    ProgressiveRefinement refinement(*mRoot, 50000);
+    refinement.beginInteraction();
+    mAction.setInteractive(true);
+    mAction.setPreviewMinimumVoxels(0);
+    render();
+    std::vector<float> opacities = transfer.opacities.values();
+    for (float& opacity : opacities) {
+        opacity *= 0.5f;
+    }
+    transfer.opacities.setValue(opacities);
+    const std::size_t drawn = render();
+    EXPECT_EQ(mAction.statistics().previewed, splats.size());
+    EXPECT_LT(drawn, 50000u);
+    EXPECT_TRUE(splats.front()->drewPreview());
+    EXPECT_FALSE(splats.front()->drewEveryVoxel());
+    EXPECT_TRUE(refinement.refine(drawn)) << "the control is let go: the next step";
+    EXPECT_EQ(refinement.stage(), Stage::Refining);
+    mAction.setInteractive(false);
+    EXPECT_GT(render(), drawn);
+    EXPECT_EQ(mAction.statistics().previewed, 0u);
+    EXPECT_FALSE(splats.front()->drewPreview());
 }
 
 } // namespace

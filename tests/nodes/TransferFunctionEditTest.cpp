@@ -16,6 +16,7 @@
 #include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/ValueHistogram.h"
 #include "octree/ClassifiedGrid.h"
+#include "octree/Octree.h"
 #include "octree/ValueHistograms.h"
 #include "octree/ValueRanges.h"
 #include "scenegraph/Separator.h"
@@ -24,8 +25,10 @@
 #include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <vector>
@@ -245,6 +248,70 @@ TEST_F(TransferFunctionEdit, theBlockMeansFromTheHistogramsAreTheClassifiedBlock
     }
 }
 
+// The same against the octree's block nodes, in a grid whose box is no multiple of 8 blocks,
+// with anisotropic spacing and an origin: a whole block's cell holds its node's mean where its
+// node's splat goes; a block clipped by the grid's upper faces holds its voxels' sum over 512
+// (the same extinction in all) at the whole block's centre.
+TEST_F(TransferFunctionEdit, theBlockMeansAreTheOctreesBlockNodes) {
+    const volume::GridGeometry geometry(glm::i64vec3(70, 64, 67), glm::dvec3(1.0, -2.0, 3.0),
+                                        glm::dvec3(2.0, 1.0, 0.5));
+    volume::SparseScalarGrid grid(geometry);
+    for (std::int64_t z = 0; z < 67; ++z)
+        for (std::int64_t y = 0; y < 64; ++y)
+            for (std::int64_t x = 0; x < 70; ++x) {
+                const double r =
+                    glm::length(glm::dvec3(x, y, z) - glm::dvec3(40.0, 30.0, 45.0)) / 36.0;
+                if (r < 1.0) {
+                    grid.setValue({x, y, z}, std::round(static_cast<float>(1.0 - r) * 8.0f) / 8.0f);
+                }
+            }
+    const auto transfer = ramp({0.0f, 0.3f, 0.3f, 1.0f}, {0.0f, 0.0f, 1.0f, 2.0f});
+    octree::ValueRanges ranges(glm::u64vec3(geometry.dims()));
+    const std::shared_ptr<const octree::ClassifiedGrid> classified =
+        transfer->classifyRecording(grid, ranges);
+    const auto means =
+        transfer->classifyBlockMeans(grid, ranges, volume::blockValueHistograms(grid));
+    EXPECT_EQ(means->dims(), glm::u64vec3(9, 8, 9));
+    const octree::Octree octree(classified);
+    std::size_t whole = 0;
+    std::size_t clipped = 0;
+    const auto compare = [&](const octree::NodeRef& node) {
+        const glm::vec4 cell = means->voxel(node.coord);
+        const octree::OctreeNode summary = octree.node(node);
+        const glm::vec4 mean(summary.meanColor, summary.meanExtinction);
+        const auto voxels = static_cast<float>(octree.voxelCount(node));
+        for (int channel = 0; channel < 4; ++channel) {
+            EXPECT_NEAR(cell[channel] * 512.0f, mean[channel] * voxels,
+                        1e-4f * (1.0f + mean[channel] * voxels));
+        }
+        const glm::dvec3 blockCentre = geometry.origin() + geometry.spacing() *
+                                                               (glm::dvec3(node.coord) * 8.0 + 3.5);
+        EXPECT_EQ(means->toWorld(glm::dvec3(node.coord)), blockCentre);
+        if (octree.voxelCount(node) == 512) {
+            EXPECT_EQ(octree.center(node), blockCentre);
+            ++whole;
+        } else {
+            ++clipped;
+        }
+    };
+    const std::function<void(const octree::NodeRef&)> walk = [&](const octree::NodeRef& node) {
+        if (node.level == octree::ClassifiedGrid::kBlockLevel) {
+            compare(node);
+            return;
+        }
+        std::array<octree::NodeRef, 8> children;
+        const int count = octree.children(node, children);
+        for (int c = 0; c < count; ++c) {
+            walk(children[static_cast<std::size_t>(c)]);
+        }
+    };
+    ASSERT_FALSE(octree.isEmpty());
+    walk(octree.root());
+    EXPECT_GT(whole, 50u);
+    EXPECT_GT(clipped, 10u);
+    EXPECT_EQ(whole + clipped, means->nonEmptyVoxelCount());
+}
+
 struct Rendered {
     image::Image image;
     sg::FrameBuilds builds;
@@ -370,6 +437,38 @@ TEST_F(TransferFunctionEdit, anInteractiveFrameAfterAnEditPreviewsItWithoutClass
         EXPECT_EQ(nextPreview.builds.valueHistograms, 0u) << "made once per grid";
         EXPECT_GT(differingPixels(nextPreview.image, preview.image), 100);
     }
+}
+
+// A preview follows the function the frame has, whichever node that is, and keeps no grid alive
+// once the volume has another.
+TEST_F(TransferFunctionEdit, aPreviewFollowsTheCurrentFunctionAndGrid) {
+    auto data = VolumeData::create();
+    std::shared_ptr<volume::SparseScalarGrid> first = twoBalls();
+    data->setGrid(volume::ScalarGridPtr(first));
+    const auto transfer = ramp({0.0f, 1.0f}, {0.0f, 2.0f});
+    auto group = sg::Separator::create();
+    group->addChild(data);
+    group->addChild(transfer);
+    group->addChild(TextureSplat::create());
+    const sg::Node::Ptr root = render::framedScene(group, 72.0f / 64.0f);
+    renderFrame(*root);
+    // Another TransferFunction node in the same place: previewed, and its edits are heard.
+    const auto other = ramp({0.0f, 0.5f, 1.0f}, {0.0f, 0.0f, 3.0f});
+    group->replaceChild(1, other);
+    const Rendered switched = renderFrame(*root, true);
+    EXPECT_EQ(switched.builds.previews, 1u);
+    other->opacities.setValue({0.0f, 0.0f, 1.0f});
+    const Rendered edited = renderFrame(*root, true);
+    EXPECT_EQ(edited.builds.previews, 1u) << "an edit of the new node makes a new preview";
+    EXPECT_GT(differingPixels(edited.image, switched.image), 100);
+    // A new grid: classified exactly (nothing to preview it from yet); the old one is let go.
+    const std::weak_ptr<volume::SparseScalarGrid> firstGrid = first;
+    data->setGrid(volume::ScalarGridPtr(twoBalls()));
+    first.reset();
+    const Rendered reloaded = renderFrame(*root, true);
+    EXPECT_EQ(reloaded.builds.previews, 0u);
+    EXPECT_EQ(reloaded.builds.valueRanges, 1u);
+    EXPECT_TRUE(firstGrid.expired()) << "no preview or cache holds the old grid";
 }
 
 // A grid that classifies in milliseconds is not previewed: the viewer's default threshold.

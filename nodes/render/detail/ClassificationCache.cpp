@@ -36,6 +36,9 @@ ClassificationCache::classified(const ClassificationInputs& inputs,
     if (!mClassified || inputs != mInputs || &transfer != mTransfer || mTransferChanged) {
         mOctree.reset();
         mClassified.reset();
+        // A preview is drawn only while no classification by the function as it is exists.
+        mPreviewOctree.reset();
+        mPreview.reset();
         observe(&transfer);
         mClassified = classify();
         ++mBuilds.classifications;
@@ -53,15 +56,12 @@ ClassificationCache::preview(const volume::ScalarGridPtr& grid,
     if (current || !mValueRanges || grid != mValueRangesGrid) {
         return nullptr;
     }
-    if (&transfer != mTransfer) {
-        // Another function: the classification is not by it (observe() makes the preview stale).
-        observe(&transfer);
-        mTransferChanged = true;
-    }
-    // The classification by an earlier function serves no frame any more.
+    // Another function is observed from now on (which makes the preview stale); the
+    // classification by an earlier function serves no frame any more.
+    observe(&transfer);
     mOctree.reset();
     mClassified.reset();
-    if (!mPreview || mPreviewStale || grid != mPreviewGrid) {
+    if (!mPreview || mPreviewStale) {
         mPreviewOctree.reset();
         mPreview.reset();
         if (!mHistograms) {
@@ -71,7 +71,6 @@ ClassificationCache::preview(const volume::ScalarGridPtr& grid,
             ++mBuilds.valueHistograms;
         }
         mPreview = transfer.classifyBlockMeans(*grid, *mValueRanges, *mHistograms);
-        mPreviewGrid = grid;
         mPreviewStale = false;
         ++mBuilds.previews;
     }

@@ -90,8 +90,9 @@ public:
     /// cancelled (the action's, set by the splat node each frame).
     void setWorkProgress(sg::WorkProgress progress) { mProgress = std::move(progress); }
 
-    /// Bytes of the value ranges and histograms held (0 before a scalar grid was classified).
-    std::uint64_t valueRangeBytes() const {
+    /// Bytes of the grid's value ranges and histograms held (0 before a scalar grid was
+    /// classified).
+    std::uint64_t dataSummaryBytes() const {
         return (mValueRanges ? mValueRanges->memoryBytes() : 0) +
                (mHistograms ? mHistograms->memoryBytes() : 0);
     }
@@ -117,8 +118,7 @@ private:
     volume::ScalarGridPtr mValueRangesGrid;
     std::unique_ptr<octree::ValueRanges> mValueRanges;
     std::unique_ptr<octree::ValueHistograms> mHistograms;
-    std::shared_ptr<const octree::ClassifiedGrid> mPreview;
-    volume::ScalarGridPtr mPreviewGrid; // the grid mPreview previews
+    std::shared_ptr<const octree::ClassifiedGrid> mPreview; // of mValueRangesGrid
     std::unique_ptr<octree::Octree> mPreviewOctree;
     Builds mBuilds;
     sg::WorkProgress mProgress;
