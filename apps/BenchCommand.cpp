@@ -56,6 +56,7 @@ struct BenchArguments {
     bool budgetsGiven = false;
     std::string budgets = "1,0.5,0.2,0.1,0.05,0.02";
     int transferEdit = 0; // splats of the budgeted frame after an edit; 0: not asked
+    std::string images;   // with --transfer-edit: the folder its frames are written to
     Framing framing;
 };
 
@@ -163,6 +164,10 @@ struct CheckedBench {
 
 CheckedBench checkBenchOptions(const BenchArguments& arguments) {
     const bool isScene = !arguments.scene.empty();
+    if (!arguments.images.empty() && arguments.transferEdit == 0) {
+        throw DataError("--images: only with --transfer-edit (it writes the frames after the "
+                        "edits)");
+    }
     bench::BenchOptions options;
     std::vector<double> budgets;
     if (isScene) {
@@ -215,9 +220,13 @@ CheckedBench checkBenchOptions(const BenchArguments& arguments) {
 // `bench SCENE --transfer-edit N`: the frames after transfer-function edits, on the CPU.
 void runTransferEditBench(const BenchArguments& arguments) {
     const glm::ivec2 size = parseSizes(arguments.sizes).front();
+    if (!arguments.images.empty()) {
+        requireWritableFile(bench::transferEditImagePath(arguments.images, "exact"), "the images");
+    }
     const std::vector<bench::TransferEditTime> rows = bench::measureTransferEdit(
         sceneToMeasure(arguments), size,
-        {0, static_cast<std::uint64_t>(arguments.transferEdit)}, arguments.threads);
+        {0, static_cast<std::uint64_t>(arguments.transferEdit)}, arguments.threads,
+        arguments.images);
     std::printf("texsplat bench --transfer-edit: %s, %dx%d, %s; wall time of the frame after "
                 "the edit (loading not counted)\n",
                 arguments.scene.c_str(), size.x, size.y,
@@ -352,6 +361,11 @@ void addBenchCommand(CLI::App& app, int& exitCode, CommandMode mode) {
                      "value ranges (CPU backend)")
         ->check(CLI::Range(1, 2000000000))
         ->type_name("SPLATS");
+    command
+        ->add_option("--images", arguments->images,
+                     "With --transfer-edit: write the exact frame and the interactive preview "
+                     "after each edit into this folder as PNGs, for a look")
+        ->type_name("FOLDER");
     addViewOptions(*command, arguments->framing);
     command->callback([arguments, command, mode, &exitCode] {
         arguments->datasetGiven = command->count("--dataset") > 0;

@@ -4,6 +4,7 @@
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 #include "nodes/image/ImageComparison.h"
+#include "nodes/image/ImageIo.h"
 #include "nodes/volume/ValueHistogram.h"
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/cpu/CpuRenderer.h"
@@ -38,6 +39,7 @@ template <class T> std::vector<T*> nodesOf(sg::Node& root) {
 
 struct Edit {
     const char* name;
+    const char* fileName; // in the names of the images written
     void (*apply)(nodes::TransferFunction&);
 };
 
@@ -55,8 +57,14 @@ void raiseRangeMinimum(nodes::TransferFunction& transfer) {
     transfer.range.setValue(glm::vec2(range.x + 0.3f * (range.y - range.x), range.y));
 }
 
-constexpr Edit kEdits[] = {{"opacities x 0.5", halveOpacities},
-                           {"range from 30 %", raiseRangeMinimum}};
+constexpr Edit kEdits[] = {{"opacities x 0.5", "opacities-half", halveOpacities},
+                           {"range from 30 %", "range-from-30", raiseRangeMinimum}};
+
+std::string imagePath(const std::string& folder, const Edit& edit, std::uint64_t budget,
+                      const std::string& kind) {
+    return folder + "/" + edit.fileName + "-" + (budget == 0 ? "full" : std::to_string(budget)) +
+           "-" + kind + ".png";
+}
 
 // A CPU frame of `root`: its wall time less loading, its statistics and image.
 struct Timed {
@@ -67,7 +75,8 @@ struct Timed {
 
 Timed timeFrame(sg::Node& root, glm::ivec2 size, const render::cpu::CpuRenderer& renderer,
                 bool interactive = false) {
-    render::FrameAction action(size.x, size.y);
+    // Over opaque black, as `texsplat render` draws by default (the images written show it).
+    render::FrameAction action(size.x, size.y, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     action.setInteractive(interactive);
     action.setPreviewMinimumVoxels(0); // the preview is measured whatever the grid's size
     const Clock::time_point start = Clock::now();
@@ -98,7 +107,7 @@ template <class T> T& firstOf(sg::Node& root) {
 
 std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, glm::ivec2 size,
                                                   const std::vector<std::uint64_t>& maxSplats,
-                                                  int threads) {
+                                                  int threads, const std::string& imageFolder) {
     const render::cpu::CpuRenderer renderer(threads);
     const std::vector<nodes::ScalarSplat*> splatNodes = nodesOf<nodes::ScalarSplat>(*scene);
     nodes::TransferFunction& transfer = firstOf<nodes::TransferFunction>(*scene);
@@ -139,6 +148,10 @@ std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, gl
             TransferEditTime row;
             row.previewSeconds = preview.seconds;
             row.previewSplats = preview.statistics.splats;
+            if (!imageFolder.empty()) {
+                image::writeImage(edited.image, imagePath(imageFolder, edit, budget, "exact"));
+                image::writeImage(preview.image, imagePath(imageFolder, edit, budget, "preview"));
+            }
             if (budget == 0) {
                 fullResolution[e] = edited.image;
             }
@@ -175,6 +188,10 @@ std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, gl
         }
     }
     return rows;
+}
+
+std::string transferEditImagePath(const std::string& imageFolder, const std::string& kind) {
+    return imagePath(imageFolder, kEdits[0], 0, kind);
 }
 
 std::string transferEditTable(const std::vector<TransferEditTime>& rows) {

@@ -45,11 +45,19 @@ struct TransferEditTime {
 /// frame right after the edit, its preview (timed before the exact frame, which it does not
 /// make faster: a preview classifies nothing; the grid's block value histograms, made for the
 /// first preview, are made before the first row and timed on their own).
-/// @throws DataError when the scene has no TransferFunction, VolumeData or splat node; what
-/// rendering throws.
+/// With an `imageFolder`, the two frames after each edit are written there as PNGs for a look:
+/// `<edit>-<budget>-exact.png` and `<edit>-<budget>-preview.png`, `<edit>` being
+/// `opacities-half` or `range-from-30`, `<budget>` `full` or the number.
+/// @throws DataError when the scene has no TransferFunction, VolumeData or splat node; IoError
+/// when an image cannot be written; what rendering throws.
 std::vector<TransferEditTime> measureTransferEdit(const sg::Node::Ptr& scene, glm::ivec2 size,
                                                   const std::vector<std::uint64_t>& maxSplats,
-                                                  int threads);
+                                                  int threads,
+                                                  const std::string& imageFolder = {});
+
+/// @brief Where measureTransferEdit() writes the `kind` ("exact" or "preview") frame after the
+/// first edit at full resolution in `imageFolder`: for a check before the long run.
+std::string transferEditImagePath(const std::string& imageFolder, const std::string& kind);
 
 /// @brief measureTransferEdit()'s rows as a text table.
 std::string transferEditTable(const std::vector<TransferEditTime>& rows);

@@ -288,6 +288,31 @@ TEST_F(BenchCommandTest, timesTheFrameAfterATransferFunctionEditAgainstAFreshSce
         EXPECT_EQ(lines[row + 2].rfind(starts[row], 0), 0u) << lines[row + 2];
         EXPECT_EQ(lines[row + 2].back(), '0') << lines[row + 2];
     }
+    // --images writes the frames it timed, exact and preview, after each edit at each budget.
+    const auto withImages = runTexsplat("bench " + scene +
+                                        " --size 32x32 --transfer-edit 200 --threads 1 --images " +
+                                        path(""));
+    ASSERT_EQ(withImages.exitCode, 0) << withImages.standardError;
+    for (const std::string edit : {"opacities-half", "range-from-30"}) {
+        for (const std::string budget : {"full", "200"}) {
+            for (const std::string kind : {"exact", "preview"}) {
+                const std::string image = path(edit + "-" + budget + "-" + kind + ".png");
+                EXPECT_TRUE(std::filesystem::is_regular_file(image)) << image;
+            }
+        }
+    }
+    const auto noFolder = runTexsplat("bench " + scene + " --transfer-edit 200 --images " +
+                                      path("missing"));
+    EXPECT_EQ(noFolder.exitCode, 1);
+    EXPECT_NE(noFolder.standardError.find("cannot write the images: folder '" + path("missing") +
+                                          "' does not exist"),
+              std::string::npos)
+        << noFolder.standardError;
+    const auto noEditForImages = runTexsplat("bench " + scene + " --images " + path(""));
+    EXPECT_EQ(noEditForImages.exitCode, 1);
+    EXPECT_EQ(noEditForImages.standardError,
+              "texsplat: error: --images: only with --transfer-edit (it writes the frames after "
+              "the edits)\n");
     auto noEdit = runTexsplat("bench --transfer-edit 200");
     EXPECT_EQ(noEdit.exitCode, 1);
     EXPECT_EQ(noEdit.standardError, "texsplat: error: --transfer-edit: only with a SCENE (its "
