@@ -316,9 +316,6 @@ classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
                const volume::ScalarGrid& grid, const sg::WorkProgress& progress,
                octree::ValueRanges* recording, IsWanted&& isWanted) {
     using ClassifiedBlock = std::array<glm::vec4, octree::ClassifiedGrid::kBlockVoxels>;
-    static_assert(volume::ScalarGrid::kBlockEdge ==
-                      static_cast<std::int64_t>(octree::ClassifiedGrid::kBlockSize),
-                  "the grid's read blocks are the classified grid's blocks");
     const volume::GridGeometry& geometry = grid.geometry();
     auto classified = std::make_shared<octree::ClassifiedGrid>(
         glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
@@ -397,11 +394,9 @@ TransferFunction::classifyBlockMeans(const volume::ScalarGrid& grid,
     const DataScale scale = scaleOf(*checked, grid, &ranges);
     const volume::GridGeometry& geometry = grid.geometry();
     const glm::dvec3 spacing = geometry.spacing();
-    const glm::u64vec3 blockDims =
-        (glm::u64vec3(geometry.dims()) + (octree::ClassifiedGrid::kBlockSize - 1)) /
-        octree::ClassifiedGrid::kBlockSize;
     auto means = std::make_shared<octree::ClassifiedGrid>(
-        blockDims, spacing * kBlockSize, geometry.origin() + spacing * ((kBlockSize - 1.0) / 2.0));
+        octree::ClassifiedGrid::boxBlockDims(glm::u64vec3(geometry.dims())), spacing * kBlockSize,
+        geometry.origin() + spacing * ((kBlockSize - 1.0) / 2.0));
     const std::vector<octree::ValueHistograms::Block>& blocks = histograms.blocks();
     std::vector<glm::vec4> blockMeans(blocks.size());
     tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t b) {

@@ -34,7 +34,7 @@ bool isFinite(glm::dvec3 v) {
 } // namespace
 
 ClassifiedGrid::ClassifiedGrid(glm::u64vec3 dims, glm::dvec3 spacing, glm::dvec3 origin)
-    : mDims(dims), mBlockDims((dims + (kBlockSize - 1)) / kBlockSize), mSpacing(spacing),
+    : mDims(dims), mBlockDims(boxBlockDims(dims)), mSpacing(spacing),
       mOrigin(origin) {
     if (dims.x == 0 || dims.y == 0 || dims.z == 0) {
         throw DataError("ClassifiedGrid: dimensions must be positive, got " + dimsText(dims));
@@ -178,9 +178,12 @@ void ClassifiedGrid::setVector(glm::u64vec3 ijk, glm::vec3 vector) {
     }
 }
 
+glm::u64vec3 ClassifiedGrid::boxBlockDims(glm::u64vec3 dims) {
+    return dims / kBlockSize + glm::u64vec3(glm::notEqual(dims % kBlockSize, glm::u64vec3(0)));
+}
+
 std::uint64_t ClassifiedGrid::boxBlockCount(glm::u64vec3 dims) {
-    const glm::u64vec3 blocks = dims / kBlockSize + glm::u64vec3(glm::notEqual(
-                                                        dims % kBlockSize, glm::u64vec3(0)));
+    const glm::u64vec3 blocks = boxBlockDims(dims);
     return byteProduct(byteProduct(blocks.x, blocks.y), blocks.z);
 }
 

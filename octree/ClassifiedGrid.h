@@ -186,6 +186,9 @@ public:
     /// @brief Bytes held: the block table and the allocated blocks (with their vectors).
     [[nodiscard]] std::uint64_t memoryBytes() const;
 
+    /// @brief Blocks along x, y, z of a box of @p dims voxels (rounded up, without overflow).
+    [[nodiscard]] static glm::u64vec3 boxBlockDims(glm::u64vec3 dims);
+
     /// @brief Number of blocks of a box of @p dims voxels, saturating at the largest uint64.
     [[nodiscard]] static std::uint64_t boxBlockCount(glm::u64vec3 dims);
 

@@ -12,7 +12,7 @@ namespace texsplat::octree {
 
 ValueRanges::ValueRanges(glm::u64vec3 dims)
     : mDims(dims),
-      mBlockDims((dims + (ClassifiedGrid::kBlockSize - 1)) / ClassifiedGrid::kBlockSize) {
+      mBlockDims(ClassifiedGrid::boxBlockDims(dims)) {
     const std::uint64_t blocks = ClassifiedGrid::boxBlockCount(dims);
     if (blocks > std::numeric_limits<std::size_t>::max() / sizeof(std::uint32_t)) {
         throw DataError("ValueRanges: " + std::to_string(blocks) +

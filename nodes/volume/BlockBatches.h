@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "octree/ClassifiedGrid.h"
 #include "scenegraph/WorkProgress.h"
 
 #include <glm/vec2.hpp>
@@ -12,6 +13,11 @@
 #include <vector>
 
 namespace texsplat::volume {
+
+// The blocks a grid reads are the classified grid's, the octree's and the value summaries'.
+static_assert(Grid<float>::kBlockEdge ==
+                  static_cast<std::int64_t>(octree::ClassifiedGrid::kBlockSize),
+              "the grid's read blocks are the classified grid's blocks");
 
 /// @brief Blocks worked on in parallel between two progress reports: 2^19 voxels, and what the
 /// callers keep per block of a batch (8 MiB of classified blocks) until they take it.

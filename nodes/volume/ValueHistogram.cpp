@@ -37,9 +37,6 @@ template std::vector<std::uint64_t> valueHistogram(const Grid<glm::vec3>&, doubl
 
 octree::ValueHistograms blockValueHistograms(const Grid<float>& grid,
                                              const sg::WorkProgress& progress) {
-    static_assert(Grid<float>::kBlockEdge ==
-                      static_cast<std::int64_t>(octree::ClassifiedGrid::kBlockSize),
-                  "the grid's read blocks are the histograms' blocks");
     const std::vector<glm::i64vec3> blocks = grid.occupiedBlocks();
     std::vector<std::optional<octree::ValueHistograms::Block>> batch(
         std::min(blocks.size(), kBlocksPerBatch));
@@ -47,7 +44,7 @@ octree::ValueHistograms blockValueHistograms(const Grid<float>& grid,
     inBlockBatches(
         blocks, progress, "summarizing the data's blocks",
         [&](std::size_t slot, const glm::i64vec3& block) {
-            typename Grid<float>::VoxelBlock voxels;
+            Grid<float>::VoxelBlock voxels;
             grid.readBlock(block, voxels);
             const glm::vec2 range = valueRangeOf(voxels);
             batch[slot] = range.x <= range.y

@@ -4,14 +4,23 @@
 #include "nodes/volume/ValueHistogram.h"
 
 namespace texsplat::render::detail {
+namespace {
+
+// What a scalar grid's classification reads besides the transfer function.
+ClassificationInputs scalarInputs(const volume::ScalarGridPtr& grid) {
+    ClassificationInputs inputs;
+    inputs.grids.push_back(grid);
+    return inputs;
+}
+
+} // namespace
 
 ClassificationCache::~ClassificationCache() { observe(nullptr); }
 
 std::shared_ptr<const octree::ClassifiedGrid>
 ClassificationCache::classified(const volume::ScalarGridPtr& grid,
                                 const nodes::TransferFunction& transfer) {
-    ClassificationInputs inputs;
-    inputs.grids.push_back(grid);
+    const ClassificationInputs inputs = scalarInputs(grid);
     return classified(inputs, transfer, [&]() -> std::shared_ptr<const octree::ClassifiedGrid> {
         if (mValueRanges && grid == mValueRangesGrid) {
             return transfer.classify(*grid, *mValueRanges, mProgress);
@@ -33,7 +42,7 @@ ClassificationCache::classified(const volume::ScalarGridPtr& grid,
 std::shared_ptr<const octree::ClassifiedGrid>
 ClassificationCache::classified(const ClassificationInputs& inputs,
                                 const nodes::TransferFunction& transfer, const Classify& classify) {
-    if (!mClassified || inputs != mInputs || &transfer != mTransfer || mTransferChanged) {
+    if (!isCurrent(inputs, transfer)) {
         mOctree.reset();
         mClassified.reset();
         // A preview is drawn only while no classification by the function as it is exists.
@@ -51,9 +60,8 @@ ClassificationCache::classified(const ClassificationInputs& inputs,
 std::shared_ptr<const octree::ClassifiedGrid>
 ClassificationCache::preview(const volume::ScalarGridPtr& grid,
                              const nodes::TransferFunction& transfer) {
-    const bool current = mClassified && mInputs.grids.size() == 1 && mInputs.grids[0] == grid &&
-                         &transfer == mTransfer && !mTransferChanged;
-    if (current || !mValueRanges || grid != mValueRangesGrid) {
+    const ClassificationInputs inputs = scalarInputs(grid);
+    if (isCurrent(inputs, transfer) || !mValueRanges || grid != mValueRangesGrid) {
         return nullptr;
     }
     // Another function is observed from now on (which makes the preview stale); the
@@ -82,6 +90,11 @@ const octree::Octree& ClassificationCache::previewOctree() {
         mPreviewOctree = std::make_unique<octree::Octree>(mPreview, mProgress);
     }
     return *mPreviewOctree;
+}
+
+bool ClassificationCache::isCurrent(const ClassificationInputs& inputs,
+                                    const nodes::TransferFunction& transfer) const {
+    return mClassified && inputs == mInputs && &transfer == mTransfer && !mTransferChanged;
 }
 
 void ClassificationCache::invalidate() {

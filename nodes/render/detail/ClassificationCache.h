@@ -107,6 +107,9 @@ public:
     void subjectDestroyed(sg::Notifier& subject) override;
 
 private:
+    // Whether the classification held is the one of `inputs` by `transfer` as it is now.
+    bool isCurrent(const ClassificationInputs& inputs,
+                   const nodes::TransferFunction& transfer) const;
     void observe(const nodes::TransferFunction* transfer);
 
     ClassificationInputs mInputs;
