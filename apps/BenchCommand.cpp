@@ -7,6 +7,7 @@
 
 #include "nodes/bench/BenchReport.h"
 #include "nodes/bench/BenchRunner.h"
+#include "nodes/bench/LegibilityBench.h"
 #include "nodes/bench/TransferEditBench.h"
 #include "nodes/render/BackendChoice.h"
 #include "nodes/render/cpu/CpuRenderer.h"
@@ -55,8 +56,9 @@ struct BenchArguments {
     bool backendGiven = false;
     bool budgetsGiven = false;
     std::string budgets = "1,0.5,0.2,0.1,0.05,0.02";
-    int transferEdit = 0; // splats of the budgeted frame after an edit; 0: not asked
-    std::string images;   // with --transfer-edit: the folder its frames are written to
+    int transferEdit = 0;    // splats of the budgeted frame after an edit; 0: not asked
+    std::string images;      // with --transfer-edit or --legibility: the folder its frames go to
+    bool legibility = false; // the legibility of vector marks instead of error against time
     Framing framing;
 };
 
@@ -164,9 +166,14 @@ struct CheckedBench {
 
 CheckedBench checkBenchOptions(const BenchArguments& arguments) {
     const bool isScene = !arguments.scene.empty();
-    if (!arguments.images.empty() && arguments.transferEdit == 0) {
-        throw DataError("--images: only with --transfer-edit (it writes the frames after the "
-                        "edits)");
+    if (!arguments.images.empty() && arguments.transferEdit == 0 && !arguments.legibility) {
+        throw DataError("--images: only with --transfer-edit or --legibility (it writes the "
+                        "frames they measure)");
+    }
+    if (arguments.legibility && (isScene || arguments.transferEdit > 0 || arguments.datasetGiven ||
+                                 arguments.methodGiven || arguments.budgetsGiven)) {
+        throw DataError("--legibility: draws its own fields (no SCENE, --dataset, --method, "
+                        "--budgets or --transfer-edit)");
     }
     bench::BenchOptions options;
     std::vector<double> budgets;
@@ -234,6 +241,54 @@ void runTransferEditBench(const BenchArguments& arguments) {
     std::printf("%s", bench::transferEditTable(rows).c_str());
 }
 
+// The backends of a comma-separated list, each once in the order given (auto resolves as
+// `render` does), and the GL context when one of them is GL.
+std::pair<std::vector<render::Backend>, std::shared_ptr<gl::EglContext>>
+resolveBackends(const std::string& names) {
+    std::vector<render::Backend> backends;
+    std::shared_ptr<gl::EglContext> context;
+    for (const std::string& name : splitList(names)) {
+        render::BackendChoice choice =
+            render::BackendChoice::resolve(render::parseBackendRequest(name));
+        if (std::find(backends.begin(), backends.end(), choice.backend) != backends.end()) {
+            continue;
+        }
+        backends.push_back(choice.backend);
+        if (choice.context && !context) {
+            context = choice.context;
+        }
+    }
+    if (backends.empty()) {
+        throw DataError("--backend: expected cpu, gl or auto (or a list, e.g. cpu,gl), got ''");
+    }
+    return {backends, context};
+}
+
+// `bench --legibility`: how well vector marks show known flows, per zoom, beside a line integral
+// convolution of the same flow.
+void runLegibilityBench(const BenchArguments& arguments) {
+    const auto [backends, context] = resolveBackends(arguments.backends);
+    if (!arguments.images.empty()) {
+        std::filesystem::create_directories(arguments.images);
+    }
+    std::vector<bench::LegibilityResult> rows;
+    for (const bench::LegibilityCase& what : bench::legibilityCases(backends)) {
+        bench::LegibilityOptions options;
+        options.repeat = arguments.repeat;
+        if (!arguments.images.empty()) {
+            options.imagePath = arguments.images + "/" + bench::legibilityImageName(what);
+        }
+        rows.push_back(bench::measureLegibility(what, options));
+        std::fprintf(stderr, "%s", bench::legibilityTable({rows.back()}).c_str());
+    }
+    std::printf("texsplat bench --legibility: median and 90th percentile of the angle between the "
+                "image's streaks (structure tensor of central differences, smoothed over half a "
+                "voxel) and the flow, beside a line integral convolution of the same flow; skew "
+                "> 0: the marks point downstream; frame: median of %d\n",
+                arguments.repeat);
+    std::printf("%s", bench::legibilityTable(rows).c_str());
+}
+
 void runBench(const BenchArguments& arguments, CheckedBench checked) {
     setMemoryLimit(checked.memoryLimit);
     const ThreadLimit threadLimit(arguments.threads);
@@ -241,30 +296,17 @@ void runBench(const BenchArguments& arguments, CheckedBench checked) {
         runTransferEditBench(arguments);
         return;
     }
+    if (arguments.legibility) {
+        runLegibilityBench(arguments);
+        return;
+    }
     const bool isScene = !arguments.scene.empty();
     bench::BenchOptions& options = checked.options;
     const std::vector<double>& budgets = checked.budgets;
-
-    // Each backend asked for once, in the order given; auto resolves as `render` does.
-    std::shared_ptr<gl::EglContext> context;
-    options.backends.clear();
     // A scene is measured on the CPU: unless asked otherwise, not on the GL device auto finds.
-    const std::string backends = isScene && !arguments.backendGiven ? "cpu" : arguments.backends;
-    for (const std::string& name : splitList(backends)) {
-        render::BackendChoice choice =
-            render::BackendChoice::resolve(render::parseBackendRequest(name));
-        if (std::find(options.backends.begin(), options.backends.end(), choice.backend) !=
-            options.backends.end()) {
-            continue;
-        }
-        options.backends.push_back(choice.backend);
-        if (choice.context && !context) {
-            context = choice.context;
-        }
-    }
-    if (options.backends.empty()) {
-        throw DataError("--backend: expected cpu, gl or auto (or a list, e.g. cpu,gl), got ''");
-    }
+    auto [backends, context] =
+        resolveBackends(isScene && !arguments.backendGiven ? "cpu" : arguments.backends);
+    options.backends = backends;
     options.cpuThreads = arguments.threads;
     const std::string devices = deviceSummary(options, context.get());
     bench::BenchRunner runner(options);
@@ -364,8 +406,13 @@ void addBenchCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     command
         ->add_option("--images", arguments->images,
                      "With --transfer-edit: write the exact frame and the interactive preview "
-                     "after each edit into this folder as PNGs, for a look")
+                     "after each edit into this folder as PNGs, for a look; with --legibility, "
+                     "each case's image")
         ->type_name("FOLDER");
+    command->add_flag("--legibility", arguments->legibility,
+                      "Measure how well vector marks show known flows (a vortex, a saddle, "
+                      "uniform fields) at 4 to 16 pixels per voxel, beside a line integral "
+                      "convolution of the same flow");
     addViewOptions(*command, arguments->framing);
     command->callback([arguments, command, mode, &exitCode] {
         arguments->datasetGiven = command->count("--dataset") > 0;

@@ -7,7 +7,6 @@
 #include "nodes/kernel/KernelOptimizer.h"
 #include "nodes/kernel/KernelPlot.h"
 #include "nodes/kernel/LatticeAnalysis.h"
-#include "nodes/kernel/VectorSplatTable.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
 #include "scenegraph/fields/ValueFormat.h"
@@ -51,11 +50,6 @@ struct KernelOptions {
     int resolution = 64;
     double extent = FootprintTexture::kPaperExtent;
     std::string plot;
-    std::string vectorTable;
-    std::string markType = "particles";
-    int rows = VectorTableParameters{}.rows;
-    int columns = VectorTableParameters{}.columns;
-    std::uint32_t seed = VectorTableParameters{}.seed;
 };
 
 // "a,b,c" → numbers; the option name starts the message of every error, as main prints it.
@@ -365,49 +359,8 @@ void checkOptions(const KernelOptions& options) {
         requireFileExtension(options.plot, {".svg"}, "plot");
 }
 
-// The vector splat table --vector-table asks for, each option checked on its own so that the
-// error names it; then the whole set (its size).
-VectorTableParameters vectorTableParameters(const KernelOptions& options) {
-    VectorTableParameters parameters;
-    const auto set = [&](const char* option, auto assign) {
-        withOption(option, [&] {
-            VectorTableParameters alone;
-            assign(alone);
-            VectorSplatTable::checkParameters(alone);
-        });
-        assign(parameters);
-    };
-    set("--rows", [&](VectorTableParameters& p) { p.rows = options.rows; });
-    set("--columns", [&](VectorTableParameters& p) { p.columns = options.columns; });
-    set("--resolution", [&](VectorTableParameters& p) { p.resolution = options.resolution; });
-    set("--extent",
-        [&](VectorTableParameters& p) { p.splatExtent = static_cast<float>(options.extent); });
-    parameters.markType =
-        options.markType == "scratches" ? MarkType::Scratches : MarkType::Particles;
-    parameters.seed = options.seed;
-    VectorSplatTable::checkParameters(parameters);
-    return parameters;
-}
-
-// --vector-table: the paper's figure 3 as one image, and one summary line. Every option and the
-// path are checked before the table is made.
-void writeVectorTable(const KernelOptions& options) {
-    const VectorTableParameters parameters = vectorTableParameters(options);
-    VectorSplatTable::checkImagePath(options.vectorTable);
-    const VectorSplatTable table(parameters);
-    table.writeImage(options.vectorTable);
-    std::printf("vector table %s: %d rows x %d columns of %dx%d texels, %s, seed %u\n",
-                options.vectorTable.c_str(), table.rows(), table.columns(), table.resolution(),
-                table.resolution(), options.markType.c_str(),
-                static_cast<unsigned>(parameters.seed));
-}
-
-// Writes the vector table, or the kernel's outputs after checkOptions().
+// Writes the kernel's outputs after checkOptions().
 void runKernelCommand(const KernelOptions& options) {
-    if (!options.vectorTable.empty()) {
-        writeVectorTable(options);
-        return;
-    }
     const auto started = std::chrono::steady_clock::now();
     const NamedKernel named = makeKernel(options);
     const double seconds =
@@ -439,65 +392,36 @@ void addKernelCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto options = std::make_shared<KernelOptions>();
     CLI::App* command = app.add_subcommand(
         "kernel", "The reconstruction kernel (Crawfis & Max 1993): the paper's table, the "
-                  "optimizer, footprint textures, plots and the vector splat table");
-    CLI::Option* jsonOption =
-        command->add_flag("--json", options->json, "Print one JSON object for the chosen kernel");
-    CLI::Option* kernelOption =
-        command->add_option("--kernel", options->kernel, "Kernel to analyse (default paper)")
-            ->check(CLI::IsMember({"paper", "optimized", "gaussian"}));
-    CLI::Option* optimizeOption =
-        command->add_flag("--optimize", options->optimize,
-                          "Run the optimizer; print its path (progress on stderr) and result");
-    CLI::Option* startOption = command->add_option(
-        "--start", options->start, "Optimizer start s,t,b,d (a = 1; default 0.9,1.55,-2,0.12)");
-    CLI::Option* supportOption = command->add_option(
+                  "optimizer, footprint textures and plots");
+    command->add_flag("--json", options->json, "Print one JSON object for the chosen kernel");
+    command->add_option("--kernel", options->kernel, "Kernel to analyse (default paper)")
+        ->check(CLI::IsMember({"paper", "optimized", "gaussian"}));
+    command->add_flag("--optimize", options->optimize,
+                      "Run the optimizer; print its path (progress on stderr) and result");
+    command->add_option("--start", options->start,
+                        "Optimizer start s,t,b,d (a = 1; default 0.9,1.55,-2,0.12)");
+    command->add_option(
         "--support", options->support,
         "Optimize for this fixed support t: more than half the cell diagonal, at most " +
             number(LatticeAnalysis::kMaxSupportInCellSizes) +
             " times the cube root of the cell volume");
-    CLI::Option* spacingOption = command->add_option(
-        "--spacing", options->spacing,
-        "Voxel spacing sx,sy,sz of a non-cubic lattice, the largest at most " +
-            number(LatticeAnalysis::kMaxSpacingRatio) + " times the smallest");
-    CLI::Option* textureOption =
-        command->add_option("--texture", options->texture,
-                            "Write the footprint texture f: .pfm (float gray), .exr (float RGBA, "
-                            "each channel f) or .png (8-bit, white with alpha f)");
+    command->add_option("--spacing", options->spacing,
+                        "Voxel spacing sx,sy,sz of a non-cubic lattice, the largest at most " +
+                            number(LatticeAnalysis::kMaxSpacingRatio) + " times the smallest");
+    command->add_option("--texture", options->texture,
+                        "Write the footprint texture f: .pfm (float gray), .exr (float RGBA, "
+                        "each channel f) or .png (8-bit, white with alpha f)");
     command
         ->add_option("--resolution", options->resolution,
-                     "Texture size N (default 64), of the footprint texture or of each texture of "
-                     "the vector splat table (8 to 1024)")
+                     "Texture size N of the footprint texture (default 64)")
         ->check(CLI::Range(2, 8192));
     command->add_option("--extent", options->extent,
                         "Texture half-width in voxels, at most " +
                             number(FootprintTexture::kMaxExtent) +
-                            " (default 1.6, the paper's extent); with --vector-table the scalar "
-                            "splat's half-width, which the table's window exceeds by 15%");
-    CLI::Option* plotOption =
-        command->add_option("--plot", options->plot, "Write g(r) and f(r) to this .svg file");
-    CLI::Option* vectorTableOption = command->add_option(
-        "--vector-table", options->vectorTable,
-        "Write the vector splat table (figure 3: intensity left, opacity right, columns of "
-        "foreshortening, rows of animation phase from the bottom) as .png, .pfm or .exr, and "
-        "nothing else");
-    for (CLI::Option* analysis : {jsonOption, kernelOption, optimizeOption, startOption,
-                                   supportOption, spacingOption, textureOption, plotOption})
-        vectorTableOption->excludes(analysis);
-    command->add_option("--mark-type", options->markType, "Vector table marks (default particles)")
-        ->check(CLI::IsMember({"particles", "scratches"}))
-        ->needs(vectorTableOption);
-    command->add_option("--rows", options->rows, "Vector table rows, animation phases (default 16)")
-        ->needs(vectorTableOption);
-    command
-        ->add_option("--columns", options->columns,
-                     "Vector table columns, foreshortening levels (default 8)")
-        ->needs(vectorTableOption);
-    command->add_option("--seed", options->seed, "Vector table marks' random seed (default 1)")
-        ->needs(vectorTableOption);
+                            " (default 1.6, the paper's extent)");
+    command->add_option("--plot", options->plot, "Write g(r) and f(r) to this .svg file");
     command->callback([options, mode, &exitCode] {
-        if (options->vectorTable.empty()) {
-            checkOptions(*options);
-        }
+        checkOptions(*options);
         if (mode == CommandMode::Run) {
             runKernelCommand(*options);
         }

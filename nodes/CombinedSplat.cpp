@@ -2,8 +2,6 @@
 
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
-#include "nodes/kernel/FootprintTexture.h"
-#include "nodes/kernel/VectorSplatTable.h"
 #include "nodes/render/SplatFootprint.h"
 #include "nodes/render/detail/ClassificationCache.h"
 #include "scenegraph/Error.h"
@@ -19,7 +17,7 @@ CombinedSplat::CombinedSplat() {
     addField(textureResolution, "textureResolution", 64,
              "Texels per side of the scalar footprint texture, 2 to 8192");
     addField(markContrast, "markContrast", 1.0f,
-             "How much the marks change the scalar splat's colour, 0 (not at all) to 1");
+             "How strongly the marks show over the scalar splats, 0 (not at all) to 1");
     // Figure 7: vectors in a constant colour over the volume rendering.
     textureOperator.setValue(render::MarkOperator::Blend);
     textureOperator.setDefault(true);
@@ -34,13 +32,11 @@ void CombinedSplat::checkFields() const {
 }
 
 render::SplatFootprint CombinedSplat::makeFootprint() const {
-    render::SplatFootprint result;
-    result.shape = render::SplatShape::CombinedSquare;
-    result.table = table();
-    result.extent = result.table->extent();
-    result.texture = std::make_shared<const texsplat::kernel::FootprintTexture>(
-        TextureSplat::footprint(kernel.as<SplatKernel>(), textureResolution.value(),
-                                size.value()));
+    // The scalar part is a TextureSplat's, kernel and all (the CPU backend draws it alike).
+    render::SplatFootprint result = TextureSplat::squareFootprint(
+        kernel.as<SplatKernel>(), textureResolution.value(), size.value());
+    result.shape = render::SplatShape::CombinedMarks;
+    result.markReach = markReach();
     return result;
 }
 
@@ -68,6 +64,7 @@ CombinedSplat::classify(render::detail::ClassificationCache& cache, sg::State& /
 
 render::MarkDrawing CombinedSplat::markDrawing() const {
     render::MarkDrawing marks = VectorMarkSplat::markDrawing();
+    marks.isCombined = true;
     marks.contrast = markContrast.value();
     return marks;
 }

@@ -8,16 +8,15 @@ namespace texsplat::nodes {
 /// @brief Combined scalar and vector splats (Crawfis & Max 1993, "Combined Vector and Scalar
 /// Textures", figure 7): the scalar reconstruction of a TextureSplat — the same kernel
 /// footprint and the same TransferFunction on the VolumeData's scalar field (its `component`
-/// of the vectors: the magnitude, or a scalar grid of the source) — with the vector marks of the
-/// table in the same square, drawn in one pass.
+/// of the vectors: the magnitude, or a scalar grid of the source) — with each splat's marks
+/// (VectorMarkSplat) drawn over it before the next splat, so that the marks lie in the volume
+/// at their depth.
 ///
-/// Each pixel is the TextureSplat's emission-absorption (premultiplied colour P, opacity α),
-/// and the marks change only its colour, by `markContrast` c and the table's intensity I:
-/// BLEND gives (P·(1 − c·I) + C_const·c·I·α, α) (figure 7: white vectors over the volume
-/// rendering), MODULATE gives (P·(1 − c + c·I), α). With `markContrast` 0, and wherever the
-/// vector is zero or masked out, the image is exactly the TextureSplat's.
-/// The square is the marks' window (`windowScale` × `size`); the footprint is sampled at the
-/// same voxel offsets as a TextureSplat's, so the scalar part does not depend on it.
+/// The marks' opacity is the medium's, as a VectorSplat's (a dense region draws clear marks, a
+/// thin one faint marks), times `markContrast` c; their colour is `blendColor` with BLEND
+/// (figure 7: white vectors over the volume rendering) and black with MODULATE (the volume
+/// darkened along the marks). With `markContrast` 0, and wherever the vector is zero or masked
+/// out, the image is exactly the TextureSplat's.
 ///
 /// File format (ScalarSplat's and VectorMarkSplat's fields, with `operator` BLEND by default,
 /// and):
@@ -25,7 +24,7 @@ namespace texsplat::nodes {
 /// CombinedSplat {
 ///     kernel             PAPER   # PAPER, GAUSSIAN
 ///     textureResolution  64      # 2 .. 8192
-///     markContrast       1       # [0, 1]: how much the marks change the colour
+///     markContrast       1       # [0, 1]: how strongly the marks show
 /// }
 /// @endcode
 class CombinedSplat : public sg::Declare<CombinedSplat, VectorMarkSplat> {
@@ -35,7 +34,7 @@ public:
 
     sg::SFEnum kernel;             ///< SplatKernel of the scalar footprint
     sg::SFInt32 textureResolution; ///< footprint texels per side
-    sg::SFFloat markContrast;      ///< how much the marks change the colour, [0, 1]
+    sg::SFFloat markContrast;      ///< how strongly the marks show, [0, 1]
 
 protected:
     CombinedSplat();

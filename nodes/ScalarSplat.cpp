@@ -95,6 +95,7 @@ ScalarSplat::renderInputs(sg::State& state) const {
 }
 
 render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::CameraView& camera,
+                                             int width, int height,
                                              sg::RenderStatistics& statistics,
                                              std::uint64_t previewVoxels) {
     sg::State& state = action.state();
@@ -109,13 +110,12 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         withMemoryStage("reading the volume of " + detail::nodeContext(volume), 0,
                         detail::kSplatMemoryAdvice, [&] { volume.load(action.workProgress()); });
     });
-    std::optional<octree::VectorEmission> vectors = vectorEmission();
+    const bool withMarks = footprint()->hasMarks();
     const bool mayCut = errorThreshold.value() > 0.0f || maxSplats.value() > 0;
     // Every stage's allocation, estimated and refused before the first one is made.
     const detail::SplatMemory memory = detail::withNodeContext(*this, [&] {
         const detail::SplatMemory estimate = detail::estimateSplatMemory(
-            volume, vectors.has_value(), mayCut,
-            static_cast<std::uint64_t>(maxSplats.value()));
+            volume, withMarks, mayCut, static_cast<std::uint64_t>(maxSplats.value()));
         detail::checkSplatMemory(estimate);
         return estimate;
     });
@@ -157,16 +157,18 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         (maxSplats.value() == 0 ||
          static_cast<std::uint64_t>(maxSplats.value()) >= classified->nonEmptyVoxelCount());
     mDrewEveryVoxel = fullResolution && !isPreview;
-    if (vectors) {
-        vectors->localToCamera = camera.view * model;
-        vectors->isPerspective = camera.projection[3][3] == 0.0f;
-    }
-    const octree::VectorEmission* emission = vectors ? &*vectors : nullptr;
     render::FrameSplats result;
     result.view = render::SplatView::fromMatrices(model, camera.view, camera.projection,
                                                   glm::vec3(classified->spacing()));
     result.localToCamera = camera.view * model;
     result.marks = markDrawing();
+    const std::optional<octree::MarkEmission> marks =
+        timed(statistics, sg::RenderPhase::Order,
+              [&] { return markEmission(classified, result, width, height); });
+    if (marks) {
+        result.marks.marksPerVoxel = marks->marksPerVoxel;
+    }
+    const octree::MarkEmission* emission = marks ? &*marks : nullptr;
     result.footprint = timed(statistics, sg::RenderPhase::Classify, [this] { return footprint(); });
     // The list of the last frame, refilled when the frame that drew it is gone: the same pages,
     // no allocation or zeroing per frame (about a twentieth of a Marschner-Lobb 128^3 CPU frame).
@@ -219,7 +221,7 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     statistics.splats += splats->size();
     statistics.previewed += isPreview ? 1 : 0;
     sg::FrameMemory& bytes = statistics.memory;
-    const volume::VectorGridPtr vectorGrid = vectors ? volume.vectorGrid() : nullptr;
+    const volume::VectorGridPtr vectorGrid = withMarks ? volume.vectorGrid() : nullptr;
     bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
     bytes.classified += classified->memoryBytes() + mCache->dataSummaryBytes();
     bytes.octree += fullResolution ? 0 : tree().memoryBytes();
@@ -244,8 +246,9 @@ void ScalarSplat::collectFrame(render::FrameAction& action) {
     const std::uint64_t previewVoxels = action.isInteractive()
                                             ? action.previewMinimumVoxels()
                                             : std::numeric_limits<std::uint64_t>::max();
-    action.frame().splats.push_back(
-        frameSplats(action, camera, action.statistics(), previewVoxels));
+    action.frame().splats.push_back(frameSplats(action, camera, action.frame().width,
+                                                action.frame().height, action.statistics(),
+                                                previewVoxels));
 }
 
 void ScalarSplat::rayCast(sg::RayCastAction& action) {

@@ -130,9 +130,14 @@ protected:
              const VolumeData& volume, const TransferFunction& transfer,
              const glm::mat4& model) const;
 
-    /// @brief For splats that carry vectors: the table size and seed their emission needs
-    /// (the matrices are filled in per frame); nothing (the default) for scalar splats.
-    virtual std::optional<octree::VectorEmission> vectorEmission() const { return std::nullopt; }
+    /// @brief For splats that carry marks: how their emission places them for `batch` (its view
+    /// set) of `classified` in an image of `width` x `height` pixels; nothing (the default) for
+    /// scalar splats.
+    virtual std::optional<octree::MarkEmission>
+    markEmission(const std::shared_ptr<const octree::ClassifiedGrid>& /*classified*/,
+                 const render::FrameSplats& /*batch*/, int /*width*/, int /*height*/) const {
+        return std::nullopt;
+    }
 
     /// @brief Whether an interactive frame may preview a transfer-function edit from the grid's
     /// block value histograms (ClassificationCache::preview()): where classify() is this base's,
@@ -164,14 +169,16 @@ private:
     /// throws DataError naming this node when a field is out of range or one of them is missing.
     std::pair<const VolumeData&, const TransferFunction&> renderInputs(sg::State& state) const;
 
-    /// @brief This frame's splats for `camera`: classified (cached), ordered and emitted as the
-    /// fields say, the times added to `statistics`; classification and the octree build report
+    /// @brief This frame's splats for `camera` in an image of `width` x `height` pixels:
+    /// classified (cached), ordered and emitted as the fields say, the times added to
+    /// `statistics`; classification and the octree build report
     /// to `action`'s work progress, which may cancel them. What every backend draws. Right
     /// after a transfer-function edit of a grid storing at least `previewVoxels` voxels, scalar
     /// splats draw the edit's preview (ClassificationCache::preview()) instead: the interactive
     /// frames' (render::FrameAction::previewMinimumVoxels(); the largest uint64 for others).
-    render::FrameSplats frameSplats(sg::Action& action, const render::CameraView& camera,
-                                    sg::RenderStatistics& statistics, std::uint64_t previewVoxels);
+    render::FrameSplats frameSplats(sg::Action& action, const render::CameraView& camera, int width,
+                                    int height, sg::RenderStatistics& statistics,
+                                    std::uint64_t previewVoxels);
 
     /// @brief The footprint for the current fields, made once until a shaping field changes.
     std::shared_ptr<const render::SplatFootprint> footprint();

@@ -25,19 +25,19 @@ TextureSplat::radialKernel(SplatKernel splatKernel) {
     return std::make_shared<const texsplat::kernel::CubicKernel>(paper);
 }
 
-texsplat::kernel::FootprintTexture TextureSplat::footprint(SplatKernel splatKernel, int resolution,
-                                                           double extent) {
-    return texsplat::kernel::FootprintTexture(*radialKernel(splatKernel), resolution, extent);
+render::SplatFootprint TextureSplat::squareFootprint(SplatKernel splatKernel, int resolution,
+                                                     float extent) {
+    render::SplatFootprint result;
+    result.shape = render::SplatShape::TexturedSquare;
+    result.extent = extent;
+    result.kernel = radialKernel(splatKernel);
+    result.texture = std::make_shared<const texsplat::kernel::FootprintTexture>(*result.kernel,
+                                                                                resolution, extent);
+    return result;
 }
 
 render::SplatFootprint TextureSplat::makeFootprint() const {
-    render::SplatFootprint result;
-    result.shape = render::SplatShape::TexturedSquare;
-    result.extent = size.value();
-    result.kernel = radialKernel(kernel.as<SplatKernel>());
-    result.texture = std::make_shared<const texsplat::kernel::FootprintTexture>(
-        *result.kernel, textureResolution.value(), size.value());
-    return result;
+    return squareFootprint(kernel.as<SplatKernel>(), textureResolution.value(), size.value());
 }
 
 } // namespace texsplat::nodes

@@ -56,12 +56,11 @@ public:
     static std::shared_ptr<const texsplat::kernel::RadialKernel> radialKernel(
         SplatKernel splatKernel);
 
-    /// @brief The footprint texture of `splatKernel` at `resolution`² texels over
-    /// [−extent, extent]²
-    /// (what TextureSplat and CombinedSplat carry).
+    /// @brief A TexturedSquare of `splatKernel`'s footprint at `resolution`² texels over
+    /// [−extent, extent]² (what TextureSplat draws, and CombinedSplat under its marks).
     /// @throws DataError as kernel::FootprintTexture.
-    static texsplat::kernel::FootprintTexture footprint(SplatKernel splatKernel, int resolution,
-                                                       double extent);
+    static render::SplatFootprint squareFootprint(SplatKernel splatKernel, int resolution,
+                                                  float extent);
 
 protected:
     TextureSplat();

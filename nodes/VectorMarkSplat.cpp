@@ -2,7 +2,11 @@
 
 #include "nodes/VolumeData.h"
 #include "nodes/detail/NodeContext.h"
-#include "nodes/kernel/VectorSplatTable.h"
+#include "nodes/render/Frame.h"
+#include "nodes/render/ScreenMarks.h"
+#include "octree/ClassifiedGrid.h"
+#include "octree/SplatEmission.h"
+#include "octree/VoxelShadows.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/fields/ValueFormat.h"
 
@@ -12,36 +16,41 @@
 namespace texsplat::nodes {
 namespace {
 
-const sg::EnumNames kMarkTypeNames{{"PARTICLES", kernel::MarkType::Particles},
-                                   {"SCRATCHES", kernel::MarkType::Scratches}};
-
 std::string dimsText(const glm::i64vec3& dims) {
     return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
+}
+
+// Throws DataError unless `field` is finite and in (0, high].
+void checkPositive(const sg::SFFloat& field, float high) {
+    const float value = field.value();
+    if (!std::isfinite(value) || !(value > 0.0f) || value > high) {
+        throw DataError(field.name() + " must be finite and in (0, " + sg::formatFloat(high) +
+                        "], got " + field.valueText());
+    }
 }
 
 } // namespace
 
 VectorMarkSplat::VectorMarkSplat() {
-    const kernel::VectorTableParameters table;
+    const render::MarkDrawing marks;
     addField(textureOperator, "operator", render::MarkOperator::Modulate, kMarkOperatorNames,
-             "The paper's texture operator: MODULATE scales the colour by the marks, BLEND mixes "
-             "in blendColor");
+             "The marks' colour: MODULATE the splat's own, BLEND from it at the tail to "
+             "blendColor at the head");
     addField(blendColor, "blendColor", glm::vec3(1.0f),
-             "Colour of the marks with operator BLEND (the paper's C_const), linear RGB");
+             "The colour operator BLEND mixes the marks towards (the paper's C_const)");
     addField(phase, "phase", 0.0f,
-             "Animation phase in cycles of the table's rows; connect it to an ElapsedTime");
-    addField(tableRows, "tableRows", table.rows,
-             "Animation phases of the vector splat table, 1 to 256");
-    addField(tableColumns, "tableColumns", table.columns,
-             "Foreshortening levels of the vector splat table, 1 to 64");
-    addField(markType, "markType", table.markType, kMarkTypeNames,
-             "Shape of the marks: PARTICLES (dots) or SCRATCHES (streaks along the vector)");
-    addField(markDensity, "markDensity", table.markDensity,
-             "Marks per square voxel in the table's textures, above 0 up to 64");
-    addField(windowScale, "windowScale", table.windowScale,
-             "Width of the marks' window relative to the scalar splat, 1 to 4");
-    addField(seed, "seed", static_cast<std::int32_t>(table.seed),
-             "Seed of the random marks and rows: the same seed draws the same image");
+             "Animation phase in life cycles of the marks; connect it to an ElapsedTime");
+    addField(markType, "markType", marks.type, kMarkTypeNames,
+             "Shape of the marks: SCRATCHES (streaks) or PARTICLES (comets), both brighter "
+             "downstream");
+    addField(markDensity, "markDensity", 0.6f,
+             "How much of the image the marks cover (their area over the image area under the "
+             "data), above 0 up to 4");
+    addField(markLength, "markLength", marks.length,
+             "Length of a voxel's marks in voxels (at least 20 pixels on screen), up to 64");
+    addField(markWidth, "markWidth", marks.width,
+             "Width of a voxel's marks in voxels (at least 5 pixels on screen), up to 8");
+    addField(seed, "seed", 1, "Seed of the random marks: the same seed draws the same image");
     addField(maskData, "maskData", std::shared_ptr<sg::Node>(),
              "A scalar VolumeData of the same dimensions whose values choose where marks draw; "
              "NULL: everywhere");
@@ -51,46 +60,15 @@ VectorMarkSplat::VectorMarkSplat() {
 
 VectorMarkSplat::~VectorMarkSplat() = default;
 
-std::shared_ptr<const kernel::VectorSplatTable> VectorMarkSplat::table() const {
-    const kernel::VectorTableParameters parameters = tableParameters();
-    if (!mTable || mTable->parameters() != parameters) {
-        mTable = detail::withNodeContext(
-            *this, [&] { return kernel::VectorSplatTable::shared(parameters); });
-    }
-    return mTable;
-}
-
-kernel::VectorTableParameters VectorMarkSplat::tableParameters() const {
-    kernel::VectorTableParameters table;
-    table.rows = tableRows.value();
-    table.columns = tableColumns.value();
-    table.markType = markType.as<kernel::MarkType>();
-    table.markDensity = markDensity.value();
-    table.splatExtent = size.value();
-    table.windowScale = windowScale.value();
-    table.seed = static_cast<std::uint32_t>(seed.value());
-    return table;
+double VectorMarkSplat::markReach() const {
+    return std::sqrt(3.0) / 2.0 + markLength.value() + 0.5 * markWidth.value();
 }
 
 void VectorMarkSplat::checkFields() const {
     ScalarSplat::checkFields();
-    // The fields the table names otherwise, by their names here.
-    if (tableRows.value() < 1 || tableRows.value() > kernel::VectorSplatTable::kMaxRows) {
-        throw DataError("tableRows must be in 1.." +
-                        std::to_string(kernel::VectorSplatTable::kMaxRows) + ", got " +
-                        tableRows.valueText());
-    }
-    if (tableColumns.value() < 1 || tableColumns.value() > kernel::VectorSplatTable::kMaxColumns) {
-        throw DataError("tableColumns must be in 1.." +
-                        std::to_string(kernel::VectorSplatTable::kMaxColumns) + ", got " +
-                        tableColumns.valueText());
-    }
-    if (size.value() > kernel::VectorSplatTable::kMaxSplatExtent) {
-        throw DataError("size must be at most " +
-                        sg::formatFloat(kernel::VectorSplatTable::kMaxSplatExtent) +
-                        " for vector splats, got " + size.valueText());
-    }
-    kernel::VectorSplatTable::checkParameters(tableParameters());
+    checkPositive(markDensity, kMaxMarkDensity);
+    checkPositive(markLength, kMaxMarkLength);
+    checkPositive(markWidth, kMaxMarkWidth);
     if (!std::isfinite(phase.value())) {
         throw DataError("phase must be finite, got " + phase.valueText());
     }
@@ -144,27 +122,46 @@ bool VectorMarkSplat::isInMask(float value) const {
     return value >= range.x && value <= range.y;
 }
 
-std::optional<octree::VectorEmission> VectorMarkSplat::vectorEmission() const {
-    octree::VectorEmission emission;
-    emission.rows = tableRows.value();
-    emission.columns = tableColumns.value();
+std::optional<octree::MarkEmission>
+VectorMarkSplat::markEmission(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
+                              const render::FrameSplats& batch, int width, int height) const {
+    if (mShadowsOf.lock() != classified) {
+        mShadows = std::make_shared<const octree::VoxelShadows>(*classified);
+        mShadowsOf = classified;
+    }
+    // How deep the data is behind a pixel, seen from here towards the grid's centre, and how
+    // large a voxel's mark is on screen there: marks per voxel = coverage / (area · depth).
+    const glm::dvec3 centre = classified->toWorld((glm::dvec3(classified->dims()) - 1.0) * 0.5);
+    const render::SplatView& view = batch.view;
+    const glm::dvec3 sight =
+        view.isPerspective ? centre - glm::dvec3(view.eye) : glm::dvec3(view.direction);
+    const double depth = mShadows->meanDepth(sight);
+    const float pixels = render::pixelsPerVoxel(batch, width, height, glm::vec3(centre));
+    octree::MarkEmission emission;
     emission.seed = static_cast<std::uint32_t>(seed.value());
+    if (depth > 0.0 && pixels > 0.0f && std::isfinite(pixels)) {
+        const double area = render::markArea(markDrawing(), pixels);
+        emission.marksPerVoxel = double(markDensity.value()) / (area * depth);
+    }
     return emission;
 }
 
 render::MarkDrawing VectorMarkSplat::markDrawing() const {
     render::MarkDrawing marks;
+    marks.type = markType.as<render::MarkType>();
     marks.textureOperator = textureOperator.as<render::MarkOperator>();
     marks.blendColor = blendColor.value();
-    // The fraction of a cycle first: a huge phase must not overflow the row count.
-    const double cycle = std::fmod(static_cast<double>(phase.value()), 1.0);
-    marks.rowShift = static_cast<int>(std::lround(cycle * tableRows.value()));
+    marks.phase = phase.value();
+    marks.length = markLength.value();
+    marks.width = markWidth.value();
     return marks;
 }
 
 bool VectorMarkSplat::isDrawingField(const sg::Field* field) const {
+    // markLength and markWidth shape the footprint (its reach): not here.
     return ScalarSplat::isDrawingField(field) || field == &textureOperator ||
-           field == &blendColor || field == &phase || isClassificationField(field);
+           field == &blendColor || field == &phase || field == &markType || field == &markDensity ||
+           field == &seed || isClassificationField(field);
 }
 
 bool VectorMarkSplat::isClassificationField(const sg::Field* field) const {

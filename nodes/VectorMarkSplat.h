@@ -7,10 +7,11 @@
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/fields/SFNode.h"
 
-namespace texsplat::kernel {
-class VectorSplatTable;
-struct VectorTableParameters;
-} // namespace texsplat::kernel
+#include <memory>
+
+namespace texsplat::octree {
+class VoxelShadows;
+} // namespace texsplat::octree
 
 namespace texsplat::nodes {
 
@@ -18,35 +19,45 @@ namespace texsplat::nodes {
 inline const sg::EnumNames kMarkOperatorNames{{"MODULATE", render::MarkOperator::Modulate},
                                               {"BLEND", render::MarkOperator::Blend}};
 
+/// @brief Scene-file names of render::MarkType.
+inline const sg::EnumNames kMarkTypeNames{{"PARTICLES", render::MarkType::Particles},
+                                          {"SCRATCHES", render::MarkType::Scratches}};
+
 /// @brief Base of the splats that draw a vector field as marks (VectorSplat, CombinedSplat;
-/// Crawfis & Max 1993, "Combined Vector and Scalar Textures"): each splat carries the vector
-/// of the current VolumeData at its voxel (the mean vector of its octree node on coarse cuts)
-/// and picks a texture of the vector splat table (kernel::VectorSplatTable, figure 3): its
-/// column from how much the vector points at the eye, its row at random (from `seed`) plus the
-/// animation `phase`. The square is turned so that the marks run along the projected vector.
+/// Crawfis & Max 1993, "Combined Vector and Scalar Textures": "tiny vector particles, or
+/// scratch marks"): each splat carries a few marks, each at a random point of a non-empty
+/// voxel's cell with that voxel's vector, drawn as a streak along the vector's projection with a
+/// sharp head downstream and a tail that fades upstream (docs/vector-splats.md).
+///
+/// How many marks: `markDensity` is how much of the image the marks cover (their area over the
+/// image area under the data, counting overlaps), whatever the data's depth and the zoom: the
+/// node divides it by a mark's area on screen and by the mean number of voxels behind a pixel
+/// (octree::VoxelShadows) to get the marks per voxel. How large: `markLength` and `markWidth`
+/// voxels, but never narrower than 5 pixels (2.7 at half opacity) nor, in the image plane, shorter
+/// than 20 pixels, so that marks stay legible when the voxels are small on screen.
 ///
 /// The vector field is the VolumeData's vector grid (a raw file with 3 components, an OpenVDB
 /// vec3s grid, or a vector generator); a VolumeData of scalars is an error. Vectors that are
 /// NaN or infinite are empty voxels.
 ///
-/// Animation: `phase` is in cycles of the table's rows (1 = every row once); connect it to an
-/// engine, `phase = ElapsedTime { speed 0.5 } . timeOut`, whose speed is the paper's slider on
-/// the timer. Advancing the phase by 1/tableRows moves every mark one table row along its vector.
+/// Animation: `phase` is in life cycles of the marks; connect it to an engine, `phase =
+/// ElapsedTime { speed 0.5 } . timeOut`, whose speed is the paper's slider on the timer. In one
+/// cycle each mark moves one mark length along its vector, fading in at the start and out at
+/// the end: the marks flow, and the animation loops seamlessly at every whole cycle.
 ///
 /// Mask (figure 8, winds only where it is cloudy): with `maskData` set to a scalar VolumeData
 /// of the same dimensions, only voxels whose mask value lies in `maskRange` draw marks.
 ///
 /// File format (the fields this base adds to ScalarSplat's):
 /// @code
-/// operator      MODULATE   # MODULATE, BLEND: the paper's texture operators
-/// blendColor    1 1 1      # C_const of BLEND
-/// phase         0          # animation phase, in cycles of the table's rows
-/// tableRows     16         # animation phases of the table, 1 .. 256
-/// tableColumns  8          # foreshortening levels of the table, 1 .. 64
-/// markType      PARTICLES  # PARTICLES, SCRATCHES
-/// markDensity   1          # marks per square voxel, (0, 64]
-/// windowScale   1.15       # the marks' window relative to the scalar splat, [1, 4]
-/// seed          1          # random marks and rows, reproducible
+/// operator      MODULATE   # MODULATE, BLEND: the marks' colour
+/// blendColor    1 1 1      # the colour BLEND mixes towards
+/// phase         0          # animation phase, in life cycles of the marks
+/// markType      SCRATCHES  # SCRATCHES (streaks), PARTICLES (comets)
+/// markDensity   0.6        # how much of the image the marks cover, (0, 4]
+/// markLength    2.5        # voxels, (0, 64]
+/// markWidth     0.08       # voxels, (0, 8]
+/// seed          1          # random marks, reproducible
 /// maskData      NULL       # a scalar VolumeData, or NULL for no mask
 /// maskRange     0 1        # mask values that draw, inclusive (used with maskData)
 /// @endcode
@@ -56,27 +67,28 @@ public:
     static constexpr const char* kTypeName = "VectorMarkSplat";
 
     sg::SFEnum textureOperator; ///< render::MarkOperator ("operator" in files)
-    sg::SFColor blendColor;     ///< C_const of BLEND
-    sg::SFFloat phase;          ///< animation phase, cycles of the rows
-    sg::SFInt32 tableRows;      ///< animation phases of the table
-    sg::SFInt32 tableColumns;   ///< foreshortening levels of the table
-    sg::SFEnum markType;        ///< kernel::MarkType
-    sg::SFFloat markDensity;    ///< marks per square voxel
-    sg::SFFloat windowScale;    ///< window half-width over the scalar splat's
-    sg::SFInt32 seed;           ///< marks and random rows
+    sg::SFColor blendColor;     ///< what BLEND mixes towards
+    sg::SFFloat phase;          ///< animation phase, life cycles of the marks
+    sg::SFEnum markType;        ///< render::MarkType
+    sg::SFFloat markDensity;    ///< how much of the image the marks cover
+    sg::SFFloat markLength;     ///< voxels
+    sg::SFFloat markWidth;      ///< voxels
+    sg::SFInt32 seed;           ///< the random marks
     sg::SFNode maskData;        ///< scalar VolumeData masking the marks, or none
     sg::SFVec2f maskRange;      ///< mask values that draw
 
+    /// @brief The largest markDensity.
+    static constexpr float kMaxMarkDensity = 4.0f;
+    /// @brief The largest markLength, in voxels.
+    static constexpr float kMaxMarkLength = 64.0f;
+    /// @brief The largest markWidth, in voxels.
+    static constexpr float kMaxMarkWidth = 8.0f;
+
     ~VectorMarkSplat() override;
 
-    /// @brief The table parameters of the current field values.
-    kernel::VectorTableParameters tableParameters() const;
-
-    /// @brief The vector splat table of the current field values, made on first use and shared
-    /// with every node of the same table parameters (kernel::VectorSplatTable::shared()); the
-    /// node keeps it while its parameters stay the same. A scene without vector splats makes none.
-    /// @throws DataError naming the node when a table field is out of range.
-    std::shared_ptr<const kernel::VectorSplatTable> table() const;
+    /// @brief How far from a voxel's centre its marks reach, in voxels (the cell's corner, a
+    /// mark length for half a mark and half its travel, half a mark width).
+    double markReach() const;
 
 protected:
     VectorMarkSplat();
@@ -96,7 +108,9 @@ protected:
     /// @brief Whether `value` of the mask lets a voxel draw.
     bool isInMask(float value) const;
 
-    std::optional<octree::VectorEmission> vectorEmission() const override;
+    std::optional<octree::MarkEmission>
+    markEmission(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
+                 const render::FrameSplats& batch, int width, int height) const override;
     /// @brief False: the vector and combined grids are classified here, with their vectors.
     bool previewsEdits() const override { return false; }
     render::MarkDrawing markDrawing() const override;
@@ -105,7 +119,9 @@ protected:
     void checkFields() const override;
 
 private:
-    mutable std::shared_ptr<const kernel::VectorSplatTable> mTable;
+    // The shadows of the last classified grid, kept while it is the one drawn.
+    mutable std::shared_ptr<const octree::VoxelShadows> mShadows;
+    mutable std::weak_ptr<const octree::ClassifiedGrid> mShadowsOf;
 };
 
 } // namespace texsplat::nodes

@@ -3,7 +3,6 @@
 #include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 #include "nodes/detail/ColorText.h"
-#include "nodes/kernel/VectorSplatTable.h"
 #include "nodes/render/SplatFootprint.h"
 #include "nodes/render/detail/ClassificationCache.h"
 #include "scenegraph/Error.h"
@@ -22,16 +21,11 @@ VectorSplat::VectorSplat() {
              "World axis whose coordinate colorMode POSITION colours by (e.g. Z for altitude)");
     addField(positionRange, "positionRange", glm::vec2(0.0f, 1.0f),
              "World coordinates mapped onto the TransferFunction's range by colorMode POSITION");
-    addField(color, "color", glm::vec3(1.0f), "Colour of colorMode CONSTANT, linear RGB");
-    addField(stretch, "stretch", 1.0f,
-             "Elongation of each square along its projected vector, >= 1 (figure 6's wisps)");
+    addField(color, "color", glm::vec3(1.0f), "Colour of colorMode CONSTANT");
 }
 
 void VectorSplat::checkFields() const {
     VectorMarkSplat::checkFields();
-    if (!std::isfinite(stretch.value()) || !(stretch.value() >= 1.0f)) {
-        throw DataError("stretch must be finite and >= 1, got " + stretch.valueText());
-    }
     if (!detail::isFiniteColor(color.value()) ||
         glm::any(glm::lessThan(color.value(), glm::vec3(0.0f)))) {
         throw DataError("color must be finite and not negative, got " +
@@ -50,9 +44,9 @@ void VectorSplat::checkFields() const {
 
 render::SplatFootprint VectorSplat::makeFootprint() const {
     render::SplatFootprint result;
-    result.shape = render::SplatShape::VectorSquare;
-    result.table = table();
-    result.extent = result.table->extent();
+    result.shape = render::SplatShape::VectorMarks;
+    result.markReach = markReach();
+    result.extent = result.markReach;
     return result;
 }
 
@@ -118,16 +112,6 @@ VectorSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*s
         });
         return classified;
     });
-}
-
-render::MarkDrawing VectorSplat::markDrawing() const {
-    render::MarkDrawing marks = VectorMarkSplat::markDrawing();
-    marks.stretch = stretch.value();
-    return marks;
-}
-
-bool VectorSplat::isDrawingField(const sg::Field* field) const {
-    return VectorMarkSplat::isDrawingField(field) || field == &stretch;
 }
 
 bool VectorSplat::isClassificationField(const sg::Field* field) const {

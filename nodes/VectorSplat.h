@@ -26,21 +26,22 @@ enum class Axis { X, Y, Z };
 inline const sg::EnumNames kAxisNames{{"X", Axis::X}, {"Y", Axis::Y}, {"Z", Axis::Z}};
 
 /// @brief Vector splats (Crawfis & Max 1993, "Combined Vector and Scalar Textures", figures 5,
-/// 6, 8): the vector field of the current VolumeData drawn as marks of the vector splat table,
-/// one textured square per non-empty voxel (or octree node), oriented along the projected
-/// vector and foreshortened by its component towards the eye.
+/// 6, 8): the vector field of the current VolumeData drawn as marks (VectorMarkSplat), a few for
+/// each non-empty voxel (or octree node), each a streak along the projected vector with a sharp
+/// head downstream.
 ///
-/// Each splat's polygon has a colour RGB (`colorMode`) and an opacity A: the vector magnitude
-/// |v| goes through the current TransferFunction to an extinction τ, and A = 1 − exp(−τ·ℓ) is
-/// the opacity of one voxel's depth ℓ of that medium (figure 5: magnitude to opacity). The
-/// texture operator then gives the paper's formulas, composited "over" back to front:
-/// MODULATE (RGB·I_tex, A·A_tex), BLEND (RGB·(1 − I_tex) + C_const·I_tex, A·A_tex).
-/// Voxels whose vector is zero, or outside the mask, or whose magnitude classifies to τ = 0 draw
-/// nothing. `stretch` > 1 elongates each square along its projected vector (figure 6's wisps).
-/// For colour by position the coordinate is the voxel centre in world space (the model matrix
-/// applied), mapped linearly from `positionRange` onto the TransferFunction's range. A range
-/// taken from the data (TransferFunction::rangeMode) is that of the vector magnitudes, for
-/// colour by a second scalar too.
+/// Each mark has a colour (`colorMode`) and an opacity from the medium it stands for: the vector
+/// magnitude |v| goes through the current TransferFunction to an extinction τ, and the opacity
+/// of the voxel's cell, τ·ℓ through it, is spread over the voxel's share of marks (figure 5:
+/// magnitude to opacity), so that a dense medium draws opaque marks and a thin one faint marks.
+/// The texture operator gives the colour: MODULATE the splat's colour, BLEND mixed from it at
+/// the tail to `blendColor` at the head. Composited "over" back to front. Voxels whose vector is
+/// zero, or outside the mask, or whose magnitude classifies to τ = 0 draw nothing. For colour by
+/// position the coordinate is the voxel centre in world space (the model matrix applied),
+/// mapped linearly from `positionRange` onto the TransferFunction's range. A range taken from
+/// the data (TransferFunction::rangeMode) is that of the vector magnitudes, for colour by a
+/// second scalar too. `size` (ScalarSplat's) does not apply: the marks' size is `markLength`
+/// and `markWidth`.
 ///
 /// RayCastAction leaves vector splats out (marks are not a medium; it logs a warning).
 ///
@@ -52,7 +53,6 @@ inline const sg::EnumNames kAxisNames{{"X", Axis::X}, {"Y", Axis::Y}, {"Z", Axis
 ///     positionAxis   Z           # X, Y, Z: the coordinate of colorMode POSITION
 ///     positionRange  0 1         # coordinates mapped onto the TransferFunction's range
 ///     color          1 1 1       # the colour of colorMode CONSTANT
-///     stretch        1           # >= 1: elongation along the projected vector
 /// }
 /// @endcode
 class VectorSplat : public sg::Declare<VectorSplat, VectorMarkSplat> {
@@ -60,24 +60,20 @@ public:
     /// @brief The scene-file name.
     static constexpr const char* kTypeName = "VectorSplat";
 
-    sg::SFEnum colorMode;       ///< VectorColorMode
-    sg::SFNode colorData;       ///< scalar VolumeData for colorMode SCALAR
-    sg::SFEnum positionAxis;    ///< Axis for colorMode POSITION
-    sg::SFVec2f positionRange;  ///< coordinates onto the transfer function's range
-    sg::SFColor color;          ///< colour for colorMode CONSTANT
-    sg::SFFloat stretch;        ///< elongation along the projected vector, >= 1
+    sg::SFEnum colorMode;      ///< VectorColorMode
+    sg::SFNode colorData;      ///< scalar VolumeData for colorMode SCALAR
+    sg::SFEnum positionAxis;   ///< Axis for colorMode POSITION
+    sg::SFVec2f positionRange; ///< coordinates onto the transfer function's range
+    sg::SFColor color;         ///< colour for colorMode CONSTANT
 
 protected:
     VectorSplat();
 
     render::SplatFootprint makeFootprint() const override;
     std::shared_ptr<const octree::ClassifiedGrid>
-    classify(render::detail::ClassificationCache& cache, sg::State& state,
-             const VolumeData& volume, const TransferFunction& transfer,
-             const glm::mat4& model) const override;
-    render::MarkDrawing markDrawing() const override;
+    classify(render::detail::ClassificationCache& cache, sg::State& state, const VolumeData& volume,
+             const TransferFunction& transfer, const glm::mat4& model) const override;
     bool isMedium() const override { return false; }
-    bool isDrawingField(const sg::Field* field) const override;
     bool isClassificationField(const sg::Field* field) const override;
     void checkFields() const override;
 };

@@ -11,7 +11,9 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <numeric>
 #include <utility>
+#include <vector>
 
 namespace texsplat::octree {
 
@@ -87,9 +89,8 @@ void sortByDepth(SplatList& splats, const View& view) {
 void DepthSorter::sort(SplatList& splats, const View& view) {
     const std::size_t count = splats.size();
     TEXSPLAT_ASSERT(count <= 0xFFFFFFFFu, "sortByDepth(): more than 2^32 splats (128 GiB)");
-    const bool withVectors = splats.hasVectors();
+    const bool withMarks = splats.hasMarks();
     const Splat* const from = splats.splats().data();
-    const SplatVector* const fromVectors = withVectors ? splats.vectors().data() : nullptr;
     mItems.resize(count);
     mScratch.resize(count);
     using Range = tbb::blocked_range<std::size_t>;
@@ -109,24 +110,44 @@ void DepthSorter::sort(SplatList& splats, const View& view) {
             std::swap(mItems, mScratch);
         }
     }
-    mSorted.resize(count, withVectors);
+    // The sorted marks' offsets: each splat's count in the new order, summed.
+    std::vector<std::uint32_t>& begins = mMarkBegins;
+    begins.assign(withMarks ? count + 1 : 0, 0);
+    if (withMarks) {
+        tbb::parallel_for(Range(0, count, kChunk), [&](const Range& range) {
+            for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                const auto index = static_cast<std::size_t>(mItems[i] & 0xFFFFFFFFu);
+                begins[i + 1] = static_cast<std::uint32_t>(splats.markBegin(index + 1) -
+                                                           splats.markBegin(index));
+            }
+        });
+        std::partial_sum(begins.begin(), begins.end(), begins.begin());
+    }
+    mSorted.resize(count, withMarks, splats.marks().size());
     Splat* const to = mSorted.writableSplats();
-    SplatVector* const toVectors = mSorted.writableVectors();
+    SplatMark* const toMarks = mSorted.writableMarks();
+    std::uint32_t* const toBegins = mSorted.writableMarkBegins();
     tbb::parallel_for(Range(0, count, kChunk), [&](const Range& range) {
         for (std::size_t i = range.begin(); i < range.end(); ++i) {
             const auto index = static_cast<std::size_t>(mItems[i] & 0xFFFFFFFFu);
             to[i] = from[index];
-            if (withVectors) {
-                toVectors[i] = fromVectors[index];
+            if (withMarks) {
+                const SplatMark* marks = splats.marks().data();
+                std::copy(marks + splats.markBegin(index), marks + splats.markBegin(index + 1),
+                          toMarks + begins[i]);
+                toBegins[i] = begins[i];
             }
         }
     });
+    if (withMarks) {
+        toBegins[count] = begins[count];
+    }
     std::swap(splats, mSorted);
 }
 
 std::uint64_t DepthSorter::memoryBytes() const {
     return (mItems.capacity() + mScratch.capacity()) * sizeof(std::uint64_t) +
-           mSorted.memoryBytes();
+           mMarkBegins.capacity() * sizeof(std::uint32_t) + mSorted.memoryBytes();
 }
 
 } // namespace texsplat::octree

@@ -8,7 +8,7 @@
 
 namespace texsplat::octree {
 
-/// @brief Reorders @p splats (and their vectors) by decreasing centre depth for @p view: the
+/// @brief Reorders @p splats (each with its marks) by decreasing centre depth for @p view: the
 /// distance along the direction for an orthographic view, the distance from the eye for a
 /// perspective one. Stable, so splats at equal depth keep their traversal order.
 ///
@@ -34,8 +34,9 @@ public:
     [[nodiscard]] std::uint64_t memoryBytes() const;
 
 private:
-    std::vector<std::uint64_t> mItems;   // far-first key << 32 | splat index
-    std::vector<std::uint64_t> mScratch; // the other buffer of the radix passes
+    std::vector<std::uint64_t> mItems;      // far-first key << 32 | splat index
+    std::vector<std::uint64_t> mScratch;    // the other buffer of the radix passes
+    std::vector<std::uint32_t> mMarkBegins; // where each sorted splat's marks go
     SplatList mSorted;
 };
 

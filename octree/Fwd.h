@@ -14,10 +14,11 @@ class SplatList;
 class ValueHistograms;
 class ValueRanges;
 class View;
+class VoxelShadows;
 struct NodeRef;
 struct OctreeNode;
 struct RefineBudget;
 struct Splat;
-struct SplatVector;
+struct SplatMark;
 
 } // namespace texsplat::octree

@@ -22,12 +22,10 @@ struct Octree::Statistics {
     glm::vec4 maximum{0.0f};
     std::uint64_t count = 0;
     OctreeNode record;
-    // Vector grids only: the sum of the non-empty voxels' vectors and of their unit directions,
-    // and how many of them have a direction (a zero vector has none).
-    glm::dvec3 vectorSum{0.0};
+    // Vector grids only: the sum of the non-empty voxels' unit directions, and how many of them
+    // have a direction (a zero vector has none).
     glm::dvec3 directionSum{0.0};
     std::uint64_t directionCount = 0;
-    glm::vec3 meanVector{0.0f};
 
     void merge(const Statistics& other) {
         minimum = count == 0 ? other.minimum : glm::min(minimum, other.minimum);
@@ -35,7 +33,6 @@ struct Octree::Statistics {
         sum += other.sum;
         count += other.count;
         record.nonEmptyCount += other.record.nonEmptyCount;
-        vectorSum += other.vectorSum;
         directionSum += other.directionSum;
         directionCount += other.directionCount;
     }
@@ -50,7 +47,6 @@ struct Octree::Statistics {
                               mean[channel] - static_cast<double>(minimum[channel])});
         }
         if (directionCount > 0) {
-            meanVector = glm::vec3(vectorSum / static_cast<double>(record.nonEmptyCount));
             // 1 - |mean of the unit directions| is 0 when all voxels point the same way and 1
             // when they cancel; scaled by the largest extinction it is in the units of the other
             // channels, so one threshold weighs a turning flow like a changing opacity.
@@ -66,7 +62,6 @@ struct Octree::Statistics {
 /// appends contiguously once the children's own subtrees are stored.
 struct Octree::Children {
     std::array<OctreeNode, 8> records;
-    std::array<glm::vec3, 8> meanVectors;
     int count = 0;
 
     // Merges `child`, the child in `octant`, into `parent`, and keeps its record when it holds a
@@ -75,7 +70,6 @@ struct Octree::Children {
         parent.merge(child);
         if (child.record.nonEmptyCount > 0) {
             parent.record.childMask |= static_cast<std::uint8_t>(1u << octant);
-            meanVectors[static_cast<std::size_t>(count)] = child.meanVector;
             records[static_cast<std::size_t>(count++)] = child.record;
         }
     }
@@ -86,17 +80,12 @@ struct Octree::Children {
 /// BlockBatches::place() moves the slot into the octree).
 struct Octree::Records {
     std::vector<OctreeNode>& nodes;
-    std::vector<glm::vec3>* meanVectors; // null for a scalar grid
 
     // Appends `children`'s records and returns the index of the first: their parent's firstChild.
     std::uint64_t append(const Children& children) {
         const std::uint64_t first = nodes.size();
         nodes.insert(nodes.end(), children.records.begin(),
                      children.records.begin() + children.count);
-        if (meanVectors != nullptr) {
-            meanVectors->insert(meanVectors->end(), children.meanVectors.begin(),
-                                children.meanVectors.begin() + children.count);
-        }
         return first;
     }
 };
@@ -160,12 +149,8 @@ public:
         for (Slots& slots : mSlots) {
             slots.statistics.resize(count);
             slots.nodes.resize(count);
-            slots.meanVectors.resize(octree.mGrid->hasVectors() ? count : 0);
             for (std::size_t slot = 0; slot < count; ++slot) {
                 slots.nodes[slot].reserve(kBlockRecords);
-                if (octree.mGrid->hasVectors()) {
-                    slots.meanVectors[slot].reserve(kBlockRecords);
-                }
             }
         }
     }
@@ -182,21 +167,15 @@ public:
         std::vector<OctreeNode>& nodes = slots.nodes[slot];
         shiftChildIndices(statistics.record, mLevel, records.nodes.size(), nodes);
         records.nodes.insert(records.nodes.end(), nodes.begin(), nodes.end());
-        if (records.meanVectors != nullptr) {
-            records.meanVectors->insert(records.meanVectors->end(),
-                                        slots.meanVectors[slot].begin(),
-                                        slots.meanVectors[slot].end());
-        }
         return statistics;
     }
 
 private:
-    // Per block of a batch: its statistics and its subtree's records (and mean vectors), with
-    // firstChild indices into the slot.
+    // Per block of a batch: its statistics and its subtree's records, with firstChild indices
+    // into the slot.
     struct Slots {
         std::vector<Statistics> statistics;
         std::vector<std::vector<OctreeNode>> nodes;
-        std::vector<std::vector<glm::vec3>> meanVectors;
     };
 
     // Makes the batch after the one placed so far the one to place, and starts building the one
@@ -224,11 +203,7 @@ private:
         const std::size_t count = std::min(kBlocksPerBatch, mBlocks.size() - begin);
         tbb::parallel_for(std::size_t{0}, count, [&](std::size_t slot) {
             slots.nodes[slot].clear();
-            Records records{slots.nodes[slot], nullptr};
-            if (!slots.meanVectors.empty()) {
-                slots.meanVectors[slot].clear();
-                records.meanVectors = &slots.meanVectors[slot];
-            }
+            Records records{slots.nodes[slot]};
             slots.statistics[slot] = mOctree.buildSubtree(mLevel, mBlocks[begin + slot], records);
         });
     }
@@ -272,9 +247,6 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid, const sg::WorkProgres
     }
     const std::size_t mostRecords = blocks.size() * (kBlockRecords + 1) + upperNodes;
     mNodes.reserve(mostRecords);
-    if (mGrid->hasVectors()) {
-        mMeanVectors.reserve(mostRecords);
-    }
     // A grid of at most 4 voxels along every axis has one block, below its root's level.
     BlockBatches batches(*this, std::min(mRootLevel, ClassifiedGrid::kBlockLevel),
                          std::move(blocks), progress);
@@ -283,12 +255,8 @@ Octree::Octree(std::shared_ptr<const ClassifiedGrid> grid, const sg::WorkProgres
     mValueScale = std::max({root.maximum.r, root.maximum.g, root.maximum.b, root.maximum.a});
     if (mRootLevel > 0 && !mIsEmpty) {
         mNodes.push_back(root.record);
-        if (mGrid->hasVectors()) {
-            mMeanVectors.push_back(root.meanVector);
-        }
     }
     mNodes.shrink_to_fit();
-    mMeanVectors.shrink_to_fit();
     sg::reportWork(progress, kBuildStep, 1.0);
 }
 
@@ -304,8 +272,6 @@ Octree::Statistics Octree::voxelStatistics(glm::u64vec3 voxel) const {
     statistics.record.nonEmptyCount = value == glm::vec4(0.0f) ? 0 : 1;
     if (mGrid->hasVectors() && statistics.record.nonEmptyCount > 0) {
         const glm::vec3 vector = mGrid->vector(voxel);
-        statistics.meanVector = vector;
-        statistics.vectorSum = glm::dvec3(vector);
         const double length = glm::length(glm::dvec3(vector));
         if (length > 0.0) {
             statistics.directionSum = glm::dvec3(vector) / length;
@@ -382,7 +348,7 @@ Octree::Statistics Octree::build(int level, glm::u64vec3 coord, const Occupancy&
         statistics.count = extent.x * extent.y * extent.z;
         return statistics;
     }
-    Records records{mNodes, mGrid->hasVectors() ? &mMeanVectors : nullptr};
+    Records records{mNodes};
     if (level <= ClassifiedGrid::kBlockLevel) {
         return blocks.place(records);
     }
@@ -504,12 +470,6 @@ OctreeNode Octree::node(const NodeRef& node) const {
     voxel.meanExtinction = value.w;
     voxel.nonEmptyCount = value == glm::vec4(0.0f) ? 0 : 1;
     return voxel;
-}
-
-glm::vec3 Octree::meanVector(const NodeRef& node) const {
-    TEXSPLAT_ASSERT(mGrid->hasVectors(), "Octree::meanVector(): the grid has no vectors");
-    return node.level == 0 ? mGrid->vector(node.coord)
-                           : mMeanVectors[static_cast<std::size_t>(node.index)];
 }
 
 int Octree::children(const NodeRef& node, std::array<NodeRef, 8>& children) const {

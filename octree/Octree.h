@@ -64,10 +64,6 @@ public:
     /// @brief The summary of @p node; for a voxel it is synthesized from the grid (error 0).
     [[nodiscard]] OctreeNode node(const NodeRef& node) const;
 
-    /// @brief For a grid with vectors: the mean vector of @p node's non-empty voxels (a voxel's
-    /// own vector at level 0), the direction a vector splat standing for the node draws.
-    [[nodiscard]] glm::vec3 meanVector(const NodeRef& node) const;
-
     /// @brief The child of @p node in @p octant (bit 0: upper x, bit 1: upper y, bit 2: upper z),
     /// which must be set in the node's `childMask`.
     [[nodiscard]] NodeRef child(const NodeRef& node, int octant) const {
@@ -123,7 +119,7 @@ public:
 
     /// @brief Bytes used by the node records (the grid is not counted: it is shared).
     [[nodiscard]] std::uint64_t memoryBytes() const {
-        return mNodes.capacity() * sizeof(OctreeNode) + mMeanVectors.capacity() * sizeof(glm::vec3);
+        return mNodes.capacity() * sizeof(OctreeNode);
     }
 
 private:
@@ -155,7 +151,6 @@ private:
 
     std::shared_ptr<const ClassifiedGrid> mGrid;
     std::vector<OctreeNode> mNodes;
-    std::vector<glm::vec3> mMeanVectors; // parallel to mNodes, for grids with vectors only
     int mRootLevel = 0;
     float mValueScale = 0.0f;
     bool mIsEmpty = true;

@@ -25,27 +25,43 @@ struct Splat {
     float extinction = 0.0f;
 };
 
-/// @brief The per-splat data that only vector splats need (Crawfis & Max 1993, "Vector
-/// Splats": the direction and the texture table's row and column): 16 bytes, kept in a parallel
-/// array so that scalar splat lists do not pay for it.
-struct SplatVector {
-    /// @brief The field's vector at the splat centre, in world space.
+/// @brief One mark of a vector splat (Crawfis & Max 1993, "Combined Vector and Scalar
+/// Textures": "tiny vector particles, or scratch marks"), as emitted: where it sits, which way
+/// the field goes there and the medium of the voxel it stands for, in the splat node's local
+/// space. The backends draw it for the view (render::ScreenMarks): oriented along the projected
+/// vector, a head and a fading tail.
+struct SplatMark {
+    /// @brief Centre at animation phase 0: a random point in the cell of a non-empty voxel of
+    /// the splat's voxel or node, so that the marks of all splats together fall at random, with
+    /// no trace of the grid.
+    glm::vec3 position{0.0f};
+    /// @brief Where the mark is in its life cycle at animation phase 0, in [0, 1).
+    float phase = 0.0f;
+    /// @brief The field's vector at the voxel the mark sits in (finite; zero where a combined
+    /// splat's voxel has no vector: the mark draws nothing).
     glm::vec3 vector{0.0f};
-    /// @brief Row of the vector splat table (the animation phase the splat starts at).
-    std::uint16_t row = 0;
-    /// @brief Column of the vector splat table (the foreshortening level, from view-space |v_z|).
-    std::uint16_t column = 0;
+    /// @brief That voxel's classified extinction τ (per unit length).
+    float extinction = 0.0f;
+    /// @brief That voxel's classified colour.
+    glm::vec3 color{0.0f};
+
+    /// @brief Whether every member is equal (floats compared exactly).
+    bool operator==(const SplatMark& other) const {
+        return position == other.position && phase == other.phase && vector == other.vector &&
+               extinction == other.extinction && color == other.color;
+    }
 };
 
 static_assert(sizeof(Splat) == 8 * sizeof(float), "Splat must stay two packed vec4s");
-static_assert(sizeof(SplatVector) == 4 * sizeof(float), "SplatVector must stay one packed vec4");
+static_assert(sizeof(SplatMark) == 11 * sizeof(float), "SplatMark must stay eleven packed floats");
 
-/// @brief The splats of one view in back-to-front order, as a structure of two arrays: the
-/// scalar part (`splats()`, always present) and the vector part (`vectors()`, either empty or
-/// exactly as long as `splats()`).
+/// @brief The splats of one view in back-to-front order, as a structure of arrays: the scalar
+/// part (`splats()`, always present) and, for vector splats, their marks (`marks()`): splat i's
+/// marks are `marks()[markBegin(i) .. markBegin(i + 1))`, zero or more each.
 ///
 /// The list is what the octree hands to every backend (OpenGL instanced quads, the CPU splat
-/// rasterizer): drawing in index order composites correctly with the "over" operator.
+/// rasterizer): drawing in index order (a splat, then its marks) composites correctly with the
+/// "over" operator.
 class SplatList {
 public:
     SplatList() = default;
@@ -57,25 +73,25 @@ public:
     SplatList& operator=(SplatList&& other) noexcept;
     ~SplatList() = default;
 
-    /// @brief Reserves room for @p count splats, and for their vectors when @p withVectors.
-    void reserve(std::size_t count, bool withVectors);
+    /// @brief Reserves room for @p count splats, and for their mark offsets when @p withMarks.
+    void reserve(std::size_t count, bool withMarks);
 
-    /// @brief Appends a scalar splat; the list must not hold vectors.
+    /// @brief Appends a scalar splat; the list must not hold marks.
     void add(const Splat& splat);
 
-    /// @brief Appends a vector splat; the list must hold vectors for all its splats (or be
-    /// empty).
-    void add(const Splat& splat, const SplatVector& vector);
+    /// @brief Appends a vector splat with its @p markCount marks (none is fine); the list must
+    /// hold marks for all its splats (or be empty).
+    void add(const Splat& splat, const SplatMark* marks, std::size_t markCount);
 
-    /// @brief Removes every splat, keeping the allocated memory for the next frame.
+    /// @brief Removes every splat and mark, keeping the allocated memory for the next frame.
     void clear();
 
-    /// @brief Makes the list exactly @p count splats long (with as many vectors when
-    /// @p withVectors, else none), for a caller that writes them in place through
-    /// writableSplats() and writableVectors(), e.g. from several threads at once. Splats it
-    /// already held are kept (not cleared), so a list refilled with about as many splats as
+    /// @brief Makes the list exactly @p count splats long, and with @p withMarks exactly
+    /// @p markCount marks long with count + 1 mark offsets (else none), for a caller that writes
+    /// them in place through the writable pointers, e.g. from several threads at once. What the
+    /// list already held is kept (not cleared), so a list refilled with about as many splats as
     /// last frame writes no memory twice.
-    void resize(std::size_t count, bool withVectors);
+    void resize(std::size_t count, bool withMarks = false, std::size_t markCount = 0);
 
     /// @brief The splats, to be written in place (see resize()).
     [[nodiscard]] Splat* writableSplats() {
@@ -83,10 +99,17 @@ public:
         return mSplats.data();
     }
 
-    /// @brief The vectors, to be written in place (see resize()); null without vectors.
-    [[nodiscard]] SplatVector* writableVectors() {
+    /// @brief The marks, to be written in place (see resize()); null without marks.
+    [[nodiscard]] SplatMark* writableMarks() {
         ++mRevision;
-        return mVectors.empty() ? nullptr : mVectors.data();
+        return mMarks.data();
+    }
+
+    /// @brief The mark offsets (count + 1 of them, the first 0 and the last the mark count), to
+    /// be written in place (see resize()); null without marks.
+    [[nodiscard]] std::uint32_t* writableMarkBegins() {
+        ++mRevision;
+        return mMarkBegins.empty() ? nullptr : mMarkBegins.data();
     }
 
     /// @brief A number that grows with every change of the list (add(), clear(), resize(),
@@ -101,22 +124,37 @@ public:
     /// @brief Whether the list holds no splat.
     [[nodiscard]] bool isEmpty() const { return mSplats.empty(); }
 
-    /// @brief Whether the list carries the vector part (`vectors().size() == size()`).
-    [[nodiscard]] bool hasVectors() const { return !mVectors.empty(); }
+    /// @brief Whether the list carries marks (`markBegins().size() == size() + 1`).
+    [[nodiscard]] bool hasMarks() const { return !mMarkBegins.empty(); }
 
     /// @brief The scalar part, back to front.
     [[nodiscard]] const std::vector<Splat>& splats() const { return mSplats; }
 
+    /// @brief The marks of all splats, splat by splat in the splats' order.
+    [[nodiscard]] const std::vector<SplatMark>& marks() const { return mMarks; }
+
+    /// @brief Where splat @p splat's marks start in marks() (@p splat may be size(): the mark
+    /// count); 0 for a list without marks.
+    [[nodiscard]] std::size_t markBegin(std::size_t splat) const {
+        return mMarkBegins.empty() ? 0 : mMarkBegins[splat];
+    }
+
+    /// @brief The mark offsets (size() + 1), or empty for a list without marks.
+    [[nodiscard]] const std::vector<std::uint32_t>& markBegins() const { return mMarkBegins; }
+
+    /// @brief The most marks a list may hold: offsets are 32-bit.
+    static constexpr std::size_t kMaxMarks = 0xffffffffu;
+
     /// @brief Bytes the list holds (its allocated capacity).
     [[nodiscard]] std::uint64_t memoryBytes() const {
-        return mSplats.capacity() * sizeof(Splat) + mVectors.capacity() * sizeof(SplatVector);
+        return mSplats.capacity() * sizeof(Splat) + mMarks.capacity() * sizeof(SplatMark) +
+               mMarkBegins.capacity() * sizeof(std::uint32_t);
     }
-    /// @brief The vector part, parallel to `splats()`, or empty for scalar splats.
-    [[nodiscard]] const std::vector<SplatVector>& vectors() const { return mVectors; }
 
 private:
     std::vector<Splat> mSplats;
-    std::vector<SplatVector> mVectors;
+    std::vector<SplatMark> mMarks;
+    std::vector<std::uint32_t> mMarkBegins; // size() + 1 offsets into mMarks, or none
     std::uint64_t mRevision = 0;
 };
 

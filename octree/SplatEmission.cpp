@@ -7,6 +7,7 @@
 #include "octree/View.h"
 #include "octree/detail/BackToFront.h"
 #include "scenegraph/Assert.h"
+#include "scenegraph/Error.h"
 #include "scenegraph/Random.h"
 
 #include <glm/geometric.hpp>
@@ -17,52 +18,115 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numeric>
+#include <string>
 #include <vector>
 
 namespace texsplat::octree {
+double MarkEmission::expectedMarks(std::uint64_t voxels) const {
+    return std::min(marksPerVoxel * static_cast<double>(voxels), double(kMaxMarksPerSplat));
+}
+
 namespace {
+
+// The random stream of the marks of the splat named by `key` (a voxel's index or a node's key).
+sg::Random markRandom(const MarkEmission& emission, std::uint64_t key) {
+    constexpr std::uint64_t kMarkStream = 0x6d61726b73ull; // apart from other uses of the key
+    return sg::Random(
+        sg::Random::mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32) ^ kMarkStream));
+}
+
+// How many marks a splat standing for `voxels` non-empty voxels carries: the expectation's whole
+// part, and one more with the probability of its fraction (the stream's first draw).
+int markCount(const MarkEmission& emission, std::uint64_t voxels, sg::Random& random) {
+    const double expected = emission.expectedMarks(voxels);
+    const double whole = std::floor(expected);
+    return static_cast<int>(whole) + (random.uniform() < expected - whole ? 1 : 0);
+}
+
+// A mark at a random point of `voxel`'s cell carrying its vector and medium.
+SplatMark markInCell(const ClassifiedGrid& grid, glm::u64vec3 voxel, sg::Random& random) {
+    glm::dvec3 at(voxel);
+    for (int axis = 0; axis < 3; ++axis) {
+        at[axis] += random.uniform(-0.5, 0.5);
+    }
+    const glm::vec4 medium = grid.voxel(voxel);
+    SplatMark mark;
+    mark.position = glm::vec3(grid.toWorld(at));
+    mark.phase = static_cast<float>(random.uniform());
+    mark.vector = grid.vector(voxel);
+    mark.extinction = medium.w;
+    mark.color = glm::vec3(medium);
+    return mark;
+}
 
 // A coarse node's key: its level above the voxel bits, so it never equals a voxel's index.
 std::uint64_t nodeKey(const NodeRef& node) {
     return node.index ^ (static_cast<std::uint64_t>(node.level) << 58);
 }
 
-} // namespace
-
-int tableColumn(float towardEye, int columns) {
-    TEXSPLAT_ASSERT(columns >= 1, "tableColumn(): no columns");
-    if (!(std::abs(towardEye) >= 0.0f)) {
-        return 0;
-    }
-    const float z = std::min(std::abs(towardEye), 1.0f);
-    return static_cast<int>(std::lround(z * static_cast<float>(columns - 1)));
+// Whether a vector can orient a mark: finite and not zero.
+bool isDirection(glm::vec3 vector) {
+    return std::isfinite(vector.x) && std::isfinite(vector.y) && std::isfinite(vector.z) &&
+           vector != glm::vec3(0.0f);
 }
 
-SplatVector vectorSplat(const VectorEmission& emission, glm::vec3 position, glm::vec3 vector,
-                        std::uint64_t key) {
-    SplatVector result;
-    result.vector = vector;
-    result.row = static_cast<std::uint16_t>(
-        sg::Random::mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32)) %
-        static_cast<std::uint64_t>(emission.rows));
-    // In double: a huge vector's squared length overflows float.
-    const glm::dvec3 camera = glm::dmat3(glm::mat3(emission.localToCamera)) * glm::dvec3(vector);
-    const double length = glm::length(camera);
-    if (!(length > 0.0) || !std::isfinite(length)) {
-        return result;
-    }
-    glm::dvec3 toEye(0.0, 0.0, 1.0);
-    if (emission.isPerspective) {
-        const glm::dvec3 centre(emission.localToCamera * glm::vec4(position, 1.0f));
-        const double distance = glm::length(centre);
-        if (distance > 0.0) {
-            toEye = -centre / distance;
+// A non-empty voxel of `node`, each with the same chance: down the tree, a child with the
+// chance of its share of the node's non-empty voxels.
+glm::u64vec3 randomVoxel(const Octree& octree, NodeRef node, sg::Random& random) {
+    std::array<NodeRef, 8> children;
+    while (node.level > 0) {
+        const int count = octree.children(node, children);
+        TEXSPLAT_ASSERT(count > 0, "randomVoxel(): a node of the tree without children");
+        std::uint64_t total = 0;
+        std::array<std::uint64_t, 8> weights{};
+        for (int c = 0; c < count; ++c) {
+            weights[static_cast<std::size_t>(c)] =
+                children[static_cast<std::size_t>(c)].level == 0
+                    ? 1
+                    : octree
+                          .nodes()[static_cast<std::size_t>(
+                              children[static_cast<std::size_t>(c)].index)]
+                          .nonEmptyCount;
+            total += weights[static_cast<std::size_t>(c)];
         }
+        std::uint64_t pick = random.nextBits() % total;
+        int chosen = 0;
+        while (pick >= weights[static_cast<std::size_t>(chosen)]) {
+            pick -= weights[static_cast<std::size_t>(chosen++)];
+        }
+        node = children[static_cast<std::size_t>(chosen)];
     }
-    result.column = static_cast<std::uint16_t>(tableColumn(
-        static_cast<float>(glm::dot(camera, toEye) / length), emission.columns));
-    return result;
+    return node.coord;
+}
+
+} // namespace
+
+int voxelMarks(const MarkEmission& emission, const ClassifiedGrid& grid, glm::u64vec3 voxel,
+               SplatMark* out) {
+    if (!isDirection(grid.vector(voxel))) {
+        return 0;
+    }
+    sg::Random random = markRandom(emission, grid.index(voxel));
+    const int count = markCount(emission, 1, random);
+    for (int i = 0; i < count; ++i) {
+        out[i] = markInCell(grid, voxel, random);
+    }
+    return count;
+}
+
+int nodeMarks(const MarkEmission& emission, const Octree& octree, const NodeRef& node,
+              SplatMark* out) {
+    const ClassifiedGrid& grid = octree.grid();
+    if (node.level == 0) {
+        return voxelMarks(emission, grid, node.coord, out);
+    }
+    sg::Random random = markRandom(emission, nodeKey(node));
+    const std::uint64_t voxels = octree.nodes()[static_cast<std::size_t>(node.index)].nonEmptyCount;
+    const int count = markCount(emission, voxels, random);
+    for (int i = 0; i < count; ++i) {
+        out[i] = markInCell(grid, randomVoxel(octree, node, random), random);
+    }
+    return count;
 }
 
 namespace {
@@ -116,69 +180,103 @@ std::vector<NodeRef> traversalPieces(const detail::BackToFrontDescent& descent,
 
 } // namespace
 
-void emitSplats(const Cut& cut, const View& view, SplatList& splats,
-                const VectorEmission* vectors) {
+namespace {
+
+// A piece of the list being written: where its splats and marks start.
+struct ListOffsets {
+    std::size_t splats = 0;
+    std::size_t marks = 0;
+};
+
+// Lays counted pieces end to end (`offsets[i + 1]` holds piece i's counts, `offsets[0]` zeros)
+// and sizes `splats` for them.
+void layOut(std::vector<ListOffsets>& offsets, SplatList& splats, bool withMarks) {
+    for (std::size_t i = 1; i < offsets.size(); ++i) {
+        offsets[i].splats += offsets[i - 1].splats;
+        offsets[i].marks += offsets[i - 1].marks;
+    }
+    if (withMarks && offsets.back().marks > SplatList::kMaxMarks) {
+        throw DataError("vector splats: " + std::to_string(offsets.back().marks) +
+                        " marks are more than a splat list holds (" +
+                        std::to_string(SplatList::kMaxMarks) + "); lower markDensity");
+    }
+    splats.resize(offsets.back().splats, withMarks, offsets.back().marks);
+}
+
+// Writes one splat and its marks at `at`, moving `at` on.
+void write(Splat* out, SplatMark* outMarks, std::uint32_t* begins, ListOffsets& at,
+           const Splat& splat, const SplatMark* marks, int markCount) {
+    out[at.splats] = splat;
+    if (begins != nullptr) {
+        begins[at.splats] = static_cast<std::uint32_t>(at.marks);
+        std::copy(marks, marks + markCount, outMarks + at.marks);
+        at.marks += static_cast<std::size_t>(markCount);
+        begins[at.splats + 1] = static_cast<std::uint32_t>(at.marks);
+    }
+    ++at.splats;
+}
+
+} // namespace
+
+void emitSplats(const Cut& cut, const View& view, SplatList& splats, const MarkEmission* marks) {
     const Octree& octree = cut.octree();
-    TEXSPLAT_ASSERT(!vectors || octree.grid().hasVectors(),
+    TEXSPLAT_ASSERT(!marks || octree.grid().hasVectors(),
                     "emitSplats(): vector splats need vectors");
     splats.clear();
     if (octree.isEmpty()) {
         return;
     }
     const detail::BackToFrontDescent descent(cut, view);
+    // Calls add(splat, marks, markCount) for the splats of the traversal piece from `start`.
     const auto emit = [&](const NodeRef& start, auto&& add) {
+        std::array<SplatMark, MarkEmission::kMaxMarksPerSplat> placed;
         detail::forEachBackToFrontFrom(descent, start, [&](const NodeRef& node) {
             const Splat splat = splatOf(octree, node);
-            if (vectors) {
-                add(splat, vectorSplat(*vectors, splat.position, octree.meanVector(node),
-                                       nodeKey(node)));
-            } else {
-                add(splat, SplatVector{});
-            }
+            const int count = marks != nullptr ? nodeMarks(*marks, octree, node, placed.data()) : 0;
+            add(splat, placed.data(), count);
         });
     };
     const auto threads = static_cast<std::size_t>(tbb::this_task_arena::max_concurrency());
     if (threads == 1) {
-        splats.reserve(static_cast<std::size_t>(cut.splatCount()), vectors != nullptr);
-        emit(octree.root(), [&](const Splat& splat, const SplatVector& vector) {
-            if (vectors) {
-                splats.add(splat, vector);
+        splats.reserve(static_cast<std::size_t>(cut.splatCount()), marks != nullptr);
+        emit(octree.root(), [&](const Splat& splat, const SplatMark* placed, int markCount) {
+            if (marks != nullptr) {
+                splats.add(splat, placed, static_cast<std::size_t>(markCount));
             } else {
                 splats.add(splat);
             }
         });
         return;
     }
-    // Pieces of the traversal on all threads: each counts its splats, the pieces are laid end to
-    // end, and each writes its splats at its offset. The serial traversal's list for any number of
-    // threads, in the list's own memory (arrays per piece, copied in, held a cut's list twice and
-    // faulted it in anew every frame). Many more pieces than threads, as subtrees differ in size.
+    // Pieces of the traversal on all threads: each counts its splats and marks, the pieces are
+    // laid end to end, and each writes at its offset. The serial traversal's list for any
+    // number of threads, in the list's own memory (arrays per piece, copied in, held a cut's list
+    // twice and faulted it in anew every frame). Many more pieces than threads, as subtrees
+    // differ in size.
     const std::vector<NodeRef> starts = traversalPieces(descent, 32 * threads);
-    std::vector<std::size_t> offsets(starts.size() + 1, 0);
+    std::vector<ListOffsets> offsets(starts.size() + 1);
     tbb::parallel_for(std::size_t{0}, starts.size(), [&](std::size_t i) {
-        std::size_t count = 0;
-        detail::forEachBackToFrontFrom(descent, starts[i], [&](const NodeRef&) { ++count; });
-        offsets[i + 1] = count;
+        ListOffsets& count = offsets[i + 1];
+        emit(starts[i], [&](const Splat&, const SplatMark*, int markCount) {
+            ++count.splats;
+            count.marks += static_cast<std::size_t>(markCount);
+        });
     });
-    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-    splats.resize(offsets.back(), vectors != nullptr);
+    layOut(offsets, splats, marks != nullptr);
     Splat* const out = splats.writableSplats();
-    SplatVector* const outVectors = splats.writableVectors();
+    SplatMark* const outMarks = splats.writableMarks();
+    std::uint32_t* const begins = splats.writableMarkBegins();
     tbb::parallel_for(std::size_t{0}, starts.size(), [&](std::size_t i) {
-        std::size_t next = offsets[i];
-        emit(starts[i], [&](const Splat& splat, const SplatVector& vector) {
-            out[next] = splat;
-            if (vectors) {
-                outVectors[next] = vector;
-            }
-            ++next;
+        ListOffsets at = offsets[i];
+        emit(starts[i], [&](const Splat& splat, const SplatMark* placed, int markCount) {
+            write(out, outMarks, begins, at, splat, placed, markCount);
         });
     });
 }
 
 void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats,
-                     const VectorEmission* vectors) {
-    TEXSPLAT_ASSERT(!vectors || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
+                     const MarkEmission* marks) {
+    TEXSPLAT_ASSERT(!marks || grid.hasVectors(), "emitVoxelSplats(): vector splats need vectors");
     const SliceOrder order(grid, view);
     // The voxel centres' box in front of the eye: no voxel can be behind it.
     const bool cullsBehindEye =
@@ -189,41 +287,46 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
         return grid.storedVoxel(stored) != glm::vec4(0.0f) &&
                !(cullsBehindEye && view.depth(grid.toWorld(glm::dvec3(voxel))) <= 0.0);
     };
-    // Slices in parallel: count each one's splats, lay the slices end to end, then write each
-    // slice's splats at its offset. The list is exactly as long as its splats (no growth by
+    // Calls add(voxel, stored, marks, markCount) for the drawn voxels of `slice`.
+    const auto emit = [&](std::size_t slice, auto&& add) {
+        std::array<SplatMark, MarkEmission::kMaxMarksPerSplat> placed;
+        order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
+            if (isDrawn(voxel, stored)) {
+                add(voxel, stored, placed.data(),
+                    marks != nullptr ? voxelMarks(*marks, grid, voxel, placed.data()) : 0);
+            }
+        });
+    };
+    // Slices in parallel: count each one's splats and marks, lay the slices end to end, then
+    // write each slice's at its offset. The list is exactly as long as its splats (no growth by
     // doubling, which would hold the old and the new array at once), and the same for any number
     // of threads.
     const std::size_t slices = order.sliceCount();
-    std::vector<std::size_t> offsets(slices + 1, 0);
+    std::vector<ListOffsets> offsets(slices + 1);
     tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
-        std::size_t count = 0;
-        order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
-            count += isDrawn(voxel, stored) ? 1 : 0;
-        });
-        offsets[slice + 1] = count;
+        ListOffsets& count = offsets[slice + 1];
+        emit(slice,
+             [&](glm::u64vec3, ClassifiedGrid::StorageIndex, const SplatMark*, int markCount) {
+                 ++count.splats;
+                 count.marks += static_cast<std::size_t>(markCount);
+             });
     });
-    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-    splats.resize(offsets.back(), vectors != nullptr);
+    layOut(offsets, splats, marks != nullptr);
     Splat* const out = splats.writableSplats();
-    SplatVector* const outVectors = splats.writableVectors();
+    SplatMark* const outMarks = splats.writableMarks();
+    std::uint32_t* const begins = splats.writableMarkBegins();
     tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
-        std::size_t next = offsets[slice];
-        order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
-            if (!isDrawn(voxel, stored)) {
-                return;
-            }
+        ListOffsets at = offsets[slice];
+        emit(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored,
+                        const SplatMark* placed, int markCount) {
             const glm::vec4 value = grid.storedVoxel(stored);
             // Every member: the list may be refilled over an octree cut's coarse splats.
-            Splat& splat = out[next];
+            Splat splat;
             splat.position = glm::vec3(grid.toWorld(glm::dvec3(voxel)));
             splat.size = 1.0f;
             splat.color = glm::vec3(value);
             splat.extinction = value.w;
-            if (vectors) {
-                outVectors[next] = vectorSplat(*vectors, splat.position, grid.storedVector(stored),
-                                               grid.index(voxel));
-            }
-            ++next;
+            write(out, outMarks, begins, at, splat, placed, markCount);
         });
     });
 }

@@ -271,11 +271,9 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
             if (backend == render::Backend::Gl) {
                 auto& splatNode = static_cast<nodes::ScalarSplat&>(*node);
                 // The ceiling draws the very list this method draws (the full list, or its
-                // octree cut), with quads as large as the method's (vector marks reach past the
-                // scalar splat).
-                const auto* marks = dynamic_cast<const nodes::VectorMarkSplat*>(node.get());
-                const float extent =
-                    splatNode.size.value() * (marks ? marks->windowScale.value() : 1.0f);
+                // octree cut) as quads of the scalar splat's size (vector splats' marks are
+                // thinner: their ceiling is the scalar splats').
+                const float extent = splatNode.size.value();
                 octree::SplatList cutList;
                 if (method.budget > 0.0) {
                     emitCut(source, static_cast<std::size_t>(splatNode.maxSplats.value()),

@@ -20,7 +20,11 @@ namespace {
 // octree/DepthSort.cpp), and one camera depth.
 constexpr std::uint64_t kBytesPerSplat =
     2 * sizeof(octree::Splat) + 2 * sizeof(std::uint64_t) + sizeof(float);
-constexpr std::uint64_t kBytesPerVectorSplat = 2 * sizeof(octree::SplatVector);
+// Per vector splat, the same twice: its mark offset and, as a bound, one mark (the marks cover the
+// image markDensity times over, which takes fewer than one per voxel but for data a few voxels
+// deep).
+constexpr std::uint64_t kBytesPerVectorSplat =
+    2 * (sizeof(std::uint32_t) + sizeof(octree::SplatMark));
 
 std::string dimsText(const glm::i64vec3& dims) {
     return std::to_string(dims.x) + "x" + std::to_string(dims.y) + "x" + std::to_string(dims.z);
@@ -61,11 +65,8 @@ SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool
                                                            dims, std::min(boxBlocks, stored)));
     }
     // Records exist for non-empty nodes of level >= 1: at most one per 7 non-empty voxels
-    // (1/8 + 1/64 + ...), with a mean vector each for vector grids.
-    memory.octree =
-        withOctree ? byteProduct(stored / 7 + 1, sizeof(octree::OctreeNode) +
-                                                     (withVectors ? sizeof(glm::vec3) : 0))
-                   : 0;
+    // (1/8 + 1/64 + ...).
+    memory.octree = withOctree ? byteProduct(stored / 7 + 1, sizeof(octree::OctreeNode)) : 0;
     const std::uint64_t splats = maxSplats > 0 ? std::min(stored, maxSplats) : stored;
     memory.splats =
         byteProduct(splats, kBytesPerSplat + (withVectors ? kBytesPerVectorSplat : 0));

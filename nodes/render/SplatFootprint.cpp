@@ -2,13 +2,21 @@
 
 #include "nodes/kernel/FootprintTexture.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace texsplat::render {
 
 double SplatFootprint::reach() const {
-    const bool radial = shape == SplatShape::TexturedSquare || shape == SplatShape::GouraudPolygon;
-    return radial && texture ? texture->reach() : extent * std::sqrt(2.0);
+    const double footprint = texture ? texture->reach() : extent * std::sqrt(2.0);
+    switch (shape) {
+    case SplatShape::VectorMarks:
+        return markReach;
+    case SplatShape::CombinedMarks:
+        return std::max(footprint, markReach);
+    default:
+        return footprint;
+    }
 }
 
 } // namespace texsplat::render

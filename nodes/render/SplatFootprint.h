@@ -5,7 +5,6 @@
 namespace texsplat::kernel {
 class FootprintTexture;
 class RadialKernel;
-class VectorSplatTable;
 } // namespace texsplat::kernel
 
 namespace texsplat::render {
@@ -18,23 +17,24 @@ enum class SplatShape {
     /// A polygonal fan with the footprint sampled at its vertices and Gouraud shaded: the
     /// baseline of the paper's figure 4a (Explorer's Gaussian splats, after Laur & Hanrahan).
     GouraudPolygon,
-    /// One square turned to the splat's projected vector, carrying a texture of the vector
-    /// splat table (Crawfis & Max 1993, "Combined Vector and Scalar Textures"): marks only.
-    VectorSquare,
-    /// The same square carrying the scalar footprint too: the scalar splat's reconstruction with
-    /// the marks in its colour, one pass.
-    CombinedSquare,
+    /// The splat's marks only (Crawfis & Max 1993, "Combined Vector and Scalar Textures": "tiny
+    /// vector particles, or scratch marks"), each an oriented streak along the projected
+    /// vector (render::ScreenMarks).
+    VectorMarks,
+    /// A TexturedSquare's scalar reconstruction with the splat's marks drawn over it, splat by
+    /// splat.
+    CombinedMarks,
 };
 
 /// @brief What one splat looks like, for any backend: the shape and the tabulated kernel data a
-/// splat node describes (docs/design.md, "Data flow of one frame": "the tabulated kernel footprint,
-/// and for vector splats the mark table"). Immutable once made; nodes share one per field state.
+/// splat node describes (docs/design.md, "Data flow of one frame"). Immutable once made; nodes
+/// share one per field state. How marks are drawn each frame is the batch's MarkDrawing.
 struct SplatFootprint {
     /// @brief What each splat is drawn as.
     SplatShape shape = SplatShape::TexturedSquare;
     /// @brief Half-width of the splat's square (or fan) in voxels at size 1.
     double extent = 1.6;
-    /// @brief The footprint over the square [−extent, extent]² (TexturedSquare, CombinedSquare),
+    /// @brief The footprint over the square [−extent, extent]² (TexturedSquare, CombinedMarks),
     /// or for the GouraudPolygon the fan's piecewise-linear footprint tabulated over the same
     /// square (what a backend without polygons draws).
     std::shared_ptr<const kernel::FootprintTexture> texture;
@@ -43,14 +43,18 @@ struct SplatFootprint {
     std::shared_ptr<const kernel::RadialKernel> kernel;
     int radialSamples = 3;  ///< GouraudPolygon: centre and rings of the fan
     int azimuthSamples = 7; ///< GouraudPolygon: vertices per ring
-    /// @brief VectorSquare, CombinedSquare: the vector splat table.
-    std::shared_ptr<const kernel::VectorSplatTable> table;
-
+    /// @brief VectorMarks, CombinedMarks: how far from the splat's centre its marks reach, in
+    /// voxels at size 1 (the cell's corner, a mark length for half a mark and half its travel,
+    /// half a mark width), not counting the least width and length in pixels.
+    double markReach = 0.0;
+    /// @brief Whether the splats carry marks.
+    bool hasMarks() const {
+        return shape == SplatShape::VectorMarks || shape == SplatShape::CombinedMarks;
+    }
     /// @brief How far from its centre, in voxels at size 1, a splat draws anything: where the
     /// footprint texture is not 0 (TexturedSquare: the kernel's support, 1.556 for the paper's;
-    /// GouraudPolygon: the fan), or the corner of a square that turns with its vector
-    /// (VectorSquare, CombinedSquare: the marks fill it). SplatView::refinementView() widens a
-    /// node by it.
+    /// GouraudPolygon: the fan), or its marks' reach (VectorMarks; CombinedMarks: the farther of
+    /// the two). SplatView::refinementView() widens a node by it.
     double reach() const;
 };
 

@@ -311,8 +311,8 @@ TEST_F(BenchCommandTest, timesTheFrameAfterATransferFunctionEditAgainstAFreshSce
     const auto noEditForImages = runTexsplat("bench " + scene + " --images " + path(""));
     EXPECT_EQ(noEditForImages.exitCode, 1);
     EXPECT_EQ(noEditForImages.standardError,
-              "texsplat: error: --images: only with --transfer-edit (it writes the frames after "
-              "the edits)\n");
+              "texsplat: error: --images: only with --transfer-edit or --legibility (it writes the "
+              "frames they measure)\n");
     auto noEdit = runTexsplat("bench --transfer-edit 200");
     EXPECT_EQ(noEdit.exitCode, 1);
     EXPECT_EQ(noEdit.standardError, "texsplat: error: --transfer-edit: only with a SCENE (its "

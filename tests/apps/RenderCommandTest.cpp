@@ -406,11 +406,11 @@ TEST_F(RenderCommandTest, rendersWithEitherBackendAndNamesItInTheTimeReport) {
 }
 
 TEST_F(RenderCommandTest, vectorSplatsRenderOnTheCpuBackendAsOnGl) {
-    const std::string scene = write(
-        "winds.iv", "#Inventor V2.1 ascii\nSeparator {\n"
-                    "TransferFunction { range 0 0.32 opacities [ 0, 60 ] }\n"
-                    "VolumeData { source TORNADO resolution 8 8 8 }\n"
-                    "VectorSplat { operator BLEND stretch 1.5 }\n}\n");
+    const std::string scene =
+        write("winds.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                          "TransferFunction { range 0 0.32 opacities [ 0, 60 ] }\n"
+                          "VolumeData { source TORNADO resolution 8 8 8 }\n"
+                          "VectorSplat { operator BLEND markLength 4 }\n}\n");
     std::vector<Image> images;
     for (const char* backend : {"cpu", "gl"}) {
         const std::string output = path(std::string("winds-") + backend + ".png");

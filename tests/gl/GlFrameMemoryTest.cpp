@@ -4,6 +4,7 @@
 // neither grids, classified voxels, splats nor textures for a scene of meshes alone.
 #include "SplatTestSupport.h"
 
+#include "nodes/CombinedSplat.h"
 #include "nodes/Coordinate3.h"
 #include "nodes/IndexedFaceSet.h"
 #include "nodes/PerspectiveCamera.h"
@@ -41,8 +42,11 @@ TEST(GlFrameMemory, aFrameHoldsOnlyTheTexturesItsSplatsUse) {
     EXPECT_GT(scalar.classified, 0u);
     EXPECT_GT(scalar.splats, 0u);
     EXPECT_GT(scalar.textures, 0u); // the footprint
+    // Marks are drawn from their shape, without a texture; combined splats use the footprint's.
     const sg::FrameMemory vector = glFrameMemory({tornado(), glow(), VectorSplat::create()});
-    EXPECT_GT(vector.textures, scalar.textures) << "the mark table comes with vector splats only";
+    EXPECT_EQ(vector.textures, 0u);
+    const sg::FrameMemory combined = glFrameMemory({tornado(), glow(), CombinedSplat::create()});
+    EXPECT_EQ(combined.textures, scalar.textures);
 
     Coordinate3::Ptr corners = Coordinate3::create();
     corners->point.setValue({glm::vec3(0.0f), glm::vec3(1.0f, 0.0f, 0.0f),

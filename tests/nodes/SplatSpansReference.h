@@ -177,7 +177,7 @@ struct CompositeWorkload {
 inline std::vector<render::cpu::SplatRaster> setUpSplats(const render::cpu::SplatSetup& setup,
                                                          const std::vector<octree::Splat>& splats) {
     std::vector<render::cpu::SplatRaster> rasters(splats.size());
-    setup.setUp(splats.data(), nullptr, splats.size(), rasters.data());
+    setup.setUp(splats.data(), splats.size(), rasters.data());
     return rasters;
 }
 
@@ -215,7 +215,7 @@ inline CompositeWorkload compositeWorkload(const std::string& dataset, const std
     workload.height = size;
     // As CpuRenderer sets them up: a radial footprint's boxes bound its disc.
     auto setup = std::make_shared<render::cpu::SplatSetup>(
-        batch.view, static_cast<float>(batch.footprint->extent), size, size, std::nullopt,
+        batch.view, static_cast<float>(batch.footprint->extent), size, size,
         discRadius && workload.sampler->isRadial ? std::sqrt(workload.sampler->reach) : 0.0f);
     if (stamped) {
         setup->stampFootprint(*workload.sampler);

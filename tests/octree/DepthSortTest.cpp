@@ -21,7 +21,7 @@ using texsplat::octree::DepthSorter;
 using texsplat::octree::Octree;
 using texsplat::octree::Splat;
 using texsplat::octree::SplatList;
-using texsplat::octree::SplatVector;
+using texsplat::octree::SplatMark;
 using texsplat::octree::View;
 using texsplat::octree::test::randomGrid;
 
@@ -93,20 +93,30 @@ TEST(DepthSort, ordersByDecreasingCentreDepthLikeAStableSort) {
     }
 }
 
-TEST(DepthSort, carriesTheVectorsAlong) {
+TEST(DepthSort, carriesEachSplatsMarksAlong) {
+    // Splat i has i marks, mark j of it the phase i + j / 10.
     SplatList splats;
     for (int i = 0; i < 5; ++i) {
         Splat splat;
         splat.position = glm::vec3(0.0f, 0.0f, static_cast<float>((i * 3) % 5) - 2.0f);
-        SplatVector vector;
-        vector.row = static_cast<std::uint16_t>(i);
-        splats.add(splat, vector);
+        std::vector<SplatMark> marks(static_cast<std::size_t>(i));
+        for (int j = 0; j < i; ++j) {
+            marks[static_cast<std::size_t>(j)].phase = static_cast<float>(i) + 0.1f * j;
+        }
+        splats.add(splat, marks.data(), marks.size());
     }
     sortByDepth(splats, View::orthographic({0.0, 0.0, -1.0}));
-    ASSERT_TRUE(splats.hasVectors());
+    ASSERT_TRUE(splats.hasMarks());
+    ASSERT_EQ(splats.marks().size(), 10u);
     for (std::size_t i = 0; i < splats.size(); ++i) {
         EXPECT_EQ(splats.splats()[i].position.z, static_cast<float>(i) - 2.0f);
-        EXPECT_EQ((splats.vectors()[i].row * 3) % 5, static_cast<int>(i));
+        // Splat i of the sorted list came from splat s with (s * 3) % 5 == i.
+        const int source = static_cast<int>((i * 2) % 5);
+        ASSERT_EQ(splats.markBegin(i + 1) - splats.markBegin(i), static_cast<std::size_t>(source));
+        for (int j = 0; j < source; ++j) {
+            EXPECT_EQ(splats.marks()[splats.markBegin(i) + static_cast<std::size_t>(j)].phase,
+                      static_cast<float>(source) + 0.1f * j);
+        }
     }
 }
 
@@ -129,18 +139,19 @@ TEST(DepthSort, overlappingSplatsComeFarthestCentreFirst) {
 namespace {
 
 // @p count splats whose depths along z take only @p depths values (so most of them tie), each
-// carrying its index in the list (colour red) and, with vectors, in its vector's row.
-SplatList tiedSplats(std::size_t count, int depths, bool withVectors) {
+// carrying its index in the list (colour red) and, with marks, i % 3 marks whose phase is i.
+SplatList tiedSplats(std::size_t count, int depths, bool withMarks) {
     SplatList splats;
     for (std::size_t i = 0; i < count; ++i) {
         Splat splat;
         splat.position = glm::vec3(static_cast<float>(i % 7), 0.0f,
                                    static_cast<float>((i * 7919) % static_cast<std::size_t>(depths)));
         splat.color.r = static_cast<float>(i);
-        if (withVectors) {
-            SplatVector vector;
-            vector.row = static_cast<std::uint16_t>(i % 65536);
-            splats.add(splat, vector);
+        if (withMarks) {
+            SplatMark mark;
+            mark.phase = static_cast<float>(i);
+            const std::vector<SplatMark> marks(i % 3, mark);
+            splats.add(splat, marks.data(), marks.size());
         } else {
             splats.add(splat);
         }
@@ -182,33 +193,37 @@ TEST(DepthSorter, sortsTiesAcrossChunksStablyOnAnyNumberOfThreads) {
         SplatList splats = unsorted;
         tbb::task_arena(threads).execute([&] { DepthSorter().sort(splats, view); });
         EXPECT_EQ(indicesOf(splats), expected) << threads << " threads";
-        ASSERT_TRUE(splats.hasVectors());
+        ASSERT_TRUE(splats.hasMarks());
         for (std::size_t i = 0; i < splats.size(); ++i) {
-            ASSERT_EQ(splats.vectors()[i].row,
-                      static_cast<std::uint16_t>(static_cast<std::size_t>(expected[i]) % 65536));
+            const auto source = static_cast<std::size_t>(expected[i]);
+            ASSERT_EQ(splats.markBegin(i + 1) - splats.markBegin(i), source % 3);
+            for (std::size_t m = splats.markBegin(i); m < splats.markBegin(i + 1); ++m) {
+                ASSERT_EQ(splats.marks()[m].phase, expected[i]);
+            }
         }
     }
 }
 
 TEST(DepthSorter, keepsItsBuffersAndSortsEachListAnew) {
     // One sorter, as a splat node keeps it: lists shrinking, growing, losing and gaining their
-    // vectors, each sorted as a fresh sortByDepth() sorts it.
+    // marks, each sorted as a fresh sortByDepth() sorts it.
     DepthSorter sorter;
     const View view = View::perspective({3.0, -2.0, -5.0}, {0.0, 0.0, 1.0});
-    for (const auto& [count, withVectors] : {std::pair<std::size_t, bool>{70000, false},
-                                             {5, true},
-                                             {0, false},
-                                             {40000, true},
-                                             {33000, false}}) {
-        SplatList splats = tiedSplats(count, 11, withVectors);
+    for (const auto& [count, withMarks] : {std::pair<std::size_t, bool>{70000, false},
+                                           {5, true},
+                                           {0, false},
+                                           {40000, true},
+                                           {33000, false}}) {
+        SplatList splats = tiedSplats(count, 11, withMarks);
         SplatList expected = splats;
         sortByDepth(expected, view);
         const std::uint64_t revision = splats.revision();
         sorter.sort(splats, view);
         EXPECT_EQ(indicesOf(splats), indicesOf(expected)) << count << " splats";
-        EXPECT_EQ(splats.hasVectors(), withVectors && count > 0);
+        EXPECT_EQ(splats.hasMarks(), withMarks && count > 0);
+        EXPECT_EQ(splats.marks(), expected.marks());
         EXPECT_GT(splats.revision(), revision) << "a backend must see the list changed";
-        EXPECT_EQ(indicesOf(expected), stableSortedIndices(tiedSplats(count, 11, withVectors), view));
+        EXPECT_EQ(indicesOf(expected), stableSortedIndices(tiedSplats(count, 11, withMarks), view));
     }
     EXPECT_GE(sorter.memoryBytes(), 70000u * 2 * sizeof(std::uint64_t)) << "the keys are kept";
 }

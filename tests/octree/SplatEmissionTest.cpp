@@ -34,7 +34,7 @@ TEST(SplatEmission, emitsOneSplatPerCutNodeInTraversalOrder) {
     traverseBackToFront(cut, view, [&](const NodeRef& node) { nodes.push_back(node); });
     ASSERT_EQ(splats.size(), cut.splatCount());
     ASSERT_EQ(splats.size(), nodes.size());
-    EXPECT_FALSE(splats.hasVectors());
+    EXPECT_FALSE(splats.hasMarks());
     bool coarse = false;
     for (std::size_t i = 0; i < nodes.size(); ++i) {
         const Splat& splat = splats.splats()[i];
@@ -132,15 +132,15 @@ TEST(SplatEmission, voxelSplatsAreTheSameForAnyNumberOfThreads) {
     const auto emitWith = [&](int threads) {
         SplatList splats;
         tbb::task_arena(threads).execute([&] {
-            texsplat::octree::VectorEmission vectors;
-            vectors.rows = 7;
-            vectors.columns = 5;
-            emitVoxelSplats(*grid, view, splats, &vectors);
+            texsplat::octree::MarkEmission marks;
+            marks.marksPerVoxel = 0.7;
+            emitVoxelSplats(*grid, view, splats, &marks);
         });
         return splats;
     };
     const SplatList serial = emitWith(1);
     ASSERT_GT(serial.size(), 1000u);
+    EXPECT_GT(serial.marks().size(), serial.size() / 2);
     for (const int threads : {2, 7}) {
         const SplatList parallel = emitWith(threads);
         ASSERT_EQ(parallel.size(), serial.size()) << threads << " threads";
@@ -148,10 +148,8 @@ TEST(SplatEmission, voxelSplatsAreTheSameForAnyNumberOfThreads) {
                               serial.size() * sizeof(Splat)),
                   0)
             << threads << " threads";
-        EXPECT_EQ(std::memcmp(parallel.vectors().data(), serial.vectors().data(),
-                              serial.size() * sizeof(texsplat::octree::SplatVector)),
-                  0)
-            << threads << " threads";
+        EXPECT_EQ(parallel.marks(), serial.marks()) << threads << " threads";
+        EXPECT_EQ(parallel.markBegins(), serial.markBegins()) << threads << " threads";
     }
 }
 
@@ -191,10 +189,9 @@ TEST(SplatEmission, cutSplatsAreTheSerialTraversalsForAnyNumberOfThreads) {
             const auto emitWith = [&](int threads) {
                 SplatList splats;
                 tbb::task_arena(threads).execute([&] {
-                    texsplat::octree::VectorEmission vectors;
-                    vectors.rows = 9;
-                    vectors.columns = 4;
-                    emitSplats(cut, view, splats, &vectors);
+                    texsplat::octree::MarkEmission marks;
+                    marks.marksPerVoxel = 0.3;
+                    emitSplats(cut, view, splats, &marks);
                 });
                 return splats;
             };
@@ -217,9 +214,9 @@ TEST(SplatEmission, cutSplatsAreTheSerialTraversalsForAnyNumberOfThreads) {
                                       serial.size() * sizeof(Splat)),
                           0)
                     << "view " << v << ", budget " << budget << ", " << threads << " threads";
-                EXPECT_EQ(std::memcmp(parallel.vectors().data(), serial.vectors().data(),
-                                      serial.size() * sizeof(texsplat::octree::SplatVector)),
-                          0)
+                EXPECT_EQ(parallel.marks(), serial.marks())
+                    << "view " << v << ", budget " << budget << ", " << threads << " threads";
+                EXPECT_EQ(parallel.markBegins(), serial.markBegins())
                     << "view " << v << ", budget " << budget << ", " << threads << " threads";
             }
         }

@@ -7,7 +7,7 @@
 
 using texsplat::octree::Splat;
 using texsplat::octree::SplatList;
-using texsplat::octree::SplatVector;
+using texsplat::octree::SplatMark;
 
 TEST(Splat, layoutIsTwoPackedVec4s) {
     EXPECT_EQ(sizeof(Splat), 32u);
@@ -15,7 +15,7 @@ TEST(Splat, layoutIsTwoPackedVec4s) {
     EXPECT_EQ(offsetof(Splat, size), 12u);
     EXPECT_EQ(offsetof(Splat, color), 16u);
     EXPECT_EQ(offsetof(Splat, extinction), 28u);
-    EXPECT_EQ(sizeof(SplatVector), 16u);
+    EXPECT_EQ(sizeof(SplatMark), 44u);
 }
 
 TEST(SplatList, keepsScalarSplatsInOrder) {
@@ -28,25 +28,36 @@ TEST(SplatList, keepsScalarSplatsInOrder) {
     list.add(first);
     list.add(second);
     ASSERT_EQ(list.size(), 2u);
-    EXPECT_FALSE(list.hasVectors());
+    EXPECT_FALSE(list.hasMarks());
     EXPECT_EQ(list.splats()[0].size, 2.0f);
     EXPECT_EQ(list.splats()[1].extinction, 0.5f);
     list.clear();
     EXPECT_TRUE(list.isEmpty());
 }
 
-TEST(SplatList, keepsVectorsParallelToSplats) {
+TEST(SplatList, keepsEachSplatsMarksInOrder) {
     SplatList list;
     list.reserve(4, true);
-    SplatVector vector;
-    vector.vector = glm::vec3(1.0f, 0.0f, 0.0f);
-    vector.row = 3;
-    vector.column = 7;
-    list.add(Splat{}, vector);
-    ASSERT_TRUE(list.hasVectors());
-    ASSERT_EQ(list.vectors().size(), list.size());
-    EXPECT_EQ(list.vectors()[0].row, 3);
-    EXPECT_EQ(list.vectors()[0].column, 7);
+    SplatMark marks[3];
+    for (int i = 0; i < 3; ++i) {
+        marks[i].vector = glm::vec3(1.0f, 0.0f, 0.0f);
+        marks[i].phase = 0.25f * static_cast<float>(i);
+    }
+    list.add(Splat{}, marks, 2);
+    list.add(Splat{}, marks, 0);
+    list.add(Splat{}, marks + 2, 1);
+    ASSERT_TRUE(list.hasMarks());
+    ASSERT_EQ(list.markBegins().size(), list.size() + 1);
+    ASSERT_EQ(list.marks().size(), 3u);
+    EXPECT_EQ(list.markBegin(0), 0u);
+    EXPECT_EQ(list.markBegin(1), 2u);
+    EXPECT_EQ(list.markBegin(2), 2u);
+    EXPECT_EQ(list.markBegin(3), 3u);
+    EXPECT_EQ(list.marks()[1].phase, 0.25f);
+    EXPECT_EQ(list.marks()[2].phase, 0.5f);
+    list.clear();
+    EXPECT_FALSE(list.hasMarks());
+    EXPECT_TRUE(list.marks().empty());
 }
 
 TEST(SplatList, everyChangeMovesTheRevisionOn) {
@@ -65,6 +76,13 @@ TEST(SplatList, everyChangeMovesTheRevisionOn) {
     list.resize(5, false);
     EXPECT_TRUE(movedOn());
     (void)list.writableSplats();
+    EXPECT_TRUE(movedOn());
+    list.resize(5, true, 9);
+    EXPECT_TRUE(movedOn());
+    EXPECT_EQ(list.marks().size(), 9u);
+    (void)list.writableMarks();
+    EXPECT_TRUE(movedOn());
+    (void)list.writableMarkBegins();
     EXPECT_TRUE(movedOn());
     list.clear();
     EXPECT_TRUE(movedOn());

@@ -1,8 +1,9 @@
 #include "nodes/render/cpu/CpuRenderer.h"
 
 #include "nodes/kernel/FootprintTexture.h"
-#include "nodes/kernel/VectorSplatTable.h"
+#include "nodes/render/ScreenMarks.h"
 #include "nodes/render/cpu/ColorPlanes.h"
+#include "nodes/render/cpu/MarkRaster.h"
 #include "nodes/render/cpu/MeshRasterizer.h"
 #include "nodes/render/cpu/SplatRaster.h"
 #include "nodes/render/cpu/SplatSpans.h"
@@ -20,7 +21,9 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <thread>
+#include <vector>
 
 namespace texsplat::render::cpu {
 namespace {
@@ -47,9 +50,10 @@ struct Bands {
 // One splat batch of the frame ready for the rasterizer.
 struct PreparedBatch {
     const FrameSplats* splats;
-    std::unique_ptr<const SplatSetup> setup;
-    std::shared_ptr<const MarkSampler> marks; // vector and combined splats
-    std::shared_ptr<const FootprintSampler> sampler;
+    std::unique_ptr<const SplatSetup> setup;         // the scalar splats (none: marks only)
+    std::shared_ptr<const FootprintSampler> sampler; // their footprint
+    std::vector<ScreenMark> marks;                   // vector and combined splats
+    MarkStyle style;                                 // how the marks are coloured
 };
 
 std::vector<PreparedBatch> prepareBatches(const Frame& frame, detail::SamplerCache& cache) {
@@ -58,37 +62,44 @@ std::vector<PreparedBatch> prepareBatches(const Frame& frame, detail::SamplerCac
         const SplatFootprint& footprint = *splats.footprint;
         PreparedBatch batch;
         batch.splats = &splats;
-        std::optional<MarkSetup> marks;
-        if (footprint.table) {
-            const bool combined = footprint.shape == SplatShape::CombinedSquare;
-            batch.marks = std::make_shared<const MarkSampler>(cache.marks(footprint),
-                                                              splats.marks, combined);
-            marks.emplace();
-            marks->isCombined = combined;
-            marks->stretch = splats.marks.stretch;
-            marks->rowShift = splats.marks.rowShift;
-            marks->rows = footprint.table->rows();
-            marks->columns = footprint.table->columns();
-            marks->footprintExtent =
-                footprint.texture ? static_cast<float>(footprint.texture->extent()) : 1.0f;
+        if (footprint.hasMarks()) {
+            makeScreenMarks(splats, frame.width, frame.height, batch.marks);
+            batch.style.type = splats.marks.type;
+            batch.style.blend =
+                !splats.marks.isCombined && splats.marks.textureOperator == MarkOperator::Blend;
+            for (int channel = 0; channel < 3; ++channel) {
+                batch.style.blendColor[channel] = splats.marks.blendColor[channel];
+            }
         }
-        if (footprint.texture) {
+        if (footprint.shape != SplatShape::VectorMarks) {
             batch.sampler = cache.footprint(splats.footprint);
-        }
-        // A radial footprint is 0 beyond its reach: the pixel boxes bound that disc.
-        const float discRadius = batch.sampler && batch.sampler->isRadial && !footprint.table
-                                     ? std::sqrt(batch.sampler->reach)
-                                     : 0.0f;
-        auto setup = std::make_unique<SplatSetup>(splats.view,
-                                                  static_cast<float>(footprint.extent),
-                                                  frame.width, frame.height, marks, discRadius);
-        if (batch.sampler && !footprint.table) {
+            // A radial footprint is 0 beyond its reach: the pixel boxes bound that disc.
+            const float discRadius =
+                batch.sampler->isRadial ? std::sqrt(batch.sampler->reach) : 0.0f;
+            auto setup =
+                std::make_unique<SplatSetup>(splats.view, static_cast<float>(footprint.extent),
+                                             frame.width, frame.height, discRadius);
             setup->stampFootprint(*batch.sampler);
+            batch.setup = std::move(setup);
         }
-        batch.setup = std::move(setup);
         batches.push_back(std::move(batch));
     }
     return batches;
+}
+
+// The rasters of marks [first, first + count) of `batch`, and their rows, in parallel.
+void setUpMarks(const PreparedBatch& batch, const Frame& frame, std::size_t first,
+                std::size_t count, std::vector<MarkRaster>& rasters, std::vector<RowSpan>& rows) {
+    rasters.resize(std::max(rasters.size(), count));
+    rows.resize(std::max(rows.size(), count));
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                          for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                              rasters[i] =
+                                  markRaster(batch.marks[first + i], frame.width, frame.height);
+                              rows[i] = {rasters[i].rowBegin, rasters[i].rowEnd};
+                          }
+                      });
 }
 
 } // namespace
@@ -129,29 +140,55 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             render::detail::frameRuns(frame, statistics);
         std::vector<SplatRaster> rasters(kChunk);
         std::vector<RowSpan> rows(kChunk);
+        std::vector<MarkRaster> markRasters;
+        std::vector<RowSpan> markRows;
+        std::vector<std::uint32_t> markBegins;
         for (const render::detail::SplatRun& run : runs) {
             const PreparedBatch& batch = batches[run.batch];
-            const octree::Splat* splats = batch.splats->splats->splats().data();
-            const octree::SplatVector* vectors = batch.splats->splats->hasVectors()
-                                                     ? batch.splats->splats->vectors().data()
-                                                     : nullptr;
+            const octree::SplatList& list = *batch.splats->splats;
+            if (!batch.setup) {
+                // Marks only: their own chunks, in the list's order.
+                const std::size_t end = list.markBegin(run.end);
+                for (std::size_t chunk = list.markBegin(run.begin); chunk < end; chunk += kChunk) {
+                    const std::size_t count = std::min(kChunk, end - chunk);
+                    setUpMarks(batch, frame, chunk, count, markRasters, markRows);
+                    tbb::parallel_for(0, bands.count, [&](int band) {
+                        compositeMarks(markRasters.data(), markRows.data(), count, batch.style,
+                                       planes, bands.begin(band), bands.end(band, frame.height));
+                    });
+                }
+                continue;
+            }
+            const octree::Splat* splats = list.splats().data();
             for (std::size_t chunk = run.begin; chunk < run.end; chunk += kChunk) {
                 const std::size_t count = std::min(kChunk, run.end - chunk);
                 tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
                                   [&](const tbb::blocked_range<std::size_t>& range) {
-                                      const std::size_t first = chunk + range.begin();
-                                      batch.setup->setUp(splats + first,
-                                                         vectors ? vectors + first : nullptr,
+                                      batch.setup->setUp(splats + chunk + range.begin(),
                                                          range.size(),
                                                          rasters.data() + range.begin());
                                       for (std::size_t i = range.begin(); i < range.end(); ++i) {
                                           rows[i] = rowSpanOf(rasters[i]);
                                       }
                                   });
+                // Combined splats: each splat's marks right after it.
+                std::optional<FollowingMarks> following;
+                if (list.hasMarks()) {
+                    const std::size_t first = list.markBegin(chunk);
+                    setUpMarks(batch, frame, first, list.markBegin(chunk + count) - first,
+                               markRasters, markRows);
+                    markBegins.resize(count + 1);
+                    for (std::size_t i = 0; i <= count; ++i) {
+                        markBegins[i] =
+                            static_cast<std::uint32_t>(list.markBegin(chunk + i) - first);
+                    }
+                    following = FollowingMarks{markRasters.data(), markRows.data(),
+                                               markBegins.data(), batch.style};
+                }
                 tbb::parallel_for(0, bands.count, [&](int band) {
                     compositeSplats(rasters.data(), rows.data(), count, batch.sampler.get(),
-                                    batch.setup->stamps(), batch.marks.get(), planes,
-                                    bands.begin(band), bands.end(band, frame.height));
+                                    batch.setup->stamps(), following ? &*following : nullptr,
+                                    planes, bands.begin(band), bands.end(band, frame.height));
                 });
             }
         }

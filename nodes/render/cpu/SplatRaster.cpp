@@ -2,7 +2,6 @@
 
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/RadialKernel.h"
-#include "nodes/kernel/VectorSplatTable.h"
 #include "octree/Splat.h"
 
 #include <glm/geometric.hpp>
@@ -99,7 +98,9 @@ void fitPieces(FootprintSampler& sampler, const kernel::RadialKernel& kernel, do
 } // namespace
 
 FootprintSampler::FootprintSampler(const SplatFootprint& footprint) {
-    if (footprint.shape == SplatShape::TexturedSquare && footprint.kernel) {
+    const bool square = footprint.shape == SplatShape::TexturedSquare ||
+                        footprint.shape == SplatShape::CombinedMarks;
+    if (square && footprint.kernel) {
         isRadial = true;
         values.resize(kProfileSamples + 2);
         for (int i = 0; i <= kProfileSamples + 1; ++i) {
@@ -133,44 +134,8 @@ FootprintSampler::FootprintSampler(const SplatFootprint& footprint) {
     peak = *std::max_element(values.begin(), values.end());
 }
 
-MarkSampler::MarkSampler(std::shared_ptr<const MarkPlanes> table, const MarkDrawing& drawing,
-                         bool combined)
-    : planes(std::move(table)), isCombined(combined),
-      blend(drawing.textureOperator == MarkOperator::Blend), contrast(drawing.contrast) {
-    for (int c = 0; c < 3; ++c) {
-        blendColor[c] = drawing.blendColor[c];
-    }
-}
-
-MarkPlanes::MarkPlanes(const kernel::VectorSplatTable& table)
-    : resolution(table.resolution()), stride(table.resolution() + 2),
-      layerSize(static_cast<std::size_t>(stride) * static_cast<std::size_t>(stride)) {
-    const std::size_t layers = static_cast<std::size_t>(table.rows() * table.columns());
-    intensity.resize(layers * layerSize);
-    opacity.resize(layers * layerSize);
-    const std::vector<float>& texels = table.texels();
-    const auto n = static_cast<std::size_t>(resolution);
-    const auto toByte = [](float value) {
-        return std::round(std::clamp(value, 0.0f, 1.0f) * 255.0f) / 255.0f;
-    };
-    for (std::size_t layer = 0; layer < layers; ++layer) {
-        for (int row = 0; row < stride; ++row) {
-            const auto j = static_cast<std::size_t>(std::clamp(row - 1, 0, resolution - 1));
-            for (int column = 0; column < stride; ++column) {
-                const auto i = static_cast<std::size_t>(std::clamp(column - 1, 0, resolution - 1));
-                const std::size_t source = 2 * ((layer * n + j) * n + i);
-                const std::size_t target =
-                    layer * layerSize + static_cast<std::size_t>(row) * stride + column;
-                intensity[target] = toByte(texels[source]);
-                opacity[target] = toByte(texels[source + 1]);
-            }
-        }
-    }
-}
-
-SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int height,
-                       std::optional<MarkSetup> marks, float discRadius)
-    : mView(view), mMarks(marks) {
+SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int height, float discRadius)
+    : mView(view) {
     const glm::mat4& m = view.localToClip;
     mRows.extent = extent;
     mRows.discRadius = discRadius;
@@ -197,8 +162,8 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
             }
         }
     }
-    mIsAffine = !marks && !view.isPerspective && m[0][3] == 0.0f && m[1][3] == 0.0f &&
-                m[2][3] == 0.0f && m[3][3] == 1.0f;
+    mIsAffine = !view.isPerspective && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f &&
+                m[3][3] == 1.0f;
     if (!mIsAffine) {
         return;
     }
@@ -234,11 +199,9 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
     mLengthScale = 1.0f / frame.eLength;
 }
 
-void SplatSetup::setUp(const octree::Splat* splats, const octree::SplatVector* vectors,
-                       std::size_t count, SplatRaster* out) const {
+void SplatSetup::setUp(const octree::Splat* splats, std::size_t count, SplatRaster* out) const {
     if (!mIsAffine) {
-        setUpProjective(mRows, splats, mMarks ? vectors : nullptr, mMarks ? &*mMarks : nullptr,
-                        count, out);
+        setUpProjective(mRows, splats, count, out);
         return;
     }
     for (std::size_t i = 0; i < count; ++i) {

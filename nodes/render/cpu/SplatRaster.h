@@ -1,6 +1,5 @@
 #pragma once
 
-#include "nodes/render/MarkDrawing.h"
 #include "nodes/render/SplatFootprint.h"
 #include "nodes/render/SplatView.h"
 #include "nodes/render/cpu/FootprintStamps.h"
@@ -10,12 +9,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <vector>
 
 namespace texsplat::octree {
 struct Splat;
-struct SplatVector;
 } // namespace texsplat::octree
 
 namespace texsplat::render::cpu {
@@ -64,37 +61,9 @@ struct FootprintSampler {
                         pieces[0][i]);
     }
 
-    /// @brief The sampler of `footprint`: radial when it is a TexturedSquare with its kernel.
+    /// @brief The sampler of `footprint`: radial when it is a square (TexturedSquare,
+    /// CombinedMarks) with its kernel.
     explicit FootprintSampler(const SplatFootprint& footprint);
-};
-
-/// @brief A vector splat table laid out for the rasterizer: per layer, the intensity and the
-/// opacity planes with a border of one texel copied from the edge (GL's CLAMP_TO_EDGE), each
-/// value rounded to 8 bits as the GL backend's RG8 texture array holds it. Made once per table
-/// (CpuRenderer keeps it while the table lives).
-struct MarkPlanes {
-    int resolution = 0;           ///< N, texels per side of a layer
-    int stride = 0;               ///< N + 2
-    std::size_t layerSize = 0;    ///< (N + 2)²
-    std::vector<float> intensity; ///< I, layers × (N + 2)²
-    std::vector<float> opacity;   ///< A_tex, layers × (N + 2)²
-
-    /// @brief The planes of `table`.
-    explicit MarkPlanes(const kernel::VectorSplatTable& table);
-};
-
-/// @brief A batch's marks as the rasterizer draws them: the table's planes and the texture
-/// operator of this frame.
-struct MarkSampler {
-    std::shared_ptr<const MarkPlanes> planes; ///< the table
-    bool isCombined = false;                  ///< combined splats (else vector splats)
-    bool blend = false;                       ///< MarkOperator::Blend (else Modulate)
-    float blendColor[3]{};                    ///< C_const of Blend
-    float contrast = 1.0f; ///< combined splats: how much the marks change the colour
-
-    /// @brief `planes` drawn as `drawing` says.
-    MarkSampler(std::shared_ptr<const MarkPlanes> planes, const MarkDrawing& drawing,
-                bool combined);
 };
 
 /// @brief One splat set up for rasterizing: the projective map from a pixel to the splat's
@@ -115,21 +84,16 @@ struct SplatRaster {
     float lengthScale; ///< footprint texel → line integral: size / |S⁻¹d|
     std::int32_t columnBegin, columnEnd; ///< pixels [begin, end) the square may cover
     std::int32_t rowBegin, rowEnd;       ///< rows [begin, end), top row first
-    std::int32_t flags;                  ///< kProjective | kClipped | kMarks | kStamped
+    std::int32_t flags;                  ///< kProjective | kClipped | kStamped
     // Stamped splats only (kStamped, see FootprintStamps): the pixel of the stamps' first column
     // and row, the stamp below the centre's phase and the fractions of a phase past it.
     std::int32_t stampColumn, stampRow;
     std::int32_t stampPhase;
     float stampFraction[2];
-    // Vector and combined splats only (see MarkSetup):
-    std::int32_t layer;            ///< the table's layer: row (with the phase) and column
-    float polygonAlpha;            ///< vector splats: opacity of one voxel's slab, 1 − e^(−τ·ls)
-    float footprintFromSquare[4];  ///< combined: (a, b) → the scalar footprint's square, row major
 
     static constexpr std::int32_t kProjective = 1; ///< w′ varies over the pixels
-    static constexpr std::int32_t kClipped = 2;    ///< crosses the near or far plane: clip per pixel
-    static constexpr std::int32_t kMarks = 4;      ///< the square is turned to the vector: marks
-    static constexpr std::int32_t kStamped = 8;    ///< the footprint from FootprintStamps
+    static constexpr std::int32_t kClipped = 2; ///< crosses the near or far plane: clip per pixel
+    static constexpr std::int32_t kStamped = 8; ///< the footprint from FootprintStamps
 
     /// @brief Whether the splat covers no pixel of the image (then nothing else is set).
     bool isEmpty() const { return columnBegin >= columnEnd || rowBegin >= rowEnd; }
@@ -152,25 +116,10 @@ struct ProjectiveRows {
     bool isPerspective = false;   ///< splats face the eye (else `direction`)
 };
 
-/// @brief What the set-up of vector and combined splats needs besides ProjectiveRows: the
-/// square is turned in its plane so that its x axis lies along the splat's vector as the camera
-/// projects it, stretched along it, as the GL vector splat vertex shader does
-/// (detail/VectorSplatShaders.h).
-struct MarkSetup {
-    bool isCombined = false;      ///< combined splats draw without marks too; vector splats not
-    float stretch = 1.0f;         ///< elongation along the vector, >= 1
-    int rowShift = 0;             ///< the animation phase in table rows
-    int rows = 1;                 ///< table rows
-    int columns = 1;              ///< table columns
-    float footprintExtent = 1.6f; ///< combined: the scalar footprint's half-width in voxels
-};
-
 /// @brief Sets up `count` splats for `rows`, as SplatSetup says, SIMD over splats (Highway,
-/// dispatched at run time); out[i] is splats[i]'s raster. With `vectors` (parallel to `splats`)
-/// and `marks`, as vector or combined splats.
-void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats,
-                     const octree::SplatVector* vectors, const MarkSetup* marks,
-                     std::size_t count, SplatRaster* out);
+/// dispatched at run time); out[i] is splats[i]'s raster.
+void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats, std::size_t count,
+                     SplatRaster* out);
 
 /// @brief Sets up the splats of one batch for rasterizing as the GL backend draws them (same
 /// square, same texture coordinates).
@@ -182,18 +131,14 @@ void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats,
 class SplatSetup {
 public:
     /// @brief The setup for splats seen through `view`, squares `extent` voxels from the centre
-    /// at size 1, in an image of `width` x `height` pixels; with `marks`, vector or combined
-    /// splats (always set up as projective). With `discRadius` > 0 the footprint is 0 beyond
-    /// that radius (in square half-widths, ProjectiveRows::discRadius), and the pixel boxes
-    /// bound the disc.
-    SplatSetup(const SplatView& view, float extent, int width, int height,
-               std::optional<MarkSetup> marks = std::nullopt, float discRadius = 0.0f);
+    /// at size 1, in an image of `width` x `height` pixels. With `discRadius` > 0 the footprint
+    /// is 0 beyond that radius (in square half-widths, ProjectiveRows::discRadius), and the
+    /// pixel boxes bound the disc.
+    SplatSetup(const SplatView& view, float extent, int width, int height, float discRadius = 0.0f);
 
     /// @brief Sets up `count` splats into `out`: an empty raster for a splat that covers no
-    /// pixel or lies wholly outside the near/far planes. `vectors` (parallel to `splats`) is
-    /// needed with marks and ignored without.
-    void setUp(const octree::Splat* splats, const octree::SplatVector* vectors,
-               std::size_t count, SplatRaster* out) const;
+    /// pixel or lies wholly outside the near/far planes.
+    void setUp(const octree::Splat* splats, std::size_t count, SplatRaster* out) const;
 
     /// @brief For an orthographic view of scalar splats whose footprint `sampler` suits stamps
     /// (FootprintStamps::suits(): the paper's kernel, splats at most kLargestSide pixels
@@ -214,7 +159,6 @@ private:
 
     SplatView mView;
     ProjectiveRows mRows;
-    std::optional<MarkSetup> mMarks;
     // Orthographic views: the square at size 1 and the centre's pixel.
     bool mIsAffine = false;
     float mSquareFromPixel[2][2]{}; // pixel offset → unit a, b

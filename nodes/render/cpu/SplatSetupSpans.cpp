@@ -20,8 +20,7 @@ namespace hn = hwy::HWY_NAMESPACE;
 // Sets up `lanes` splats from splats[0] on (the caller pads a short tail): SplatSetup's general
 // case, one splat per lane. See SplatSetup for the geometry; every step is the scalar one's.
 template <class D>
-void SetUpLanes(D d, const ProjectiveRows& rows, const octree::Splat* splats,
-                const octree::SplatVector* vectors, const MarkSetup* marks, SplatRaster* out,
+void SetUpLanes(D d, const ProjectiveRows& rows, const octree::Splat* splats, SplatRaster* out,
                 std::size_t count) {
     using V = hn::Vec<D>;
     const hn::RebindToSigned<D> di;
@@ -72,95 +71,21 @@ void SetUpLanes(D d, const ProjectiveRows& rows, const octree::Splat* splats,
     V vy = hn::Sub(hn::Mul(az, ux), hn::Mul(ax, uz));
     V vz = hn::Sub(hn::Mul(ax, uy), hn::Mul(ay, ux));
     const V reach = hn::Mul(hn::Set(d, rows.extent), size);
-    V reachU = reach;
-    auto hasMarks = hn::Lt(one, zero); // all false
-    V footprintFromSquare[4] = {zero, zero, zero, zero};
-    if (vectors != nullptr) {
-        // Turn the square so that its x axis, along which the table's marks are made, lies
-        // along the vector as the camera projects it: the intersection of the square's plane
-        // with the plane of the line of sight and the vector (VectorSplatShaders.h).
-        const float* flowBase = &vectors[0].vector.x;
-        const auto flowIndex = hn::ShiftLeft<2>(hn::Iota(di, 0)); // 4 floats a vector
-        V fx = hn::GatherIndex(d, flowBase, flowIndex);
-        V fy = hn::GatherIndex(d, flowBase + 1, flowIndex);
-        V fz = hn::GatherIndex(d, flowBase + 2, flowIndex);
-        const V largest = hn::Max(hn::Abs(fx), hn::Max(hn::Abs(fy), hn::Abs(fz)));
-        const auto usable = hn::And(hn::Gt(largest, zero), hn::Lt(largest, hn::Set(d, FLT_MAX)));
-        const V scale = hn::Div(one, hn::IfThenElse(usable, largest, one));
-        fx = hn::Mul(fx, scale);
-        fy = hn::Mul(fy, scale);
-        fz = hn::Mul(fz, scale);
-        const V inverseFlow = hn::Div(
-            one, hn::IfThenElse(usable, hn::Sqrt(hn::MulAdd(fx, fx, hn::MulAdd(fy, fy, hn::Mul(fz, fz)))),
-                                one));
-        fx = hn::Mul(fx, inverseFlow);
-        fy = hn::Mul(fy, inverseFlow);
-        fz = hn::Mul(fz, inverseFlow);
-        const V px = hn::Sub(hn::Mul(fy, sz), hn::Mul(fz, sy)); // plane of sight and vector
-        const V py = hn::Sub(hn::Mul(fz, sx), hn::Mul(fx, sz));
-        const V pz = hn::Sub(hn::Mul(fx, sy), hn::Mul(fy, sx));
-        const V qx = hn::Mul(ax, hn::Set(d, rows.inverseSpacing[0])); // the square's normal
-        const V qy = hn::Mul(ay, hn::Set(d, rows.inverseSpacing[1]));
-        const V qz = hn::Mul(az, hn::Set(d, rows.inverseSpacing[2]));
-        V lx = hn::Sub(hn::Mul(qy, pz), hn::Mul(qz, py));
-        V ly = hn::Sub(hn::Mul(qz, px), hn::Mul(qx, pz));
-        V lz = hn::Sub(hn::Mul(qx, py), hn::Mul(qy, px));
-        const V alongLength = hn::Sqrt(hn::MulAdd(lx, lx, hn::MulAdd(ly, ly, hn::Mul(lz, lz))));
-        const V normalLength = hn::Sqrt(hn::MulAdd(qx, qx, hn::MulAdd(qy, qy, hn::Mul(qz, qz))));
-        hasMarks = hn::And(usable, hn::Gt(alongLength, hn::Mul(hn::Set(d, 1e-6f), normalLength)));
-        // Point it the vector's way on screen: against the vector's part across the sight line.
-        const V towards = hn::MulAdd(fx, sx, hn::MulAdd(fy, sy, hn::Mul(fz, sz)));
-        const V across =
-            hn::MulAdd(lx, hn::NegMulAdd(towards, sx, fx),
-                       hn::MulAdd(ly, hn::NegMulAdd(towards, sy, fy),
-                                  hn::Mul(lz, hn::NegMulAdd(towards, sz, fz))));
-        const V sign = hn::IfThenElse(hn::Lt(across, zero), hn::Neg(one), one);
-        lx = hn::Mul(hn::Mul(lx, sign), hn::Set(d, rows.inverseSpacing[0]));
-        ly = hn::Mul(hn::Mul(ly, sign), hn::Set(d, rows.inverseSpacing[1]));
-        lz = hn::Mul(hn::Mul(lz, sign), hn::Set(d, rows.inverseSpacing[2]));
-        const V inverseL = hn::Div(
-            one, hn::IfThenElse(hasMarks,
-                                hn::Sqrt(hn::MulAdd(lx, lx, hn::MulAdd(ly, ly, hn::Mul(lz, lz)))),
-                                one));
-        const V mx = hn::IfThenElse(hasMarks, hn::Mul(lx, inverseL), ux);
-        const V my = hn::IfThenElse(hasMarks, hn::Mul(ly, inverseL), uy);
-        const V mz = hn::IfThenElse(hasMarks, hn::Mul(lz, inverseL), uz);
-        const V nx = hn::Sub(hn::Mul(ay, mz), hn::Mul(az, my));
-        const V ny = hn::Sub(hn::Mul(az, mx), hn::Mul(ax, mz));
-        const V nz = hn::Sub(hn::Mul(ax, my), hn::Mul(ay, mx));
-        const V stretch = hn::IfThenElse(hasMarks, hn::Set(d, marks->stretch), one);
-        // Combined splats: the same voxel offset in the scalar splat's own square (u, v).
-        const V ratio = hn::Set(d, rows.extent / marks->footprintExtent);
-        const auto dot = [](V x0, V y0, V z0, V x1, V y1, V z1) {
-            return hn::MulAdd(x0, x1, hn::MulAdd(y0, y1, hn::Mul(z0, z1)));
-        };
-        footprintFromSquare[0] = hn::Mul(hn::Mul(stretch, ratio), dot(mx, my, mz, ux, uy, uz));
-        footprintFromSquare[1] = hn::Mul(ratio, dot(nx, ny, nz, ux, uy, uz));
-        footprintFromSquare[2] = hn::Mul(hn::Mul(stretch, ratio), dot(mx, my, mz, vx, vy, vz));
-        footprintFromSquare[3] = hn::Mul(ratio, dot(nx, ny, nz, vx, vy, vz));
-        ux = mx;
-        uy = my;
-        uz = mz;
-        vx = nx;
-        vy = ny;
-        vz = nz;
-        reachU = hn::Mul(reach, stretch); // the stretch is along the vector only
-    }
 
     // Homogeneous pixel rows (x·W, y·W, W, z_clip) of the centre and per unit a and b.
     V h0[4], hu[4], hv[4];
     for (int row = 0; row < 4; ++row) {
         const float* p = rows.pixelFromLocal[row];
         const float* q = rows.pixelFromVoxel[row];
-        h0[row] = hn::MulAdd(hn::Set(d, p[0]), cx,
-                             hn::MulAdd(hn::Set(d, p[1]), cy,
-                                        hn::MulAdd(hn::Set(d, p[2]), cz, hn::Set(d, p[3]))));
-        hu[row] = hn::Mul(reachU, hn::MulAdd(hn::Set(d, q[0]), ux,
-                                            hn::MulAdd(hn::Set(d, q[1]), uy,
-                                                       hn::Mul(hn::Set(d, q[2]), uz))));
-        hv[row] = hn::Mul(reach, hn::MulAdd(hn::Set(d, q[0]), vx,
-                                            hn::MulAdd(hn::Set(d, q[1]), vy,
-                                                       hn::Mul(hn::Set(d, q[2]), vz))));
+        h0[row] = hn::MulAdd(
+            hn::Set(d, p[0]), cx,
+            hn::MulAdd(hn::Set(d, p[1]), cy, hn::MulAdd(hn::Set(d, p[2]), cz, hn::Set(d, p[3]))));
+        hu[row] = hn::Mul(
+            reach, hn::MulAdd(hn::Set(d, q[0]), ux,
+                              hn::MulAdd(hn::Set(d, q[1]), uy, hn::Mul(hn::Set(d, q[2]), uz))));
+        hv[row] = hn::Mul(
+            reach, hn::MulAdd(hn::Set(d, q[0]), vx,
+                              hn::MulAdd(hn::Set(d, q[1]), vy, hn::Mul(hn::Set(d, q[2]), vz))));
     }
     // The inverse of [hu hv h0] by the adjugate.
     const auto cross = [](V a, V b, V c, V e) { return hn::Sub(hn::Mul(a, b), hn::Mul(c, e)); };
@@ -259,22 +184,13 @@ void SetUpLanes(D d, const ProjectiveRows& rows, const octree::Splat* splats,
     const auto columnEnd = toPixel(hn::Add(hn::Ceil(high[0]), one), width);
     const auto rowBegin = toPixel(hn::Floor(low[1]), height);
     const auto rowEnd = toPixel(hn::Add(hn::Ceil(high[1]), one), height);
-    auto empty = hn::Or(hn::Not(invertible), hn::Or(allNear, allFar));
-    if (vectors != nullptr && !marks->isCombined) {
-        empty = hn::Or(empty, hn::Not(hasMarks)); // a vector splat without marks draws nothing
-    }
+    const auto empty = hn::Or(hn::Not(invertible), hn::Or(allNear, allFar));
     const auto clipped = hn::Or(behindEye, hn::Or(anyNear, anyFar));
     const V lengthScale = hn::Div(size, eLength);
 
     // Out, one splat per lane.
     HWY_ALIGN float square[9][kMaxLanes], depthOut[3][kMaxLanes], scale[kMaxLanes];
-    HWY_ALIGN std::int32_t bounds[4][kMaxLanes], emptyOut[kMaxLanes], clippedOut[kMaxLanes],
-        marksOut[kMaxLanes];
-    HWY_ALIGN float combined[4][kMaxLanes];
-    for (int k = 0; k < 4; ++k) {
-        hn::Store(footprintFromSquare[k], d, combined[k]);
-    }
-    hn::Store(hn::VecFromMask(di, hn::RebindMask(di, hasMarks)), di, marksOut);
+    HWY_ALIGN std::int32_t bounds[4][kMaxLanes], emptyOut[kMaxLanes], clippedOut[kMaxLanes];
     for (int row = 0; row < 3; ++row) {
         for (int column = 0; column < 3; ++column) {
             hn::Store(inverse[row][column], d, square[3 * row + column]);
@@ -311,29 +227,17 @@ void SetUpLanes(D d, const ProjectiveRows& rows, const octree::Splat* splats,
         raster.rowBegin = bounds[2][lane];
         raster.rowEnd = bounds[3][lane];
         raster.flags = (rows.isPerspective ? SplatRaster::kProjective : 0) |
-                       (clippedOut[lane] != 0 ? SplatRaster::kClipped : 0) |
-                       (marksOut[lane] != 0 ? SplatRaster::kMarks : 0);
-        if (vectors != nullptr) {
-            const octree::SplatVector& vector = vectors[lane];
-            const int shift = ((marks->rowShift % marks->rows) + marks->rows) % marks->rows;
-            raster.layer = ((vector.row + shift) % marks->rows) * marks->columns +
-                           std::min<int>(vector.column, marks->columns - 1);
-            raster.polygonAlpha = -std::expm1(-splat.extinction * raster.lengthScale);
-            for (int k = 0; k < 4; ++k) {
-                raster.footprintFromSquare[k] = combined[k][lane];
-            }
-        }
+                       (clippedOut[lane] != 0 ? SplatRaster::kClipped : 0);
     }
 }
 
-void SetUpProjective(const ProjectiveRows& rows, const octree::Splat* splats,
-                     const octree::SplatVector* vectors, const MarkSetup* marks,
-                     std::size_t count, SplatRaster* out) {
+void SetUpProjective(const ProjectiveRows& rows, const octree::Splat* splats, std::size_t count,
+                     SplatRaster* out) {
     const hn::ScalableTag<float> d;
     const std::size_t lanes = hn::Lanes(d);
     std::size_t i = 0;
     for (; i + lanes <= count; i += lanes) {
-        SetUpLanes(d, rows, splats + i, vectors ? vectors + i : nullptr, marks, out + i, lanes);
+        SetUpLanes(d, rows, splats + i, out + i, lanes);
     }
     if (i < count) {
         // The tail through a full vector of copies (the last splat repeated), not past the list.
@@ -341,13 +245,7 @@ void SetUpProjective(const ProjectiveRows& rows, const octree::Splat* splats,
         std::array<octree::Splat, kMaxLanes> tail;
         std::fill(tail.begin(), tail.end(), splats[count - 1]);
         std::copy(splats + i, splats + count, tail.begin());
-        std::array<octree::SplatVector, kMaxLanes> tailVectors{};
-        if (vectors != nullptr) {
-            std::fill(tailVectors.begin(), tailVectors.end(), vectors[count - 1]);
-            std::copy(vectors + i, vectors + count, tailVectors.begin());
-        }
-        SetUpLanes(d, rows, tail.data(), vectors ? tailVectors.data() : nullptr, marks, out + i,
-                   count - i);
+        SetUpLanes(d, rows, tail.data(), out + i, count - i);
     }
 }
 
@@ -359,10 +257,9 @@ namespace texsplat::render::cpu {
 
 HWY_EXPORT(SetUpProjective);
 
-void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats,
-                     const octree::SplatVector* vectors, const MarkSetup* marks,
-                     std::size_t count, SplatRaster* out) {
-    HWY_DYNAMIC_DISPATCH(SetUpProjective)(rows, splats, vectors, marks, count, out);
+void setUpProjective(const ProjectiveRows& rows, const octree::Splat* splats, std::size_t count,
+                     SplatRaster* out) {
+    HWY_DYNAMIC_DISPATCH(SetUpProjective)(rows, splats, count, out);
 }
 
 } // namespace texsplat::render::cpu

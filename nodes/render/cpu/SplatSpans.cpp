@@ -6,6 +6,7 @@
 #include <hwy/contrib/math/math-inl.h>
 #include <hwy/highway.h>
 
+#include "nodes/render/cpu/MarkSpans-inl.h"
 #include "nodes/render/cpu/SplatSpans.h"
 
 #include <algorithm>
@@ -18,9 +19,7 @@ HWY_BEFORE_NAMESPACE();
 namespace texsplat::render::cpu::HWY_NAMESPACE {
 namespace hn = hwy::HWY_NAMESPACE;
 
-// The footprint at square coordinates (a, b), before the length scale: the radial profile at
-// a² + b², or the padded texture's bilinear lookup (see FootprintSampler).
-// Bilinear lookups in an N×N texture padded by one texel (FootprintSampler, MarkPlanes) at
+// Bilinear lookups in an N×N texture padded by one texel (FootprintSampler) at
 // square coordinates (a, b) ∈ [−1, 1]²: GL's texel coordinate (a/2 + ½)·N − ½, plus the border
 // texel, clamped so that lanes off the square still read inside the texture.
 template <class D> struct PaddedLookup {
@@ -82,17 +81,6 @@ HWY_INLINE V Footprint(D d, const FootprintSampler& sampler, V a, V b) {
         return PaddedLookup<D>(d, sampler.resolution, sampler.stride, a, b)(
             sampler.values.data());
     }
-}
-
-// The table's (intensity, opacity) at square coordinates (a, b) of layer `layer`, as GL samples
-// the RG8 texture array.
-template <class D, class V>
-HWY_INLINE void SampleMarks(D d, const MarkPlanes& marks, std::int32_t layer, V a, V b,
-                            V& intensity, V& opacity) {
-    const PaddedLookup<D> lookup(d, marks.resolution, marks.stride, a, b);
-    const std::size_t base = static_cast<std::size_t>(layer) * marks.layerSize;
-    intensity = lookup(marks.intensity.data() + base);
-    opacity = lookup(marks.opacity.data() + base);
 }
 
 // φ(x) = (1 − e^(−x))/x = Σ (−x)^k/(k+1)!, k ≤ 8: below 1.2e-8 for 0 ≤ x ≤ ½. Estrin's
@@ -206,9 +194,8 @@ template <class D, class V> HWY_INLINE V ReciprocalEstimate(D /*d*/, V w) {
     return hn::ApproximateReciprocal(w);
 }
 
-// What a batch's splats are: scalar (radial profile, radial cubic pieces or texture), vector
-// marks, or combined.
-enum class Kind { Radial, RadialPieces, Texture, Vector, Combined };
+// What a batch's footprint is: a radial profile, radial cubic pieces or a texture.
+enum class Kind { Radial, RadialPieces, Texture };
 
 // A colour below this (per unit of footprint) can be added to any pixel without a clamp: the
 // sum of it and a pixel no larger than FLT_MAX rounds to at most FLT_MAX, whose half ulp
@@ -219,7 +206,6 @@ constexpr float kUnclampedColour = 1e29f;
 template <class D> struct Batch {
     D d;
     const FootprintSampler* sampler;
-    const MarkSampler* marks;
     ColorPlanes& planes;
     bool depthTest;
     bool squareTest; // the square's edges cut the footprint (else its reach lies inside)
@@ -273,8 +259,7 @@ template <class D> struct Medium {
 };
 
 // Composites rows [first, last) of one splat; with kClamp, every sum is clamped to FLT_MAX
-// (kUnclampedColour says when that is not needed); kDepth as the splat's optical depth allows
-// (vector splats: any).
+// (kUnclampedColour says when that is not needed); kDepth as the splat's optical depth allows.
 template <Kind kKind, bool kClamp, Depth kDepth, class D>
 HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, int first,
                                int last) {
@@ -285,7 +270,6 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
     const auto zero = hn::Zero(d);
     const auto clamp = [&](auto value) { return Clamp<kClamp>(d, value); };
     const FootprintSampler* sampler = batch.sampler;
-    const MarkSampler* marks = batch.marks;
     ColorPlanes& planes = batch.planes;
     const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
     const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
@@ -350,38 +334,9 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
             if (hn::AllFalse(d, inside)) {
                 continue;
             }
-            if constexpr (kKind == Kind::Vector) {
-                // The polygon's colour and the opacity of one voxel's slab, through the texture
-                // operator: MODULATE (C·I, A·A_tex) or BLEND (C(1 − I) + K·I, A·A_tex).
-                auto intensity = zero;
-                auto opacity = zero;
-                SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
-                const auto alpha =
-                    hn::IfThenElseZero(inside, hn::Mul(hn::Set(d, splat.polygonAlpha), opacity));
-                const auto mark = [&](decltype(alpha) colour, float blendColour) {
-                    return marks->blend ? hn::MulAdd(colour, hn::Sub(one, intensity),
-                                                     hn::Mul(hn::Set(d, blendColour), intensity))
-                                        : hn::Mul(colour, intensity);
-                };
-                const auto transmitted = hn::Sub(one, alpha);
-                const auto over = [&](float* plane, decltype(alpha) source) {
-                    Over<kClamp>(d, plane, column, transmitted, source);
-                };
-                over(redRow, clamp(hn::Mul(mark(medium.red, marks->blendColor[0]), alpha)));
-                over(greenRow, clamp(hn::Mul(mark(medium.green, marks->blendColor[1]), alpha)));
-                over(blueRow, clamp(hn::Mul(mark(medium.blue, marks->blendColor[2]), alpha)));
-                over(alphaRow, alpha);
-                continue;
-            }
             hn::Vec<D> footprint;
             if constexpr (kKind == Kind::RadialPieces) {
                 footprint = (*batch.pieces)(d, rho);
-            } else if constexpr (kKind == Kind::Combined) {
-                // The scalar part samples its footprint where a TextureSplat would.
-                const float* m = splat.footprintFromSquare;
-                footprint = Footprint<false>(
-                    d, *sampler, hn::MulAdd(hn::Set(d, m[0]), a, hn::Mul(hn::Set(d, m[1]), b)),
-                    hn::MulAdd(hn::Set(d, m[2]), a, hn::Mul(hn::Set(d, m[3]), b)));
             } else {
                 footprint = Footprint<kKind == Kind::Radial>(d, *sampler, a, b);
             }
@@ -394,30 +349,9 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
             const auto over = [&](float* plane, decltype(weight) source) {
                 Over<kClamp>(d, plane, column, transmitted, source);
             };
-            auto colourRed = hn::Mul(medium.red, weight);
-            auto colourGreen = hn::Mul(medium.green, weight);
-            auto colourBlue = hn::Mul(medium.blue, weight);
-            if constexpr (kKind == Kind::Combined) {
-                // The marks change only the colour, by `contrast`: BLEND dissolves towards K by
-                // c·I, MODULATE multiplies by 1 − c + c·I (no marks: I = 0).
-                auto intensity = zero;
-                auto opacity = zero;
-                if ((splat.flags & SplatRaster::kMarks) != 0) {
-                    SampleMarks(d, *marks->planes, splat.layer, a, b, intensity, opacity);
-                }
-                intensity = hn::Mul(hn::Set(d, marks->contrast), intensity);
-                const auto mark = [&](decltype(weight) colour, float blendColour) {
-                    return marks->blend
-                               ? hn::MulAdd(colour, hn::Sub(one, intensity),
-                                            hn::Mul(hn::Set(d, blendColour),
-                                                    hn::Mul(intensity, alpha)))
-                               : hn::Mul(colour, hn::Add(hn::Sub(one, hn::Set(d, marks->contrast)),
-                                                         intensity));
-                };
-                colourRed = mark(colourRed, marks->blendColor[0]);
-                colourGreen = mark(colourGreen, marks->blendColor[1]);
-                colourBlue = mark(colourBlue, marks->blendColor[2]);
-            }
+            const auto colourRed = hn::Mul(medium.red, weight);
+            const auto colourGreen = hn::Mul(medium.green, weight);
+            const auto colourBlue = hn::Mul(medium.blue, weight);
             over(redRow, clamp(colourRed));
             over(greenRow, clamp(colourGreen));
             over(blueRow, clamp(colourBlue));
@@ -511,10 +445,6 @@ Depth depthOf(const SplatRaster& splat, const FootprintSampler* sampler) {
 template <Kind kKind, bool kClamp, class D>
 HWY_INLINE void CompositeSplatAtDepth(const Batch<D>& batch, const SplatRaster& splat, int first,
                                       int last) {
-    if constexpr (kKind == Kind::Vector) {
-        CompositeSplat<kKind, kClamp, Depth::Expm1>(batch, splat, first, last);
-        return;
-    }
     const auto at = [&](auto depth) {
         constexpr Depth kDepth = decltype(depth)::value;
         if constexpr (kKind == Kind::RadialPieces) { // only the paper's kernel is stamped
@@ -541,7 +471,7 @@ HWY_INLINE void CompositeSplatAtDepth(const Batch<D>& batch, const SplatRaster& 
 template <Kind kKind>
 void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                          const FootprintSampler* sampler, const FootprintStamps* stamps,
-                         const MarkSampler* marks, ColorPlanes& planes, int rowBegin,
+                         const FollowingMarks* marks, ColorPlanes& planes, int rowBegin,
                          int rowEnd) {
     // Up to 16 lanes (AVX-512: 1.1× eight on 9–10-pixel-wide boxes), and 8 for boxes no wider:
     // half-width vectors issue on three ports of AVX-512 instead of two (Marschner–Lobb 128³ in
@@ -551,7 +481,7 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
     constexpr int kNarrowColumns = static_cast<int>(hn::MaxLanes(Narrow()));
     const bool squareTest = sampler == nullptr || sampler->reach > 1.0f;
     const auto batchOf = [&](auto d) {
-        Batch<decltype(d)> batch{d,          sampler,      marks,  planes, planes.hasDepth(),
+        Batch<decltype(d)> batch{d,          sampler,      planes, planes.hasDepth(),
                                  squareTest, std::nullopt, stamps};
         if constexpr (kKind == Kind::RadialPieces) {
             batch.pieces.emplace(d, *sampler);
@@ -560,45 +490,47 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
     };
     const Batch<Wide> wide = batchOf(Wide());
     const Batch<Narrow> narrow = batchOf(Narrow());
-    // Vector and combined splats keep every clamp; scalar splats drop them where they change
-    // nothing (seven of a pixel's operations).
-    constexpr bool kMayDropClamps = kKind != Kind::Vector && kKind != Kind::Combined;
     for (std::size_t i = 0; i < count; ++i) {
         const int first = std::max(rows[i].begin, rowBegin);
         const int last = std::min(rows[i].end, rowEnd);
-        if (first >= last) {
-            continue;
-        }
-        const SplatRaster& splat = splats[i];
-        const bool clamp = !kMayDropClamps || !isUnclamped(splat, *sampler);
-        const auto composite = [&](const auto& batch) {
-            if (clamp) {
-                CompositeSplatAtDepth<kKind, true>(batch, splat, first, last);
+        if (first < last) {
+            const SplatRaster& splat = splats[i];
+            // Clamps only where they change something (seven of a pixel's operations).
+            const bool clamp = !isUnclamped(splat, *sampler);
+            const auto composite = [&](const auto& batch) {
+                if (clamp) {
+                    CompositeSplatAtDepth<kKind, true>(batch, splat, first, last);
+                } else {
+                    CompositeSplatAtDepth<kKind, false>(batch, splat, first, last);
+                }
+            };
+            if (splat.columnEnd - splat.columnBegin <= kNarrowColumns ||
+                (splat.flags & SplatRaster::kStamped) != 0) {
+                composite(narrow);
             } else {
-                CompositeSplatAtDepth<kKind, false>(batch, splat, first, last);
+                composite(wide);
             }
-        };
-        if (splat.columnEnd - splat.columnBegin <= kNarrowColumns ||
-            (splat.flags & SplatRaster::kStamped) != 0) {
-            composite(narrow);
-        } else {
-            composite(wide);
+        }
+        if (marks != nullptr) {
+            for (std::uint32_t m = marks->begins[i]; m < marks->begins[i + 1]; ++m) {
+                const int markFirst = std::max(marks->rows[m].begin, rowBegin);
+                const int markLast = std::min(marks->rows[m].end, rowEnd);
+                if (markFirst < markLast) {
+                    CompositeMark(marks->marks[m], marks->style, planes, markFirst, markLast);
+                }
+            }
         }
     }
 }
 
 void CompositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                      const FootprintSampler* sampler, const FootprintStamps* stamps,
-                     const MarkSampler* marks, ColorPlanes& planes, int rowBegin, int rowEnd) {
+                     const FollowingMarks* marks, ColorPlanes& planes, int rowBegin, int rowEnd) {
     const auto with = [&](auto kind) {
         CompositeSplatsWith<decltype(kind)::value>(splats, rows, count, sampler, stamps, marks,
                                                    planes, rowBegin, rowEnd);
     };
-    if (marks != nullptr && !marks->isCombined) {
-        with(std::integral_constant<Kind, Kind::Vector>{});
-    } else if (marks != nullptr) {
-        with(std::integral_constant<Kind, Kind::Combined>{});
-    } else if (sampler->hasPieces) {
+    if (sampler->hasPieces) {
         with(std::integral_constant<Kind, Kind::RadialPieces>{});
     } else if (sampler->isRadial) {
         with(std::integral_constant<Kind, Kind::Radial>{});
@@ -620,9 +552,9 @@ HWY_EXPORT(CompositeTarget);
 
 void compositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                      const FootprintSampler* sampler, const FootprintStamps* stamps,
-                     const MarkSampler* marks, ColorPlanes& planes, int rowBegin, int rowEnd) {
-    HWY_DYNAMIC_DISPATCH(CompositeSplats)(splats, rows, count, sampler, stamps, marks, planes,
-                                          rowBegin, rowEnd);
+                     const FollowingMarks* marks, ColorPlanes& planes, int rowBegin, int rowEnd) {
+    HWY_DYNAMIC_DISPATCH(CompositeSplats)
+    (splats, rows, count, sampler, stamps, marks, planes, rowBegin, rowEnd);
 }
 
 const char* compositeTarget() { return HWY_DYNAMIC_DISPATCH(CompositeTarget)(); }

@@ -8,6 +8,8 @@
 
 namespace texsplat::render::cpu {
 
+struct FollowingMarks;
+
 /// @brief The rows [begin, end) of the image a set-up splat may cover (empty when it covers no
 /// pixel), kept apart from its SplatRaster: a band of rows scans these, 8 bytes a splat, to
 /// find the splats that reach it, instead of the rasters, about 110.
@@ -37,12 +39,11 @@ inline RowSpan rowSpanOf(const SplatRaster& splat) {
 /// Splats set up as stamped (SplatRaster::kStamped, orthographic views) take their footprint
 /// from `stamps`, the SplatSetup's FootprintStamps, instead of the sampler.
 ///
-/// With `marks`, vector splats (the table through the texture operator, with the opacity of
-/// one voxel's slab) or combined splats (the scalar medium, its colour changed by the marks),
-/// as the GL vector splat fragment shader draws them (detail/VectorSplatShaders.h).
+/// With `marks` (combined splats), each splat is followed by its marks, composited as
+/// compositeMarks() does, before the next splat.
 void compositeSplats(const SplatRaster* splats, const RowSpan* rows, std::size_t count,
                      const FootprintSampler* sampler, const FootprintStamps* stamps,
-                     const MarkSampler* marks, ColorPlanes& planes, int rowBegin, int rowEnd);
+                     const FollowingMarks* marks, ColorPlanes& planes, int rowBegin, int rowEnd);
 
 /// @brief The instruction set compositeSplats() runs with on this CPU ("AVX2", "AVX3" …).
 const char* compositeTarget();

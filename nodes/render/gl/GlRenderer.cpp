@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <chrono>
 #include <limits>
+#include <map>
 #include <string>
 
 namespace texsplat::render {
@@ -183,17 +184,35 @@ void GlRenderer::drawPasses(const Frame& frame, Prepared& prepared, const Tile* 
         glEnable(GL_BLEND);
         glBlendEquation(GL_FUNC_ADD);
         glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+        // Image pixels (x right, y down) to the whole image's clip space, for the marks.
+        glm::mat4 imageToClip(1.0f);
+        imageToClip[0][0] = 2.0f / static_cast<float>(frame.width);
+        imageToClip[1][1] = -2.0f / static_cast<float>(frame.height);
+        imageToClip[3][0] = -1.0f;
+        imageToClip[3][1] = 1.0f;
+        imageToClip = toTile(imageToClip);
+        // The list whose marks each mark batch holds in this pass (marks follow the view, and a
+        // node used twice has one batch for two lists).
+        std::map<const SplatBatch*, const FrameSplats*> markLists;
         for (const detail::SplatRun& run : prepared.runs) {
             const FrameSplats& splats = frame.splats[run.batch];
             SplatBatch& batch = *prepared.batches[run.batch];
-            if (!batch.isUploaded(splats.splats)) {
+            if (splats.footprint->hasMarks()) {
+                const FrameSplats*& uploaded = markLists[&batch];
+                if (uploaded != &splats) {
+                    const Clock::time_point uploadStart = Clock::now();
+                    batch.uploadMarks(splats, frame.width, frame.height);
+                    upload += secondsSince(uploadStart);
+                    uploaded = &splats;
+                }
+            } else if (!batch.isUploaded(splats.splats)) {
                 const Clock::time_point uploadStart = Clock::now();
                 batch.upload(splats.splats);
                 upload += secondsSince(uploadStart);
             }
             SplatView view = splats.view;
             view.localToClip = toTile(view.localToClip);
-            batch.draw(view, splats.marks, run.begin, run.end - run.begin);
+            batch.draw(view, splats.marks, imageToClip, run.begin, run.end - run.begin);
         }
     }
     glFinish();

@@ -2,9 +2,10 @@
 
 #include "nodes/kernel/FootprintTexture.h"
 #include "nodes/kernel/RadialKernel.h"
-#include "nodes/kernel/VectorSplatTable.h"
+#include "nodes/render/Frame.h"
+#include "nodes/render/ScreenMarks.h"
+#include "nodes/render/gl/detail/MarkShaders.h"
 #include "nodes/render/gl/detail/SplatShaders.h"
-#include "nodes/render/gl/detail/VectorSplatShaders.h"
 #include "octree/Splat.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
@@ -12,7 +13,9 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
 #include <string>
 
@@ -20,30 +23,37 @@ namespace texsplat::render {
 namespace {
 
 // The shading function first (every stage calls it; it opens with the #version line, after
-// which the light scale is declared), then `defines`, then the splat frame for a vertex stage,
-// then the stage.
-std::string fragmentSource(const char* stage, const char* defines = "") {
-    return gl::withLightScale((std::string(detail::kSplatShading) + defines + stage).c_str());
-}
-std::string vertexSource(const char* stage, const char* defines = "") {
-    return gl::withLightScale(
-        (std::string(detail::kSplatShading) + defines + detail::kSplatFrame + stage).c_str());
+// which the light scale is declared), then `defines`, then the stage's pieces in order.
+std::string source(const char* defines, std::initializer_list<const char*> pieces) {
+    std::string text = std::string(detail::kSplatShading) + defines;
+    for (const char* piece : pieces) {
+        text += piece;
+    }
+    return gl::withLightScale(text.c_str());
 }
 
 gl::Program makeProgram(SplatShape shape) {
-    if (shape == SplatShape::VectorSquare) {
-        return gl::Program("vector splat", vertexSource(detail::kVectorSplatVertexShader),
-                           fragmentSource(detail::kVectorSplatFragmentShader));
-    }
-    if (shape == SplatShape::CombinedSquare) {
+    using namespace detail;
+    switch (shape) {
+    case SplatShape::VectorMarks:
+        return gl::Program("vector marks", source("", {kMarkPlacement, kMarkVertexShader}),
+                           source("", {kMarkShade, kMarkFragmentShader}));
+    case SplatShape::CombinedMarks: {
         const char* combined = "#define COMBINED 1\n";
-        return gl::Program("combined splat",
-                           vertexSource(detail::kVectorSplatVertexShader, combined),
-                           fragmentSource(detail::kVectorSplatFragmentShader, combined));
+        return gl::Program(
+            "combined splat",
+            source(combined, {kSplatFrame, kSplatPlacement, kMarkPlacement, kMarkVertexShader}),
+            source(combined, {kSplatShade, kMarkShade, kMarkFragmentShader}));
     }
-    return gl::Program("splat", vertexSource(detail::kSplatVertexShader),
-                       fragmentSource(detail::kSplatFragmentShader));
+    default:
+        return gl::Program("splat", source("", {kSplatFrame, kSplatPlacement, kSplatVertexShader}),
+                           source("", {kSplatShade, kSplatFragmentShader}));
+    }
 }
+
+// A mark batch's element: three vec4s (a splat: octree::Splat in the first two; a mark: its
+// centre and axis, shape and depth, colour and opacity) and its kind (0: splat, 1: mark).
+constexpr std::size_t kElementFloats = 16;
 
 // Two triangles of the square [-1, 1]², indexed like the polygon so one draw call serves both.
 const std::vector<float> kSquareVertices{-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0};
@@ -64,23 +74,28 @@ SplatBatch::SplatBatch(SplatShape shape, double extent,
     mTemplateIndices.setData(templateIndices);
     mVertexArray.setAttribute(0, mTemplateVertices, 3, 0, 0);
     mVertexArray.setIndexBuffer(mTemplateIndices);
-    // Attributes need storage behind them before the first upload; one empty splat will do.
-    mInstances.setData(std::vector<octree::Splat>(1), gl::BufferUsage::DynamicDraw);
+    // Attributes need storage behind them before the first upload; one empty element will do.
+    mInstances.setData(std::vector<float>(kElementFloats), gl::BufferUsage::DynamicDraw);
     setInstanceAttributes(0);
 }
 
 // GL 3.3 has no base instance: a run that starts later points the attributes further in.
 void SplatBatch::setInstanceAttributes(std::size_t first) {
-    const std::size_t splat = first * sizeof(octree::Splat);
-    mVertexArray.setAttribute(1, mInstances, 4, sizeof(octree::Splat), splat, 1);
-    mVertexArray.setAttribute(2, mInstances, 4, sizeof(octree::Splat), splat + 4 * sizeof(float),
-                              1);
-    if (mVectors) {
-        const std::size_t vector = first * sizeof(octree::SplatVector);
-        mVertexArray.setAttribute(3, *mVectors, 3, sizeof(octree::SplatVector), vector, 1);
-        mVertexArray.setIntegerAttribute(4, *mVectors, 2, GL_UNSIGNED_SHORT,
-                                         sizeof(octree::SplatVector), vector + 3 * sizeof(float),
-                                         1);
+    if (hasMarks()) {
+        constexpr std::size_t kStride = kElementFloats * sizeof(float);
+        const std::size_t element = first * kStride;
+        for (GLuint k = 0; k < 3; ++k) {
+            mVertexArray.setAttribute(1 + k, mInstances, 4, kStride,
+                                      element + 4 * k * sizeof(float), 1);
+        }
+        if (mShape == SplatShape::CombinedMarks) {
+            mVertexArray.setAttribute(4, mInstances, 1, kStride, element + 12 * sizeof(float), 1);
+        }
+    } else {
+        const std::size_t splat = first * sizeof(octree::Splat);
+        mVertexArray.setAttribute(1, mInstances, 4, sizeof(octree::Splat), splat, 1);
+        mVertexArray.setAttribute(2, mInstances, 4, sizeof(octree::Splat),
+                                  splat + 4 * sizeof(float), 1);
     }
     mAttributeFirst = first;
 }
@@ -91,10 +106,6 @@ std::uint64_t SplatBatch::textureBytes() const {
         bytes += std::uint64_t(mFootprint->width()) * std::uint64_t(mFootprint->height()) *
                  std::uint64_t(gl::bytesPerTexel(mFootprint->format()));
     }
-    if (mTable) {
-        bytes += std::uint64_t(mTable->width()) * std::uint64_t(mTable->height()) *
-                 std::uint64_t(mTable->layers()) * std::uint64_t(gl::bytesPerTexel(mTable->format()));
-    }
     return bytes;
 }
 
@@ -104,34 +115,19 @@ SplatBatch SplatBatch::textured(const kernel::FootprintTexture& footprint) {
     batch.mFootprint.emplace(footprint.resolution(), footprint.resolution(),
                              gl::TextureFormat::R32F, bilinearClamped());
     batch.mFootprint->setData(footprint.texels());
-    batch.mFootprintExtent = static_cast<float>(footprint.extent());
     return batch;
 }
 
-SplatBatch SplatBatch::markSquares(SplatShape shape, const kernel::VectorSplatTable& table) {
-    SplatBatch batch(shape, table.extent(), kSquareVertices, kSquareIndices);
-    batch.mRows = table.rows();
-    batch.mColumns = table.columns();
-    batch.mTable.emplace(table.resolution(), table.resolution(), table.rows() * table.columns(),
-                         gl::TextureFormat::RG8, bilinearClamped());
-    batch.mTable->setData(table.texels());
-    batch.mVectors.emplace();
-    batch.mVectors->setData(std::vector<octree::SplatVector>(1), gl::BufferUsage::DynamicDraw);
-    batch.setInstanceAttributes(0);
-    return batch;
+SplatBatch SplatBatch::vectorMarks() {
+    return SplatBatch(SplatShape::VectorMarks, 1.0, kSquareVertices, kSquareIndices);
 }
 
-SplatBatch SplatBatch::vectorMarks(const kernel::VectorSplatTable& table) {
-    return markSquares(SplatShape::VectorSquare, table);
-}
-
-SplatBatch SplatBatch::combinedMarks(const kernel::VectorSplatTable& table,
-                                     const kernel::FootprintTexture& footprint) {
-    SplatBatch batch = markSquares(SplatShape::CombinedSquare, table);
+SplatBatch SplatBatch::combinedMarks(const kernel::FootprintTexture& footprint) {
+    SplatBatch batch(SplatShape::CombinedMarks, footprint.extent(), kSquareVertices,
+                     kSquareIndices);
     batch.mFootprint.emplace(footprint.resolution(), footprint.resolution(),
                              gl::TextureFormat::R32F, bilinearClamped());
     batch.mFootprint->setData(footprint.texels());
-    batch.mFootprintExtent = static_cast<float>(footprint.extent());
     return batch;
 }
 
@@ -180,8 +176,10 @@ SplatBatch SplatBatch::create(const SplatFootprint& footprint) {
     case SplatShape::GouraudPolygon:
         return polygonal(*footprint.kernel, footprint.extent, footprint.radialSamples,
                          footprint.azimuthSamples);
-    case SplatShape::VectorSquare: return vectorMarks(*footprint.table);
-    case SplatShape::CombinedSquare: return combinedMarks(*footprint.table, *footprint.texture);
+    case SplatShape::VectorMarks:
+        return vectorMarks();
+    case SplatShape::CombinedMarks:
+        return combinedMarks(*footprint.texture);
     }
     throw DataError("splat batch: unknown splat shape");
 }
@@ -189,16 +187,52 @@ SplatBatch SplatBatch::create(const SplatFootprint& footprint) {
 void SplatBatch::upload(const octree::SplatList& splats) {
     TEXSPLAT_ASSERT(splats.size() <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
                     "SplatBatch::upload(): more splats than one instanced draw can take");
-    TEXSPLAT_ASSERT(!hasMarks() || splats.hasVectors() || splats.isEmpty(),
-                    "SplatBatch::upload(): vector splats need the list's vectors");
+    TEXSPLAT_ASSERT(!hasMarks(), "SplatBatch::upload(): mark batches upload with uploadMarks()");
     mUploadedList.reset();
     mCount = splats.size();
     if (mCount > 0) {
         mInstances.setData(splats.splats(), gl::BufferUsage::DynamicDraw);
-        if (hasMarks()) {
-            mVectors->setData(splats.vectors(), gl::BufferUsage::DynamicDraw);
+    }
+}
+
+void SplatBatch::uploadMarks(const FrameSplats& batch, int width, int height) {
+    TEXSPLAT_ASSERT(hasMarks(), "SplatBatch::uploadMarks(): not a mark batch");
+    const octree::SplatList& list = *batch.splats;
+    std::vector<ScreenMark> marks;
+    makeScreenMarks(batch, width, height, marks);
+    const bool combined = mShape == SplatShape::CombinedMarks;
+    const std::size_t elements = marks.size() + (combined ? list.size() : 0);
+    TEXSPLAT_ASSERT(elements <= static_cast<std::size_t>(std::numeric_limits<int>::max()),
+                    "SplatBatch::uploadMarks(): more marks than one instanced draw can take");
+    std::vector<float> data(std::max<std::size_t>(elements, 1) * kElementFloats, 0.0f);
+    mElementBegins.resize(list.size() + 1);
+    std::size_t next = 0;
+    const auto mark = [&](const ScreenMark& m) {
+        float* e = &data[next++ * kElementFloats];
+        const float values[13] = {m.centre[0], m.centre[1], m.axis[0], m.axis[1],  m.halfLength,
+                                  m.halfWidth, m.head,      m.depth,   m.color[0], m.color[1],
+                                  m.color[2],  m.alpha,     1.0f};
+        std::copy(values, values + 13, e);
+    };
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        mElementBegins[i] = static_cast<std::uint32_t>(next);
+        if (combined) {
+            const octree::Splat& splat = list.splats()[i];
+            float* e = &data[next++ * kElementFloats];
+            const float values[8] = {splat.position.x, splat.position.y, splat.position.z,
+                                     splat.size,       splat.color.r,    splat.color.g,
+                                     splat.color.b,    splat.extinction};
+            std::copy(values, values + 8, e);
+        }
+        for (std::size_t m = list.markBegin(i); m < list.markBegin(i + 1); ++m) {
+            mark(marks[m]);
         }
     }
+    mElementBegins[list.size()] = static_cast<std::uint32_t>(next);
+    mUploadedList.reset();
+    mCount = list.size();
+    mInstances.setData(data, gl::BufferUsage::DynamicDraw);
+    setInstanceAttributes(0);
 }
 
 void SplatBatch::upload(const std::shared_ptr<const octree::SplatList>& splats) {
@@ -211,53 +245,53 @@ bool SplatBatch::isUploaded(const std::shared_ptr<const octree::SplatList>& spla
     return mUploadedList.lock() == splats && splats->revision() == mUploadedRevision;
 }
 
-void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks) {
-    draw(view, marks, 0, mCount);
+void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks,
+                      const glm::mat4& imageToClip) {
+    draw(view, marks, imageToClip, 0, mCount);
 }
 
-void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks, std::size_t first,
-                      std::size_t count) {
+void SplatBatch::draw(const SplatView& view, const MarkDrawing& marks, const glm::mat4& imageToClip,
+                      std::size_t first, std::size_t count) {
     TEXSPLAT_ASSERT(first + count <= mCount, "SplatBatch::draw(): splats beyond the upload");
     if (count == 0) {
         return;
     }
-    if (first != mAttributeFirst) {
-        setInstanceAttributes(first);
+    // Mark batches draw elements: the splats' marks (and the splats).
+    const std::size_t begin = hasMarks() ? mElementBegins[first] : first;
+    const std::size_t end = hasMarks() ? mElementBegins[first + count] : first + count;
+    if (begin == end) {
+        return;
+    }
+    if (begin != mAttributeFirst) {
+        setInstanceAttributes(begin);
     }
     mProgram.use();
-    mProgram.setUniform("localToClip", view.localToClip);
-    mProgram.setUniform("spacing", view.spacing);
-    mProgram.setUniform("perspective", view.isPerspective ? 1 : 0);
-    mProgram.setUniform("eye", view.eye);
-    mProgram.setUniform("direction", view.direction);
-    mProgram.setUniform("extent", mExtent);
-    if (hasMarks()) {
-        setMarkUniforms(marks);
-    } else {
+    if (mShape != SplatShape::VectorMarks) {
+        mProgram.setUniform("localToClip", view.localToClip);
+        mProgram.setUniform("spacing", view.spacing);
+        mProgram.setUniform("perspective", view.isPerspective ? 1 : 0);
+        mProgram.setUniform("eye", view.eye);
+        mProgram.setUniform("direction", view.direction);
+        mProgram.setUniform("extent", mExtent);
         mProgram.setUniform("gouraud", mShape == SplatShape::GouraudPolygon ? 1 : 0);
         if (mFootprint) {
             mFootprint->bind(0);
             mProgram.setUniform("footprint", 0);
         }
     }
-    mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(count));
+    if (hasMarks()) {
+        setMarkUniforms(marks, imageToClip);
+    }
+    mVertexArray.drawElements(GL_TRIANGLES, mTemplateIndexCount, static_cast<int>(end - begin));
 }
 
-void SplatBatch::setMarkUniforms(const MarkDrawing& marks) {
-    mProgram.setUniform("stretch", marks.stretch);
-    mProgram.setUniform("rowShift", ((marks.rowShift % mRows) + mRows) % mRows);
-    mProgram.setUniform("rows", mRows);
-    mProgram.setUniform("columns", mColumns);
-    mProgram.setUniform("blend", marks.textureOperator == MarkOperator::Blend ? 1 : 0);
+void SplatBatch::setMarkUniforms(const MarkDrawing& marks, const glm::mat4& imageToClip) {
+    mProgram.setUniform("imageToClip", imageToClip);
+    mProgram.setUniform("particles", marks.type == MarkType::Particles ? 1 : 0);
+    mProgram.setUniform("particleTail", MarkDrawing::kParticleTail);
+    mProgram.setUniform("blend",
+                        !marks.isCombined && marks.textureOperator == MarkOperator::Blend ? 1 : 0);
     mProgram.setUniform("blendColor", marks.blendColor);
-    mTable->bind(0);
-    mProgram.setUniform("marks", 0);
-    if (mShape == SplatShape::CombinedSquare) {
-        mProgram.setUniform("footprintExtent", mFootprintExtent);
-        mProgram.setUniform("contrast", marks.contrast);
-        mFootprint->bind(1);
-        mProgram.setUniform("footprint", 1);
-    }
 }
 
 } // namespace texsplat::render

@@ -7,24 +7,28 @@
 #include "scenegraph/gl/Buffer.h"
 #include "scenegraph/gl/Program.h"
 #include "scenegraph/gl/Texture2D.h"
-#include "scenegraph/gl/Texture2DArray.h"
 #include "scenegraph/gl/VertexArray.h"
+
+#include <glm/mat4x4.hpp>
 
 #include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace texsplat::kernel {
 class FootprintTexture;
 class RadialKernel;
-class VectorSplatTable;
 } // namespace texsplat::kernel
 
 namespace texsplat::render {
 
+struct FrameSplats;
+
 /// @brief A splat list on the GPU, drawn as instanced copies of one small template that turns
-/// to face the eye (never one polygon set per voxel).
+/// to face the eye (never one polygon set per voxel), or for vector and combined splats as
+/// instanced squares for each mark (and each splat).
 ///
 /// The template is the footprint of one splat, `extent` voxels from the centre at size 1; each
 /// instance reads its centre, size, emission C and extinction τ from the octree's 32-byte
@@ -50,31 +54,29 @@ public:
     static SplatBatch polygonal(const kernel::RadialKernel& kernel, double extent,
                                 int radialSamples = 3, int azimuthSamples = 7);
 
-    /// @brief Vector splats: squares of `table.extent()` voxels at size 1, turned to their
-    /// projected vector, carrying the table (an RG8 texture array, bilinear, one layer per row
-    /// and column: 8 bits hold the marks' values to 0.002, and llvmpipe samples them faster
-    /// than floats) under the operator of the MarkDrawing passed to draw(). The splat list must
-    /// carry vectors.
+    /// @brief Vector splats: each mark (render::ScreenMark) an instanced square stretched to
+    /// its rectangle in the image, shaded by its profile (gl/detail/MarkShaders.h). The marks are
+    /// laid out for each frame's view: uploadMarks().
     /// @throws GlError as textured().
-    static SplatBatch vectorMarks(const kernel::VectorSplatTable& table);
-
-    /// @brief Combined splats: as vectorMarks(), and the scalar `footprint` as textured() has it
-    /// (sampled at the same voxel offsets, so the square being wider than the footprint changes
-    /// nothing of the scalar part).
+    static SplatBatch vectorMarks();
+    /// @brief Combined splats: each splat as textured() draws it with `footprint`, followed by
+    /// its marks as vectorMarks() draws them, in one instanced draw.
     /// @throws GlError as textured().
-    static SplatBatch combinedMarks(const kernel::VectorSplatTable& table,
-                                    const kernel::FootprintTexture& footprint);
-
+    static SplatBatch combinedMarks(const kernel::FootprintTexture& footprint);
     /// @brief The batch that draws splats looking like `footprint`: textured(), polygonal(),
     /// vectorMarks() or combinedMarks() by its shape.
     /// @throws as those.
     static SplatBatch create(const SplatFootprint& footprint);
 
-    /// @brief Replaces the instance data by `splats` (back to front, as drawn); vector and
-    /// combined batches need the list's vectors.
+    /// @brief Replaces the instance data by `splats` (back to front, as drawn); for scalar
+    /// shapes (mark batches: uploadMarks()).
     void upload(const octree::SplatList& splats);
+    /// @brief For vector and combined batches: replaces the instance data by `batch`'s splats
+    /// and marks laid out for its view in an image of `width` x `height` pixels
+    /// (render::makeScreenMarks(), as the CPU backend draws them).
+    void uploadMarks(const FrameSplats& batch, int width, int height);
 
-    /// @brief Bytes of the batch's textures (footprint, vector table), for the time report.
+    /// @brief Bytes of the batch's textures (the footprint), for the time report.
     [[nodiscard]] std::uint64_t textureBytes() const;
 
     /// @brief As upload(), remembering `splats` so that isUploaded() can tell: a node used
@@ -86,14 +88,16 @@ public:
     /// on the GPU: the same list at the same revision (a node refills its list every frame).
     bool isUploaded(const std::shared_ptr<const octree::SplatList>& splats) const;
 
-    /// @brief Draws the uploaded splats in their order; `marks` matters to vector and combined
+    /// @brief Draws the uploaded splats in their order; `marks` and `imageToClip` (image
+    /// pixels, x right and y down, with z_ndc, to clip space) matter to vector and combined
     /// batches only. Leaves blending and depth state to the caller (GlRenderer's splat pass).
-    void draw(const SplatView& view, const MarkDrawing& marks = {});
+    void draw(const SplatView& view, const MarkDrawing& marks = {},
+              const glm::mat4& imageToClip = glm::mat4(1.0f));
 
-    /// @brief Draws `count` uploaded splats from `first` on, in their order (one run of a
-    /// frame whose batches GlRenderer interleaves by depth).
-    void draw(const SplatView& view, const MarkDrawing& marks, std::size_t first,
-              std::size_t count);
+    /// @brief Draws `count` uploaded splats from `first` on, with their marks, in their order
+    /// (one run of a frame whose batches GlRenderer interleaves by depth).
+    void draw(const SplatView& view, const MarkDrawing& marks, const glm::mat4& imageToClip,
+              std::size_t first, std::size_t count);
 
     /// @brief Number of uploaded splats.
     std::size_t size() const { return mCount; }
@@ -107,11 +111,10 @@ public:
 private:
     SplatBatch(SplatShape shape, double extent, const std::vector<float>& templateVertices,
                const std::vector<unsigned>& templateIndices);
-    static SplatBatch markSquares(SplatShape shape, const kernel::VectorSplatTable& table);
     void setInstanceAttributes(std::size_t first);
-    void setMarkUniforms(const MarkDrawing& marks);
+    void setMarkUniforms(const MarkDrawing& marks, const glm::mat4& imageToClip);
     bool hasMarks() const {
-        return mShape == SplatShape::VectorSquare || mShape == SplatShape::CombinedSquare;
+        return mShape == SplatShape::VectorMarks || mShape == SplatShape::CombinedMarks;
     }
 
     SplatShape mShape;
@@ -122,14 +125,11 @@ private:
     gl::Buffer mInstances;
     gl::VertexArray mVertexArray;
     std::optional<gl::Texture2D> mFootprint;
-    float mFootprintExtent = 1.0f;
-    // Vector and combined squares only.
-    std::optional<gl::Texture2DArray> mTable;
-    std::optional<gl::Buffer> mVectors;
-    int mRows = 1;
-    int mColumns = 1;
     int mTemplateIndexCount;
     std::size_t mCount = 0;
+    // Mark batches: the first element of each uploaded splat (and one past the last): its
+    // marks' for vector splats, the splat's own for combined ones.
+    std::vector<std::uint32_t> mElementBegins;
     std::size_t mAttributeFirst = 0; // the instance the per-instance attributes start at
     std::weak_ptr<const octree::SplatList> mUploadedList;
     std::uint64_t mUploadedRevision = 0;

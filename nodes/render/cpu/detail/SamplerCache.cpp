@@ -9,10 +9,4 @@ SamplerCache::footprint(const std::shared_ptr<const SplatFootprint>& footprint) 
     });
 }
 
-std::shared_ptr<const MarkPlanes> SamplerCache::marks(const SplatFootprint& footprint) {
-    return mMarks.get(footprint.table, 0, [&] {
-        return std::make_shared<const MarkPlanes>(*footprint.table);
-    });
-}
-
 } // namespace texsplat::render::cpu::detail

@@ -5,26 +5,20 @@
 #include "nodes/render/detail/KeptPerObject.h"
 
 #include <memory>
-#include <vector>
 
 namespace texsplat::render::cpu::detail {
 
-/// The footprint samplers and mark planes a CpuRenderer has laid out, one per SplatFootprint
-/// (a node's description for its current fields), dropped when the footprint is gone.
+/// The footprint samplers a CpuRenderer has laid out, one per SplatFootprint (a node's
+/// description for its current fields), dropped when the footprint is gone.
 class SamplerCache {
 public:
     /// The sampler of `footprint` (which must carry a texture), laid out on first use.
     std::shared_ptr<const FootprintSampler>
     footprint(const std::shared_ptr<const SplatFootprint>& footprint);
 
-    /// The planes of `footprint`'s mark table, laid out on first use of that table.
-    std::shared_ptr<const MarkPlanes> marks(const SplatFootprint& footprint);
-
 private:
     render::detail::KeptPerObject<SplatFootprint, std::shared_ptr<const FootprintSampler>>
         mFootprints;
-    render::detail::KeptPerObject<kernel::VectorSplatTable, std::shared_ptr<const MarkPlanes>>
-        mMarks;
 };
 
 } // namespace texsplat::render::cpu::detail

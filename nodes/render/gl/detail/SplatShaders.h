@@ -2,8 +2,8 @@
 
 namespace texsplat::render::detail {
 
-/// The splat vertex shader: one instanced template (a textured square, or the polygonal
-/// Gaussian's fan) turned to face the eye per splat.
+/// The placement of a splat by the vertex shader: one instanced template (a textured square,
+/// or the polygonal Gaussian's fan) turned to face the eye per splat.
 ///
 /// The kernel is isotropic in voxel-index space (the ellipsoidal kernel h(S⁻¹x) for voxel
 /// spacing S, as docs/kernel.md recommends for anisotropic grids), so the template is laid out
@@ -13,11 +13,7 @@ namespace texsplat::render::detail {
 /// texture coordinates are the voxel-space offsets the footprint texture is tabulated over.
 /// The line integral of h(S⁻¹x) along the unit direction d is f(r)/|e| (in local length units),
 /// and a coarse splat of `size` k (h(x/k)) integrates to k·f(r/k): lengthScale = size / |e|.
-constexpr const char* kSplatVertexShader = R"(
-layout(location = 0) in vec3 corner;          // xy: template vertex in units of the extent; z: footprint (polygon template)
-layout(location = 1) in vec4 positionSize;    // octree::Splat: centre (local space), size in voxels
-layout(location = 2) in vec4 colorExtinction; // octree::Splat: emission C per unit length, extinction tau
-
+constexpr const char* kSplatPlacement = R"(
 uniform mat4 localToClip;
 uniform vec3 spacing;
 uniform bool perspective;
@@ -32,7 +28,10 @@ flat out vec4 medium;
 out vec4 vertexColor;
 flat out float colorScale;
 
-void main() {
+// corner: xy the template vertex in units of the extent, z its footprint (polygon template);
+// positionSize, colorExtinction: octree::Splat (centre in local space, size in voxels; emission
+// C per unit length, extinction tau).
+void placeSplat(vec3 corner, vec4 positionSize, vec4 colorExtinction) {
     vec3 centre = positionSize.xyz;
     float size = positionSize.w;
     SplatFrame frame = splatFrame(centre, perspective, eye, direction, spacing);
@@ -54,6 +53,15 @@ void main() {
                                        corner.z * lengthScale)
                           : vec4(0.0);
 }
+)";
+
+/// The splat vertex shader's main: one instance per octree::Splat (after kSplatPlacement).
+constexpr const char* kSplatVertexShader = R"(
+layout(location = 0) in vec3 corner;          // template vertex (see placeSplat)
+layout(location = 1) in vec4 positionSize;    // octree::Splat
+layout(location = 2) in vec4 colorExtinction; // octree::Splat
+
+void main() { placeSplat(corner, positionSize, colorExtinction); }
 )";
 
 /// The facing frame of a splat, shared by the vertex shaders (put in front of them by
@@ -86,9 +94,9 @@ SplatFrame splatFrame(vec3 centre, bool perspective, vec3 eye, vec3 direction, v
 }
 )";
 
-/// The splat fragment shader: the footprint texture's value, or the Gouraud-interpolated
+/// The shading of a splat's fragment: the footprint texture's value, or the Gouraud-interpolated
 /// color of the polygonal template.
-constexpr const char* kSplatFragmentShader = R"(
+constexpr const char* kSplatShade = R"(
 in vec2 texCoord;
 in float lengthScale;
 flat in vec4 medium;
@@ -98,16 +106,21 @@ flat in float colorScale;
 uniform sampler2D footprint;
 uniform bool gouraud;
 
-out vec4 fragColor;
-
-void main() {
+vec4 shadeFootprint() {
     // Light is drawn scaled by lightScale (gl/LightScale.h), so that blending adds it up finite.
     vec4 color = gouraud ? vec4(vertexColor.rgb * (colorScale * lightScale), vertexColor.a)
                          : shadeSplat(medium.rgb * lightScale, medium.a,
                                       texture(footprint, texCoord).r * lengthScale);
     // Light beyond FLT_MAX stays FLT_MAX, as on the CPU backend and in the ray caster.
-    fragColor = vec4(min(color.rgb, vec3(3.4028235e38 * lightScale)), color.a);
+    return vec4(min(color.rgb, vec3(3.4028235e38 * lightScale)), color.a);
 }
+)";
+
+/// The splat fragment shader's main (after kSplatShade).
+constexpr const char* kSplatFragmentShader = R"(
+out vec4 fragColor;
+
+void main() { fragColor = shadeFootprint(); }
 )";
 
 /// Emission-absorption through one splat (put in front of every stage by SplatBatch): a slab of
