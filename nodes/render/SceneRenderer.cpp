@@ -17,6 +17,7 @@ namespace texsplat::render {
 namespace {
 
 constexpr int kMaxSide = 16384;
+constexpr const char* kDrawStep = "drawing";
 
 } // namespace
 
@@ -67,8 +68,12 @@ image::Image SceneRenderer::render(sg::Node& root, bool withDepth) {
     // CPU's colour planes are as large; GL draws an image larger than its device's framebuffers
     // in tiles into it). Loading the scene's volumes, earlier, asks for theirs first.
     checkMemory(mStage, mImageBytes, mOptions.advice);
-    return withMemoryStage(mStage, mImageBytes, mOptions.advice, [&] {
+    const sg::WorkProgress& progress = renderers.action.workProgress();
+    image::Image image = withMemoryStage(mStage, mImageBytes, mOptions.advice, [&] {
         const Frame& frame = renderers.action.collect(root);
+        // The draw reports nothing while it runs: a cancellation asked for during the frame's
+        // collection (after its last report) stops here rather than after the draw.
+        sg::reportWork(progress, kDrawStep, 0.0);
 #ifdef TEXSPLAT_WITH_GL
         if (renderers.gl) {
             return renderers.gl->draw(frame, renderers.action.statistics(), withDepth);
@@ -76,6 +81,8 @@ image::Image SceneRenderer::render(sg::Node& root, bool withDepth) {
 #endif
         return renderers.cpu->draw(frame, renderers.action.statistics(), withDepth);
     });
+    sg::reportWork(progress, kDrawStep, 1.0);
+    return image;
 }
 
 const sg::RenderStatistics& SceneRenderer::statistics() const {

@@ -42,8 +42,9 @@ public:
     SceneRenderer(const SceneRenderer&) = delete;
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
-    /// @brief Where the long steps of a render (reading volumes, classifying, building octrees)
-    /// report how they go; the progress may cancel them (sg::Cancelled).
+    /// @brief Where the long steps of a render (reading volumes, classifying, building octrees,
+    /// then "drawing", at its start and end) report how they go; the progress may cancel them
+    /// (sg::Cancelled).
     void setWorkProgress(sg::WorkProgress progress);
 
     /// @brief Collects the frame of `root`, which must hold a camera (framedScene(),

@@ -121,6 +121,8 @@ def test_xarray_coordinates_give_spacing_and_origin(volume):
     # Decreasing coordinates (latitude from north to south) read the axis backwards.
     flipped = data.isel(y=slice(None, None, -1))
     assert np.array_equal(np.asarray(texsplat.render(flipped, size=(48, 48))), from_xarray)
+    with pytest.raises(ValueError, match=r"^volume: array of shape \(4, 5\) is not supported"):
+        texsplat.render(xarray.DataArray(np.zeros((4, 5), np.float32), dims=("y", "x")))
     uneven = data.assign_coords(x=np.arange(n) ** 2.0)
     with pytest.raises(ValueError, match="coordinate 'x' is not evenly spaced"):
         texsplat.render(uneven)

@@ -42,6 +42,7 @@ __all__ = [
 #: (progress bars with tqdm), or None.
 Progress = Union[None, bool, Callable[[str, float], Optional[bool]]]
 
+
 class TqdmProgress:
     """A progress callback that shows each long step (reading, classifying, building the octree)
     as a tqdm progress bar; ``render(..., progress=True)`` uses it."""
@@ -58,16 +59,19 @@ class TqdmProgress:
         if step != self._step:
             self.close()
             self._step = step
-            self._bar = self._tqdm(total=100, desc=step, unit="%", leave=False, **self._options)
-        self._bar.update(int(fraction * 100) - self._bar.n)
-        if fraction >= 1.0:
-            self.close()
+            if fraction < 1.0:
+                self._bar = self._tqdm(total=100, desc=step, unit="%", leave=False,
+                                       **self._options)
+        if self._bar is not None:
+            self._bar.update(int(fraction * 100) - self._bar.n)
+            if fraction >= 1.0:
+                self.close()
 
     def close(self) -> None:
+        """Closes the bar shown, if any (a step reported done again shows no new one)."""
         if self._bar is not None:
             self._bar.close()
             self._bar = None
-            self._step = None
 
 
 def _coordinate_axis(coordinate, name: str):
@@ -88,7 +92,9 @@ def _coordinate_axis(coordinate, name: str):
 
 def _from_xarray(volume):
     """The values, spacing and origin (x, y, z) of an xarray.DataArray of dims (z, y, x) or
-    (z, y, x, component)."""
+    (z, y, x, component); another shape passes on, for the array's own message."""
+    if volume.ndim not in (3, 4):
+        return volume.values, None, None
     spatial = volume.dims[:3]
     spacing, origin, reverse = [], [], []
     for name in spatial:
@@ -100,9 +106,8 @@ def _from_xarray(volume):
         origin.append(start)
         reverse.append(backwards)
     values = volume.values
-    flip = tuple(slice(None, None, -1) if backwards else slice(None) for backwards in reverse)
-    if len(flip) == values.ndim or len(flip) + 1 == values.ndim:
-        values = values[flip]
+    values = values[tuple(slice(None, None, -1) if backwards else slice(None)
+                          for backwards in reverse)]
     return values, spacing[::-1], origin[::-1]
 
 

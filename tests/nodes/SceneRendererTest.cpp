@@ -18,6 +18,9 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
 
 namespace texsplat::render {
 namespace {
@@ -71,11 +74,23 @@ TEST(SceneRenderer, refusesABadSizeAndAnImageBeyondTheMemoryLimit) {
               "limit of 1024 bytes (1 KiB); render less");
 }
 
-TEST(SceneRenderer, itsWorkProgressMayCancel) {
+TEST(SceneRenderer, reportsTheDrawToItsWorkProgressWhichMayCancel) {
     SceneRenderer renderer(cpuOptions(16, 16));
-    renderer.setWorkProgress([](std::string_view, double) { return false; });
+    std::vector<std::pair<std::string, double>> reports;
+    renderer.setWorkProgress([&](std::string_view step, double fraction) {
+        reports.emplace_back(std::string(step), fraction);
+        return true;
+    });
     const sg::Node::Ptr root = framedScene(blobScene(), 1.0f);
+    renderer.render(*root);
+    ASSERT_GE(reports.size(), 2u);
+    EXPECT_EQ(reports[reports.size() - 2], std::make_pair(std::string("drawing"), 0.0));
+    EXPECT_EQ(reports.back(), std::make_pair(std::string("drawing"), 1.0));
+    // Cancelled before the draw, at the latest.
+    renderer.setWorkProgress([](std::string_view step, double) { return step != "drawing"; });
     EXPECT_THROW(renderer.render(*root), sg::Cancelled);
+    renderer.setWorkProgress([](std::string_view, double) { return false; });
+    EXPECT_THROW(renderer.render(*framedScene(blobScene(), 1.0f)), sg::Cancelled);
 }
 
 TEST(SceneFraming, viewedSceneTurnsTheScenesOwnCameraOrFramesOne) {
