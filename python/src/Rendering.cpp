@@ -13,6 +13,7 @@
 #include "scenegraph/io/WriteAction.h"
 
 #include <nanobind/ndarray.h>
+#include <nanobind/stl/filesystem.h>
 #include <nanobind/stl/optional.h>
 #include <nanobind/stl/pair.h>
 #include <nanobind/stl/shared_ptr.h>
@@ -20,6 +21,7 @@
 #include <nanobind/stl/vector.h>
 
 #include <atomic>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -219,7 +221,7 @@ nb::ndarray<nb::numpy, float, nb::shape<-1, -1, 4>> pixelArray(nb::handle self) 
             self};
 }
 
-void saveImage(const Image& image, const std::string& path, bool colorbar,
+void saveImage(const Image& image, const std::filesystem::path& file, bool colorbar,
                const std::string& colorbarPosition, bool outline) {
     annotation::AnnotationRequest request;
     if (colorbar) {
@@ -232,6 +234,7 @@ void saveImage(const Image& image, const std::string& path, bool colorbar,
     if (outline) {
         request.outline = glm::vec4(1.0f);
     }
+    const std::string path = file.string();
     nb::gil_scoped_release release;
     if (!image.drawn) {
         if (request.colorbar || request.outline) {
@@ -303,9 +306,9 @@ void bindRendering(nb::module_& module) {
         .def("__getitem__", &nodeNamed, nb::arg("name"), "The first node DEF'd `name`.")
         .def(
             "write",
-            [](const Scene& scene, const std::string& path) {
+            [](const Scene& scene, const std::filesystem::path& path) {
                 nb::gil_scoped_release release;
-                sg::WriteAction::writeFile(*scene.root, path);
+                sg::WriteAction::writeFile(*scene.root, path.string());
             },
             nb::arg("path"), "Writes the scene as an Inventor file (atomically).")
         .def("__str__",
@@ -327,20 +330,26 @@ void bindRendering(nb::module_& module) {
 
     module.def(
         "read_scene",
-        [](const std::string& path) {
+        [](const std::filesystem::path& source) {
+            const std::string text = source.string();
+            if (text.rfind("#Inventor", 0) == 0) {
+                return Scene(sg::SceneReader::readString(text), "<string>");
+            }
             sg::Node::Ptr root;
             {
                 nb::gil_scoped_release release;
-                root = sg::SceneReader::readFile(path);
+                root = sg::SceneReader::readFile(text);
             }
-            return Scene(root, path);
+            return Scene(root, text);
         },
-        nb::arg("path"), "Reads an Inventor scene file (`texsplat render`'s).");
+        nb::arg("source"),
+        "Reads an Inventor scene file (`texsplat render`'s), or scene text: a string that starts "
+        "with its header, `#Inventor V2.1 ascii` (parse_scene() names it).");
     module.def(
         "read_image",
-        [](const std::string& path) {
+        [](const std::filesystem::path& path) {
             nb::gil_scoped_release release;
-            return Image{image::readImage(path), nullptr};
+            return Image{image::readImage(path.string()), nullptr};
         },
         nb::arg("path"),
         "Reads a .png or .exr image as texsplat compare reads it (PNG to linear premultiplied "

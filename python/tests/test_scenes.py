@@ -61,6 +61,17 @@ def test_bad_field_values_raise_with_the_readers_messages():
         texsplat.Node("Teapot")
 
 
+def test_a_scene_is_read_from_a_path_or_from_its_text(tmp_path):
+    path = tmp_path / "scene.iv"
+    path.write_text(SCENE)
+    from_path = texsplat.read_scene(path)
+    assert from_path.name == str(path)
+    assert texsplat.read_scene(SCENE)["TF"].preset == "MAGMA"
+    assert texsplat.parse_scene(SCENE, "mine.iv").name == "mine.iv"
+    from_path.write(tmp_path / "copy.iv")
+    assert texsplat.read_scene(str(tmp_path / "copy.iv"))["TF"].opacities == [0.0, 3.0]
+
+
 def test_scene_file_errors_name_file_line_and_column(tmp_path):
     broken = tmp_path / "broken.iv"
     broken.write_text("#Inventor V2.1 ascii\nSeparator {\n  TransferFunction { preset 3 }\n}\n")
