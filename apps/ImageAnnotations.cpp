@@ -1,8 +1,6 @@
 #include "apps/ImageAnnotations.h"
 
 #include "apps/SceneSetup.h"
-#include "nodes/annotation/VolumeOutline.h"
-#include "nodes/image/ImageIo.h"
 #include "scenegraph/Error.h"
 
 #include <CLI/CLI.hpp>
@@ -28,36 +26,19 @@ void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {
         ->needs(outline);
 }
 
-ImageAnnotations::ImageAnnotations(const AnnotationOptions& options, sg::Node& root)
-    : mRoot(root) {
+annotation::ImageAnnotations imageAnnotations(const AnnotationOptions& options, sg::Node& root) {
+    annotation::AnnotationRequest request;
     if (options.outline) {
-        mOutlineColor = parseOpaqueColor(options.outlineColor, "--outline-color");
+        request.outline = parseOpaqueColor(options.outlineColor, "--outline-color");
     }
     if (options.colorbar) {
-        annotation::LegendPosition position = annotation::LegendPosition::Right;
         try {
-            position = annotation::parseLegendPosition(options.colorbarPosition);
+            request.colorbar = annotation::parseLegendPosition(options.colorbarPosition);
         } catch (const DataError& error) {
             throw DataError(std::string("--colorbar-position: ") + error.what());
         }
-        mLegend = annotation::ColorLegend::ofScene(root, position);
     }
-}
-
-void ImageAnnotations::write(const image::Image& image, const std::string& path) const {
-    if (!mLegend && !mOutlineColor) {
-        image::writeImage(image, path);
-        return;
-    }
-    image::Image annotated = image;
-    if (mOutlineColor) {
-        annotation::VolumeOutline::ofScene(mRoot, image.width(), image.height(), *mOutlineColor)
-            .draw(annotated);
-    }
-    if (mLegend) {
-        mLegend->draw(annotated);
-    }
-    image::writeImage(annotated, path);
+    return annotation::ImageAnnotations(request, root);
 }
 
 } // namespace texsplat::apps

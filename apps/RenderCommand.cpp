@@ -7,23 +7,16 @@
 
 #include "nodes/image/ImageIo.h"
 #include "nodes/render/BackendChoice.h"
-#include "nodes/render/FrameAction.h"
 #include "nodes/render/RayCastImage.h"
-#include "nodes/render/cpu/CpuRenderer.h"
+#include "nodes/render/SceneRenderer.h"
 #include "octree/Splat.h"
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/MemoryLimit.h"
 #include "scenegraph/actions/RayCastAction.h"
 #include "scenegraph/actions/Seconds.h"
-#include "scenegraph/engines/TimeInputs.h"
-#include "scenegraph/sensors/SensorQueue.h"
-#include "scenegraph/sensors/SimulatedClock.h"
+#include "scenegraph/engines/SceneTime.h"
 
-#ifdef TEXSPLAT_WITH_GL
-#include "nodes/render/gl/GlRenderer.h"
-#include "scenegraph/gl/EglContext.h"
-#endif
 
 #include <CLI/CLI.hpp>
 
@@ -231,21 +224,17 @@ Animation parseAnimation(const RenderArguments& arguments) {
     return animation;
 }
 
-// Runs the scene's time through the frames: before each, a SimulatedClock moves to the frame's
-// time and the sensor queue runs, so every engine (ElapsedTime) and every field connected to one
-// holds its value for that time. The same options give the same times, hence the same images.
+// Runs the scene's time through the frames (sg::SceneTime): before each, the scene moves to the
+// frame's time, so every engine (ElapsedTime) and every field connected to one holds its value
+// for that time. The same options give the same times, hence the same images.
 class FrameClock {
 public:
-    FrameClock(const Animation& animation, sg::Node& root)
-        : mAnimation(animation), mQueue(mClock) {
-        sg::connectTimeInputs(root, mQueue.timeField());
-    }
+    FrameClock(const Animation& animation, sg::Node& root) : mAnimation(animation), mTime(root) {}
 
     // Moves the scene to frame `frame`'s time (frames in increasing order).
     void moveTo(int frame) {
         const Clock::time_point start = Clock::now();
-        mClock.setTime(mAnimation.time(frame));
-        mQueue.process();
+        mTime.setTime(mAnimation.time(frame));
         mSeconds += secondsSince(start);
     }
 
@@ -263,8 +252,7 @@ public:
 
 private:
     const Animation& mAnimation;
-    sg::SimulatedClock mClock;
-    sg::SensorQueue mQueue;
+    sg::SceneTime mTime;
     double mSeconds = 0.0;
 };
 
@@ -380,7 +368,7 @@ private:
 // the GL render, so the two images compare pixel by pixel.
 void runRayCast(const RenderArguments& arguments, const Animation& animation, sg::Node& root,
                 glm::ivec2 size, const glm::vec4& background, const SetupTimes& setup,
-                const ImageAnnotations& annotations) {
+                const annotation::ImageAnnotations& annotations) {
     sg::RayCastAction action(size.x, size.y);
     action.setBackground(background);
     action.setStepSize(arguments.rayCastStep);
@@ -455,13 +443,19 @@ RenderOptions checkRenderOptions(const RenderArguments& arguments) {
 void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const glm::ivec2 size = options.size;
     const Animation& animation = options.animation;
-    const image::ImageFormat format = options.format;
-    const glm::vec4 background = options.background;
     setMemoryLimit(options.memoryLimit);
     const ThreadLimit threadLimit(arguments.threads);
-    const render::BackendChoice backend = arguments.rayCast
-                                              ? render::BackendChoice{}
-                                              : render::BackendChoice::resolve(options.request);
+    std::optional<render::SceneRenderer> renderer;
+    if (!arguments.rayCast) {
+        render::SceneRenderOptions renderOptions;
+        renderOptions.width = size.x;
+        renderOptions.height = size.y;
+        renderOptions.background = options.background;
+        renderOptions.backend = options.request;
+        renderOptions.threads = arguments.threads;
+        renderOptions.advice = kRenderAdvice;
+        renderer.emplace(renderOptions);
+    }
     SetupTimes setup;
     Clock::time_point start = Clock::now();
     const sg::Node::Ptr scene = loadScene(arguments.scene);
@@ -479,65 +473,31 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 
-    const ImageAnnotations annotations(arguments.annotations, *root);
+    const annotation::ImageAnnotations annotations = imageAnnotations(arguments.annotations, *root);
     if (arguments.rayCast) {
-        runRayCast(arguments, animation, *root, size, background, setup, annotations);
+        runRayCast(arguments, animation, *root, size, options.background, setup, annotations);
         return;
     }
-    const bool withDepth = format == image::ImageFormat::Exr;
+    const bool withDepth = options.format == image::ImageFormat::Exr;
     FrameClock clock(animation, *root);
     sg::RenderStatistics total;
     double write = 0.0;
-    const auto writeFrame = [&](const image::Image& image, int frame) {
+    renderer->setWorkProgress(WorkProgressPrinter());
+    for (int frame = 0; frame < animation.frames; ++frame) {
+        clock.moveTo(frame);
+        const image::Image image = renderer->render(*root, withDepth);
+        total += renderer->statistics();
         const Clock::time_point writeStart = Clock::now();
         annotations.write(image, animation.output.name(frame));
         write += secondsSince(writeStart);
         clock.reportWritten(frame);
-    };
-    std::optional<render::cpu::CpuRenderer> cpu;
-    const std::string stage = "rendering a " + arguments.size + " image";
-    const std::uint64_t imageBytes = std::uint64_t(size.x) * std::uint64_t(size.y) *
-                                     sizeof(glm::vec4);
-    // Asked before the first frame, as every stage asks for its largest allocation: the image
-    // (the CPU's colour planes are as large; GL draws an image larger than its device's
-    // framebuffers in tiles into it).
-    checkMemory(stage, imageBytes, kRenderAdvice);
-#ifdef TEXSPLAT_WITH_GL
-    std::optional<render::GlRenderer> gl;
-    if (backend.backend == render::Backend::Gl) {
-        gl.emplace();
-    }
-#endif
-    if (backend.backend == render::Backend::Cpu) {
-        cpu.emplace(arguments.threads);
-    }
-    render::FrameAction action(size.x, size.y, background);
-    action.setWorkProgress(WorkProgressPrinter());
-    for (int frame = 0; frame < animation.frames; ++frame) {
-        clock.moveTo(frame);
-        const image::Image image = withMemoryStage(stage, imageBytes, kRenderAdvice, [&] {
-            const render::Frame& collected = action.collect(*root);
-#ifdef TEXSPLAT_WITH_GL
-            if (gl) {
-                return gl->draw(collected, action.statistics(), withDepth);
-            }
-#endif
-            return cpu->draw(collected, action.statistics(), withDepth);
-        });
-        total += action.statistics();
-        writeFrame(image, frame);
     }
     if (arguments.timeReport) {
-        BackendReport report{cpu ? cpu->description() : "", backend.reason,
-                             backend.contextSeconds};
-#ifdef TEXSPLAT_WITH_GL
-        if (!cpu) {
-            const gl::ContextInfo& info = backend.context->info();
-            report.name = "GL (" + info.platform + ": " + info.summary() + ")";
-        }
-#endif
+        const render::BackendChoice& backend = renderer->backend();
+        const BackendReport report{renderer->description(), backend.reason,
+                                   backend.contextSeconds};
         printTimes(total, setup, report, write, clock, animation,
-                   static_cast<std::size_t>(imageBytes));
+                   static_cast<std::size_t>(renderer->imageBytes()));
     }
 }
 

@@ -3,10 +3,7 @@
 #include "nodes/Camera.h"
 #include "nodes/DefaultScene.h"
 #include "nodes/NodeTypes.h"
-#include "nodes/OrthographicCamera.h"
-#include "nodes/PerspectiveCamera.h"
 #include "nodes/ScalarSplat.h"
-#include "nodes/render/CameraView.h"
 #include "nodes/render/SceneFraming.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/NodeRegistry.h"
@@ -15,9 +12,6 @@
 #include "scenegraph/io/SceneReader.h"
 
 #include <CLI/CLI.hpp>
-
-#include <glm/gtc/quaternion.hpp>
-#include <glm/gtx/quaternion.hpp>
 
 #include <algorithm>
 #include <charconv>
@@ -60,16 +54,10 @@ float parseNumber(const std::string& text, const char* option, const char* expec
     return value;
 }
 
-// What --azimuth, --elevation and --zoom ask for.
-struct ViewChange {
-    float azimuth = 0.0f;   // degrees
-    float elevation = 0.0f; // degrees
-    float zoom = 1.0f;
-};
-
-ViewChange parseViewChange(const Framing& framing) {
+// What --direction, --azimuth, --elevation and --zoom ask for.
+render::ViewChange parseViewChange(const Framing& framing) {
     const auto any = [](float) { return true; };
-    ViewChange change;
+    render::ViewChange change;
     if (!framing.azimuth.empty()) {
         change.azimuth = parseNumber(framing.azimuth, "--azimuth", "degrees", any);
     }
@@ -81,36 +69,9 @@ ViewChange parseViewChange(const Framing& framing) {
                                   [](float value) { return value > 0.0f; });
     }
     if (!framing.direction.empty()) {
-        parseDirection(framing.direction);
+        change.direction = parseDirection(framing.direction);
     }
     return change;
-}
-
-// --direction, --azimuth, --elevation and --zoom on `camera`, about its focal point.
-void adjustCamera(nodes::Camera& camera, const Framing& framing, bool turnToDirection) {
-    const ViewChange change = parseViewChange(framing);
-    const float azimuth = change.azimuth;
-    const float elevation = change.elevation;
-    const float zoom = change.zoom;
-    const float distance = camera.focalDistance.value();
-    glm::quat orientation = camera.orientation.value().quaternion();
-    const glm::vec3 focus =
-        camera.position.value() + orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance;
-    if (turnToDirection) {
-        orientation = render::rotationLookingAlong(parseDirection(framing.direction)).quaternion();
-    }
-    orientation = glm::angleAxis(glm::radians(azimuth), orientation * glm::vec3(0, 1, 0)) *
-                  orientation;
-    orientation = glm::angleAxis(glm::radians(elevation), orientation * glm::vec3(1, 0, 0)) *
-                  orientation;
-    camera.orientation.setValue(sg::Rotation(glm::axis(orientation), glm::angle(orientation)));
-    camera.position.setValue(focus - orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance);
-    if (auto* perspective = dynamic_cast<nodes::PerspectiveCamera*>(&camera)) {
-        const float half = 0.5f * perspective->heightAngle.value();
-        perspective->heightAngle.setValue(2.0f * std::atan(std::tan(half) / zoom));
-    } else if (auto* orthographic = dynamic_cast<nodes::OrthographicCamera*>(&camera)) {
-        orthographic->height.setValue(orthographic->height.value() / zoom);
-    }
 }
 
 } // namespace
@@ -275,24 +236,20 @@ void addViewOptions(CLI::App& command, Framing& framing) {
 
 sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect,
                          const sg::WorkProgress& progress) {
+    const render::ViewChange change = parseViewChange(framing);
     if (nodes::Camera* camera = render::findCamera(*scene)) {
         if (!framing.camera.empty()) {
             throw DataError("--camera: the scene has its own camera (" + camera->describe() +
                             "); --camera chooses the one that frames a scene without one");
         }
-        adjustCamera(*camera, framing, !framing.direction.empty());
-        return scene;
     }
     render::Framing frame;
     frame.camera = parseFramingCamera(framing.camera);
-    frame.direction = !framing.direction.empty() ? parseDirection(framing.direction)
-                      : framing.sceneName.empty() ? kDefaultSceneDirection
-                                                  : glm::vec3(0.0f, 0.0f, -1.0f);
+    frame.direction = framing.sceneName.empty() ? kDefaultSceneDirection
+                                                : glm::vec3(0.0f, 0.0f, -1.0f);
     frame.name = framing.sceneName.empty() ? "default scene" : framing.sceneName;
     frame.progress = progress;
-    sg::Node::Ptr root = render::framedScene(scene, aspect, frame);
-    adjustCamera(*render::findCamera(*root), framing, false);
-    return root;
+    return render::viewedScene(scene, aspect, frame, change);
 }
 
 } // namespace texsplat::apps

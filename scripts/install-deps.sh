@@ -12,6 +12,9 @@ packages=(
     libgtest-dev libbenchmark-dev libcoin-dev
     clang libclang-rt-14-dev xvfb xauth xdotool locales
     python3-numpy
+    # The Python module (docs/python.md): a venv, the headers its extension compiles against,
+    # pytest for its tests, xarray and tqdm that it works with.
+    python3-venv python3-dev python3-pytest python3-xarray python3-tqdm
     libnetcdf-dev zlib1g-dev
     # ncgen and unu write the NetCDF and NRRD files of the readers' tests; pyopenvdb the .vdb of
     # docs/getting-started.md, whose commands a test runs.

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds and runs the whole test suite (the README's second command; CI runs it too).
-# Stages: ci (optimized, -Werror, asserts on), asan (ASan + UBSan over the same tests), nogl
+# Stages: ci (optimized, -Werror, asserts on), python (the module built with pip in a venv, bound to
+# the ci build's libraries, and its pytest suite), asan (ASan + UBSan over the same tests), nogl
 # (the command line built without GL, checked on the CPU backend), fuzz (clang libFuzzer
 # targets, a bounded run each). Each stage prints its own timing.
 set -euo pipefail
@@ -12,6 +13,9 @@ stage "build and test: ci preset"
 cmake --preset ci
 cmake --build --preset ci -j "$jobs"
 ctest --preset ci -j "$jobs"
+
+stage "python: pip install . in a venv (bound to the ci build's libraries), pytest"
+bash scripts/python-module.sh build/ci
 
 stage "build and test: asan preset (AddressSanitizer + UndefinedBehaviorSanitizer)"
 cmake --preset asan

@@ -5,6 +5,8 @@
 #include "scenegraph/Error.h"
 #include "scenegraph/FileExtension.h"
 
+#include <sstream>
+
 #ifdef TEXSPLAT_WITH_EXR
 #include "nodes/image/detail/ExrCodec.h"
 #endif
@@ -42,6 +44,12 @@ void writeImage(const Image& image, const std::string& path) {
             detail::writeExr(image, stream, path);
 #endif
     });
+}
+
+std::string pngBytes(const Image& image) {
+    std::ostringstream stream;
+    detail::writePng(image, stream, "<memory>");
+    return stream.str();
 }
 
 Image readImage(const std::string& path) {

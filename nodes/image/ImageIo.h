@@ -35,6 +35,10 @@ ImageFormat supportedImageFormatOf(const std::string& path);
 /// disk, a build without OpenEXR).
 void writeImage(const Image& image, const std::string& path);
 
+/// @brief The bytes of the PNG file writeImage() writes for `image` (8-bit RGBA, straight alpha,
+/// sRGB-encoded), for a program that shows it without a file (a notebook).
+std::string pngBytes(const Image& image);
+
 /// @brief The most pixels readImage() decodes: 8192 × 8192. Decoding takes about 24 bytes a
 /// pixel (the file's samples and the float image), 1.5 GiB here, so `compare` of two such images
 /// stays near 3 GiB; a file whose header declares more (a 1 MB PNG may declare 16000 × 16000)

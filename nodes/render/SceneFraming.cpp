@@ -10,10 +10,65 @@
 #include "scenegraph/actions/SearchAction.h"
 #include "scenegraph/fields/ValueFormat.h"
 
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtx/quaternion.hpp>
+
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace texsplat::render {
+namespace {
+
+void checkFinite(float value, const char* name, const char* expected) {
+    if (!std::isfinite(value)) {
+        throw DataError(std::string(name) + ": expected " + expected + ", got " +
+                        sg::formatFloat(value));
+    }
+}
+
+void checkViewChange(const ViewChange& change) {
+    checkFinite(change.azimuth, "azimuth", "degrees");
+    checkFinite(change.elevation, "elevation", "degrees");
+    if (!(change.zoom > 0.0f) || !std::isfinite(change.zoom)) {
+        throw DataError("zoom: expected a magnification > 0, got " + sg::formatFloat(change.zoom));
+    }
+    if (change.direction) {
+        const glm::vec3& direction = *change.direction;
+        if (direction == glm::vec3(0.0f) || !std::isfinite(direction.x) ||
+            !std::isfinite(direction.y) || !std::isfinite(direction.z)) {
+            throw DataError("direction: expected three finite numbers x,y,z not all zero, got " +
+                            sg::formatFloat(direction.x) + "," + sg::formatFloat(direction.y) +
+                            "," + sg::formatFloat(direction.z));
+        }
+    }
+}
+
+} // namespace
+
+void changeView(nodes::Camera& camera, const ViewChange& change) {
+    checkViewChange(change);
+    const float distance = camera.focalDistance.value();
+    glm::quat orientation = camera.orientation.value().quaternion();
+    const glm::vec3 focus =
+        camera.position.value() + orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance;
+    if (change.direction) {
+        orientation = rotationLookingAlong(*change.direction).quaternion();
+    }
+    orientation = glm::angleAxis(glm::radians(change.azimuth), orientation * glm::vec3(0, 1, 0)) *
+                  orientation;
+    orientation =
+        glm::angleAxis(glm::radians(change.elevation), orientation * glm::vec3(1, 0, 0)) *
+        orientation;
+    camera.orientation.setValue(sg::Rotation(glm::axis(orientation), glm::angle(orientation)));
+    camera.position.setValue(focus - orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance);
+    if (auto* perspective = dynamic_cast<nodes::PerspectiveCamera*>(&camera)) {
+        const float half = 0.5f * perspective->heightAngle.value();
+        perspective->heightAngle.setValue(2.0f * std::atan(std::tan(half) / change.zoom));
+    } else if (auto* orthographic = dynamic_cast<nodes::OrthographicCamera*>(&camera)) {
+        orthographic->height.setValue(orthographic->height.value() / change.zoom);
+    }
+}
 
 nodes::Camera* findCamera(sg::Node& scene) {
     sg::SearchAction search;
@@ -62,6 +117,23 @@ sg::Node::Ptr framedScene(const sg::Node::Ptr& scene, float aspect, const Framin
     sg::Separator::Ptr root = sg::Separator::create();
     root->addChild(camera);
     root->addChild(scene);
+    return root;
+}
+
+sg::Node::Ptr viewedScene(const sg::Node::Ptr& scene, float aspect, Framing framing,
+                          const ViewChange& change) {
+    checkViewChange(change);
+    if (nodes::Camera* camera = findCamera(*scene)) {
+        changeView(*camera, change);
+        return scene;
+    }
+    if (change.direction) {
+        framing.direction = *change.direction;
+    }
+    sg::Node::Ptr root = framedScene(scene, aspect, framing);
+    ViewChange orbit = change;
+    orbit.direction.reset();
+    changeView(*findCamera(*root), orbit);
     return root;
 }
 

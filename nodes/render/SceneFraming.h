@@ -6,6 +6,7 @@
 
 #include <glm/vec3.hpp>
 
+#include <optional>
 #include <string>
 
 namespace texsplat::render {
@@ -26,6 +27,23 @@ struct Framing {
     sg::WorkProgress progress;
 };
 
+/// @brief How to turn and magnify the camera a scene is seen through, about the camera's focal
+/// point: the --direction, --azimuth, --elevation and --zoom of `texsplat render` and `view`, and
+/// the Python module's `azimuth`, `elevation` and `zoom`.
+struct ViewChange {
+    std::optional<glm::vec3> direction; ///< look along it (finite, not zero); none: as it looks
+    float azimuth = 0.0f;   ///< degrees about the camera's up axis (ParaView's and the viewer's orbit)
+    float elevation = 0.0f; ///< degrees about its right axis, after the azimuth
+    float zoom = 1.0f;      ///< magnification > 0 (2: things look twice as large)
+};
+
+/// @brief Turns and magnifies `camera` as `change` says: `direction` turns it to look along that
+/// direction at its focal point, `azimuth` and `elevation` orbit it about the focal point, `zoom`
+/// narrows its opening angle (or its orthographic height).
+/// @throws DataError naming the value ("zoom: expected a magnification > 0, got 0") for a zoom
+/// that is not finite and > 0, angles that are not finite, or a zero or non-finite direction.
+void changeView(nodes::Camera& camera, const ViewChange& change);
+
 /// @brief The first camera of `scene` in traversal order, or nullptr.
 nodes::Camera* findCamera(sg::Node& scene);
 
@@ -37,5 +55,13 @@ nodes::Camera* findCamera(sg::Node& scene);
 /// @throws DataError for a zero direction or a scene with neither geometry nor camera;
 /// sg::Cancelled when `framing.progress` cancelled a load.
 sg::Node::Ptr framedScene(const sg::Node::Ptr& scene, float aspect, const Framing& framing = {});
+
+/// @brief The scene as drawn with a changed view, as `texsplat render` draws a scene file: when
+/// `scene` has a camera, that camera changed by changeView() (a `direction` turns it), and
+/// `scene` itself; else framedScene() looking along `change.direction` (when given, else
+/// `framing.direction`), its new camera then orbited and magnified by changeView().
+/// @throws what framedScene() and changeView() throw.
+sg::Node::Ptr viewedScene(const sg::Node::Ptr& scene, float aspect, Framing framing,
+                          const ViewChange& change);
 
 } // namespace texsplat::render

@@ -142,8 +142,16 @@ private:
     std::size_t mPosition = 0;
 };
 
-// `descr` -> value type and byte order.
-void parseDescr(const std::string& descr, const std::string& source, RawHeader& layout) {
+std::uint32_t littleEndian(const unsigned char* bytes, int count) {
+    std::uint32_t value = 0;
+    for (int i = count - 1; i >= 0; --i)
+        value = (value << 8) | bytes[i];
+    return value;
+}
+
+} // namespace
+
+void parseNpyDescr(const std::string& descr, const std::string& source, RawHeader& layout) {
     const auto unsupported = [&] {
         return DataError(source + ": data type '" + printable(descr) +
                          "' is not supported; expected <f4, <f8, |u1, |i1, <u2, <i2, <u4 or <i4 "
@@ -181,16 +189,7 @@ void parseDescr(const std::string& descr, const std::string& source, RawHeader& 
     throw unsupported();
 }
 
-std::uint32_t littleEndian(const unsigned char* bytes, int count) {
-    std::uint32_t value = 0;
-    for (int i = count - 1; i >= 0; --i)
-        value = (value << 8) | bytes[i];
-    return value;
-}
-
-} // namespace
-
-std::string NpyHeader::shapeText() const {
+std::string npyShapeText(const std::vector<std::int64_t>& shape) {
     std::string text = "(";
     for (std::size_t i = 0; i < shape.size(); ++i)
         text += (i == 0 ? "" : ", ") + std::to_string(shape[i]);
@@ -281,7 +280,7 @@ NpyHeader NpyHeader::parse(std::istream& in, const std::string& source) {
         if (!present)
             throw ParseError(source + ": .npy header has no '" + key + "'");
 
-    parseDescr(header.descr, source, header.layout);
+    parseNpyDescr(header.descr, source, header.layout);
     const std::size_t axes = header.shape.size();
     const bool vectors = axes == 4 && header.shape[3] == 3;
     if (axes == 0 || axes > 4 || (axes == 4 && !vectors))

@@ -9,6 +9,16 @@
 
 namespace texsplat::volume {
 
+/// @brief The value type and byte order that NumPy's `descr` (an array's `dtype.str`: "<f4",
+/// "|u1", ">i2") names, as `.npy` files and in-memory arrays (ArrayGrid.h) share them: sets
+/// `layout.type` and `layout.endian`. `source` names the array in messages.
+/// @throws DataError "<source>: data type '<c8' is not supported; expected <f4, <f8, |u1, |i1,
+/// <u2, <i2, <u4 or <i4 (or > for big endian)".
+void parseNpyDescr(const std::string& descr, const std::string& source, RawHeader& layout);
+
+/// @brief A shape as Python writes it: "(64, 64, 32)", "(5,)".
+std::string npyShapeText(const std::vector<std::int64_t>& shape);
+
 /// @brief The header of a NumPy `.npy` file (format versions 1.0, 2.0 and 3.0, as numpy.save()
 /// writes them; <https://numpy.org/doc/stable/reference/generated/numpy.lib.format.html>).
 ///
@@ -43,7 +53,7 @@ struct NpyHeader {
     static NpyHeader parse(std::istream& in, const std::string& source);
 
     /// @brief The shape as Python writes it: "(64, 64, 32)".
-    std::string shapeText() const;
+    std::string shapeText() const { return npyShapeText(shape); }
 };
 
 } // namespace texsplat::volume

@@ -23,33 +23,6 @@ namespace {
 constexpr bool kHostIsLittleEndian = __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__;
 constexpr std::int64_t kChunkBytes = std::int64_t{1} << 22;
 
-template <typename Stored>
-void decode(const unsigned char* bytes, std::size_t count, bool swapBytes, float* out) {
-    unsigned char word[sizeof(Stored)];
-    for (std::size_t i = 0; i < count; ++i, bytes += sizeof(Stored)) {
-        std::memcpy(word, bytes, sizeof(Stored));
-        if (swapBytes)
-            std::reverse(word, word + sizeof(Stored));
-        Stored value;
-        std::memcpy(&value, word, sizeof(Stored));
-        out[i] = static_cast<float>(value);
-    }
-}
-
-void decode(RawValueType type, const unsigned char* bytes, std::size_t count, bool swapBytes,
-            float* out) {
-    switch (type) {
-    case RawValueType::Float32: decode<float>(bytes, count, swapBytes, out); break;
-    case RawValueType::Float64: decode<double>(bytes, count, swapBytes, out); break;
-    case RawValueType::UInt8: decode<std::uint8_t>(bytes, count, swapBytes, out); break;
-    case RawValueType::UInt16: decode<std::uint16_t>(bytes, count, swapBytes, out); break;
-    case RawValueType::Int8: decode<std::int8_t>(bytes, count, swapBytes, out); break;
-    case RawValueType::Int16: decode<std::int16_t>(bytes, count, swapBytes, out); break;
-    case RawValueType::UInt32: decode<std::uint32_t>(bytes, count, swapBytes, out); break;
-    case RawValueType::Int32: decode<std::int32_t>(bytes, count, swapBytes, out); break;
-    }
-}
-
 std::string sizeDescription(const RawHeader& header, const std::string& subject) {
     return subject + " " + std::to_string(header.dims.x) + " x " +
            std::to_string(header.dims.y) + " x " + std::to_string(header.dims.z) + " voxels x " +
@@ -82,7 +55,7 @@ void readValues(std::istream& in, const std::string& path, const RawHeader& head
                      static_cast<std::streamsize>(bytes.size())))
             throw IoError(path + ": read failed after " + std::to_string(done * valueBytes) +
                           " bytes of data");
-        decode(header.type, bytes.data(), values.size(), swapBytes, values.data());
+        detail::decodeValues(header.type, bytes.data(), values.size(), swapBytes, values.data());
         store(done, values.data(), count);
         done += count;
         reportProgress(progress, path, double(done) / double(totalValues), message);
@@ -185,6 +158,36 @@ AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout
 }
 
 namespace detail {
+namespace {
+
+template <typename Stored>
+void decode(const unsigned char* bytes, std::size_t count, bool swapBytes, float* out) {
+    unsigned char word[sizeof(Stored)];
+    for (std::size_t i = 0; i < count; ++i, bytes += sizeof(Stored)) {
+        std::memcpy(word, bytes, sizeof(Stored));
+        if (swapBytes)
+            std::reverse(word, word + sizeof(Stored));
+        Stored value;
+        std::memcpy(&value, word, sizeof(Stored));
+        out[i] = static_cast<float>(value);
+    }
+}
+
+} // namespace
+
+void decodeValues(RawValueType type, const unsigned char* bytes, std::size_t count,
+                  bool swapBytes, float* out) {
+    switch (type) {
+    case RawValueType::Float32: decode<float>(bytes, count, swapBytes, out); break;
+    case RawValueType::Float64: decode<double>(bytes, count, swapBytes, out); break;
+    case RawValueType::UInt8: decode<std::uint8_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::UInt16: decode<std::uint16_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::Int8: decode<std::int8_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::Int16: decode<std::int16_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::UInt32: decode<std::uint32_t>(bytes, count, swapBytes, out); break;
+    case RawValueType::Int32: decode<std::int32_t>(bytes, count, swapBytes, out); break;
+    }
+}
 
 AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& layout,
                     RawOrder order, const ProgressCallback& progress, const FileAxes& axes) {

@@ -3,6 +3,7 @@
 #include "scenegraph/EnumNames.h"
 #include "scenegraph/fields/Field.h"
 
+#include <string>
 #include <string_view>
 
 namespace texsplat::sg {
@@ -26,6 +27,14 @@ public:
     /// @brief Sets the value (any enum type or int). Throws DataError when the names are known
     /// and `value` is not among them.
     template <class E> void setValue(E value) { setInt(static_cast<int>(value)); }
+
+    /// @brief Sets the value named `name` ("BLEND"), as a scene file names it.
+    /// @throws DataError "unknown value 'X' for SFEnum Node.field (expected one of A, B)" (the
+    /// reader's message) for a name that is not among the value names.
+    void setValueName(std::string_view name);
+
+    /// @brief The name of the value ("BLEND"), or its number as text when it has no name.
+    std::string valueName() const;
 
     /// @brief The value names; nullptr until set by addField().
     const EnumNames* enumNames() const { return mNames; }

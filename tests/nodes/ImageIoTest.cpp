@@ -11,6 +11,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <cstdint>
 #include <limits>
 #include <string>
@@ -143,6 +144,16 @@ TEST_F(ImageIoTest, pngRoundTripIsWithinEightBitQuantization) {
         for (int c = 0; c < 4; ++c)
             EXPECT_NEAR(read.pixel(x, 3)[c], clamped[c], 0.0045) << x << "," << c;
     }
+}
+
+TEST_F(ImageIoTest, pngBytesAreTheFileWriteImageWrites) {
+    const Image image = highDynamicRangeImage();
+    writeImage(image, path("image.png"));
+    std::ifstream file(path("image.png"), std::ios::binary);
+    const std::string written((std::istreambuf_iterator<char>(file)),
+                              std::istreambuf_iterator<char>());
+    EXPECT_EQ(texsplat::image::pngBytes(image), written);
+    EXPECT_EQ(written.substr(1, 3), "PNG");
 }
 
 TEST_F(ImageIoTest, pngStoresNonFinitePixelsAsTransparentBlack) {

@@ -35,6 +35,22 @@ TEST(SFEnum, defaultNamesAndTypedAccess) {
     EXPECT_FALSE(splat->textureOperator.isDefault());
 }
 
+TEST(SFEnum, setsAndAnswersValueNamesAsTheReaderDoes) {
+    Splat::Ptr splat = Splat::create();
+    splat->textureOperator.setValueName("MODULATE");
+    EXPECT_EQ(splat->textureOperator.as<Operator>(), Operator::Modulate);
+    EXPECT_EQ(splat->textureOperator.valueName(), "MODULATE");
+    EXPECT_FALSE(splat->textureOperator.isDefault());
+    try {
+        splat->textureOperator.setValueName("ADD");
+        FAIL() << "no error for an unknown name";
+    } catch (const DataError& error) {
+        EXPECT_STREQ(error.what(), "unknown value 'ADD' for SFEnum Splat.operator (expected one "
+                                   "of MODULATE, BLEND)");
+    }
+    EXPECT_EQ(splat->textureOperator.valueName(), "MODULATE");
+}
+
 TEST(SFEnum, readsNames) {
     Splat::Ptr splat = Splat::create();
     test::FakeValueReader reader("MODULATE");

@@ -4,6 +4,7 @@
 #include "nodes/volume/Progress.h"
 #include "nodes/volume/RawHeader.h"
 
+#include <cstddef>
 #include <istream>
 #include <string>
 
@@ -26,6 +27,12 @@ struct FileAxes {
     /// @brief Whether the file's order is the grid's.
     bool isIdentity() const { return gridAxis == glm::ivec3(0, 1, 2) && !glm::any(reversed); }
 };
+
+/// @brief Decodes `count` values of `type` from `bytes` (byte-swapped first when `swapBytes`) into
+/// floats, as they are (uint8 255 becomes 255.0): the one conversion of stored values, for files
+/// and in-memory arrays alike.
+void decodeValues(RawValueType type, const unsigned char* bytes, std::size_t count,
+                  bool swapBytes, float* out);
 
 /// @brief Reads the values of the grid `layout` describes (dims, type, components, byte order,
 /// spacing, origin) from `in`, which stands on the first value, into a dense grid; the one decoder

@@ -1,0 +1,30 @@
+"""texsplat.Image: the pixels as an array, files as the command line writes them, notebooks."""
+
+import numpy as np
+import pytest
+
+import texsplat
+
+
+def test_the_array_is_the_premultiplied_rgba_an_exr_holds(tmp_path, volume):
+    image = texsplat.render(volume, size=(40, 30), background="transparent")
+    pixels = np.asarray(image)
+    assert pixels.shape == (30, 40, 4) and pixels.dtype == np.float32
+    assert np.all(pixels[..., :3] <= pixels[..., 3:] + 1e-6)  # premultiplied: colour <= alpha
+    image.save(str(tmp_path / "image.exr"))
+    assert np.array_equal(np.asarray(texsplat.read_image(str(tmp_path / "image.exr"))), pixels)
+    assert np.asarray(image, dtype=np.float64).dtype == np.float64
+
+
+def test_png_files_and_notebooks(tmp_path, volume):
+    image = texsplat.render(volume, size=(40, 30))
+    image.save(str(tmp_path / "image.png"))
+    png = (tmp_path / "image.png").read_bytes()
+    assert png.startswith(b"\x89PNG") and image._repr_png_() == png
+    image.save(str(tmp_path / "legend.png"), colorbar=True, colorbar_position="bottom")
+    assert (tmp_path / "legend.png").read_bytes() != png
+    with pytest.raises(OSError, match=r"image.tif: unknown image extension '.tif'"):
+        image.save(str(tmp_path / "image.tif"))
+    with pytest.raises(ValueError, match="colorbar_position: "):
+        image.save(str(tmp_path / "x.png"), colorbar=True, colorbar_position="middle")
+    assert repr(image) == "<texsplat.Image 40x30>"
