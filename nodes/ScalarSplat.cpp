@@ -167,6 +167,11 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
               [&] { return markEmission(classified, result, width, height); });
     if (marks) {
         result.marks.marksPerVoxel = marks->marksPerVoxel;
+        // The corners in either order: a flipped axis has a negative spacing.
+        const glm::vec3 first(classified->toWorld(glm::dvec3(-0.5)));
+        const glm::vec3 last(classified->toWorld(glm::dvec3(classified->dims()) - 0.5));
+        result.marks.dataLow = glm::min(first, last);
+        result.marks.dataHigh = glm::max(first, last);
     }
     const octree::MarkEmission* emission = marks ? &*marks : nullptr;
     result.footprint = timed(statistics, sg::RenderPhase::Classify, [this] { return footprint(); });

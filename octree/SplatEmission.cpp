@@ -28,20 +28,26 @@ double MarkEmission::expectedMarks(std::uint64_t voxels) const {
 
 namespace {
 
-// The random stream of the marks of the splat named by `key` (a voxel's index or a node's key).
-sg::Random markRandom(const MarkEmission& emission, std::uint64_t key) {
+// The hash that draws how many marks the splat named by `key` (a voxel's index or a node's key)
+// carries, and seeds the stream that places them.
+std::uint64_t markHash(const MarkEmission& emission, std::uint64_t key) {
     constexpr std::uint64_t kMarkStream = 0x6d61726b73ull; // apart from other uses of the key
-    return sg::Random(
-        sg::Random::mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32) ^ kMarkStream));
+    return sg::Random::mix(key ^ (static_cast<std::uint64_t>(emission.seed) << 32) ^ kMarkStream);
 }
 
-// How many marks a splat standing for `voxels` non-empty voxels carries: the expectation's whole
-// part, and one more with the probability of its fraction (the stream's first draw).
-int markCount(const MarkEmission& emission, std::uint64_t voxels, sg::Random& random) {
-    const double expected = emission.expectedMarks(voxels);
-    const double whole = std::floor(expected);
-    return static_cast<int>(whole) + (random.uniform() < expected - whole ? 1 : 0);
-}
+// How many marks a splat carries on average, split for drawing: the whole part always, and one
+// more when the splat's hash falls below the fraction's share of 2^64 (one hash a splat: most
+// voxels of a deep volume draw no mark, and this is all they cost).
+struct MarkShare {
+    int whole;
+    std::uint64_t threshold;
+
+    explicit MarkShare(double expected)
+        : whole(static_cast<int>(std::floor(expected))),
+          threshold(static_cast<std::uint64_t>(std::ldexp(expected - std::floor(expected), 64))) {}
+
+    int count(std::uint64_t hash) const { return whole + (hash < threshold ? 1 : 0); }
+};
 
 // A mark at a random point of `voxel`'s cell carrying its vector and medium.
 SplatMark markInCell(const ClassifiedGrid& grid, glm::u64vec3 voxel, sg::Random& random) {
@@ -101,17 +107,29 @@ glm::u64vec3 randomVoxel(const Octree& octree, NodeRef node, sg::Random& random)
 
 } // namespace
 
-int voxelMarks(const MarkEmission& emission, const ClassifiedGrid& grid, glm::u64vec3 voxel,
-               SplatMark* out) {
-    if (!isDirection(grid.vector(voxel))) {
+namespace {
+
+// voxelMarks() with the voxel's share of marks worked out.
+int marksOfVoxel(const MarkEmission& emission, const MarkShare& share, const ClassifiedGrid& grid,
+                 glm::u64vec3 voxel, SplatMark* out) {
+    // The count first: most voxels of a deep volume draw none, and need not read their vector.
+    const std::uint64_t hash = markHash(emission, grid.index(voxel));
+    const int count = share.count(hash);
+    if (count == 0 || !isDirection(grid.vector(voxel))) {
         return 0;
     }
-    sg::Random random = markRandom(emission, grid.index(voxel));
-    const int count = markCount(emission, 1, random);
+    sg::Random random(hash);
     for (int i = 0; i < count; ++i) {
         out[i] = markInCell(grid, voxel, random);
     }
     return count;
+}
+
+} // namespace
+
+int voxelMarks(const MarkEmission& emission, const ClassifiedGrid& grid, glm::u64vec3 voxel,
+               SplatMark* out) {
+    return marksOfVoxel(emission, MarkShare(emission.expectedMarks(1)), grid, voxel, out);
 }
 
 int nodeMarks(const MarkEmission& emission, const Octree& octree, const NodeRef& node,
@@ -120,9 +138,10 @@ int nodeMarks(const MarkEmission& emission, const Octree& octree, const NodeRef&
     if (node.level == 0) {
         return voxelMarks(emission, grid, node.coord, out);
     }
-    sg::Random random = markRandom(emission, nodeKey(node));
+    const std::uint64_t hash = markHash(emission, nodeKey(node));
     const std::uint64_t voxels = octree.nodes()[static_cast<std::size_t>(node.index)].nonEmptyCount;
-    const int count = markCount(emission, voxels, random);
+    const int count = MarkShare(emission.expectedMarks(voxels)).count(hash);
+    sg::Random random(hash);
     for (int i = 0; i < count; ++i) {
         out[i] = markInCell(grid, randomVoxel(octree, node, random), random);
     }
@@ -203,7 +222,15 @@ void layOut(std::vector<ListOffsets>& offsets, SplatList& splats, bool withMarks
     splats.resize(offsets.back().splats, withMarks, offsets.back().marks);
 }
 
-// Writes one splat and its marks at `at`, moving `at` on.
+// Ends the mark offsets of a list written by pieces: the last one, one past the last splat.
+void closeMarks(std::uint32_t* begins, const ListOffsets& end) {
+    if (begins != nullptr) {
+        begins[end.splats] = static_cast<std::uint32_t>(end.marks);
+    }
+}
+
+// Writes one splat and its marks at `at` (its own mark offset: closeMarks() writes the last),
+// moving `at` on.
 void write(Splat* out, SplatMark* outMarks, std::uint32_t* begins, ListOffsets& at,
            const Splat& splat, const SplatMark* marks, int markCount) {
     out[at.splats] = splat;
@@ -211,7 +238,6 @@ void write(Splat* out, SplatMark* outMarks, std::uint32_t* begins, ListOffsets& 
         begins[at.splats] = static_cast<std::uint32_t>(at.marks);
         std::copy(marks, marks + markCount, outMarks + at.marks);
         at.marks += static_cast<std::size_t>(markCount);
-        begins[at.splats + 1] = static_cast<std::uint32_t>(at.marks);
     }
     ++at.splats;
 }
@@ -272,6 +298,7 @@ void emitSplats(const Cut& cut, const View& view, SplatList& splats, const MarkE
             write(out, outMarks, begins, at, splat, placed, markCount);
         });
     });
+    closeMarks(begins, offsets.back());
 }
 
 void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats,
@@ -287,13 +314,14 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
         return grid.storedVoxel(stored) != glm::vec4(0.0f) &&
                !(cullsBehindEye && view.depth(grid.toWorld(glm::dvec3(voxel))) <= 0.0);
     };
+    const MarkShare share(marks != nullptr ? marks->expectedMarks(1) : 0.0);
     // Calls add(voxel, stored, marks, markCount) for the drawn voxels of `slice`.
     const auto emit = [&](std::size_t slice, auto&& add) {
         std::array<SplatMark, MarkEmission::kMaxMarksPerSplat> placed;
         order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
             if (isDrawn(voxel, stored)) {
                 add(voxel, stored, placed.data(),
-                    marks != nullptr ? voxelMarks(*marks, grid, voxel, placed.data()) : 0);
+                    marks != nullptr ? marksOfVoxel(*marks, share, grid, voxel, placed.data()) : 0);
             }
         });
     };
@@ -329,6 +357,7 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
             write(out, outMarks, begins, at, splat, placed, markCount);
         });
     });
+    closeMarks(begins, offsets.back());
 }
 
 } // namespace texsplat::octree

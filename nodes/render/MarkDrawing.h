@@ -2,6 +2,8 @@
 
 #include <glm/vec3.hpp>
 
+#include <limits>
+
 namespace texsplat::render {
 
 /// @brief The texture operators of the paper's vector splats (Crawfis & Max 1993, after SGI
@@ -32,6 +34,9 @@ struct MarkDrawing {
     /// @brief The emission's expected marks per voxel (octree::MarkEmission::marksPerVoxel): a
     /// mark's opacity is that of the medium it stands for, spread over the marks.
     double marksPerVoxel = 0.0;
+    /// @brief The box of the grid's cells in the batch's local space: marks are cut to it.
+    glm::vec3 dataLow{-std::numeric_limits<float>::infinity()};
+    glm::vec3 dataHigh{std::numeric_limits<float>::infinity()}; ///< its upper corner
     /// @brief Combined splats: marks are drawn over the scalar splat, in `blendColor` (BLEND)
     /// or black (MODULATE), at `contrast` times their opacity.
     bool isCombined = false;

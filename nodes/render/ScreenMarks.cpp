@@ -88,21 +88,45 @@ ScreenMark screenMark(const MarkFrame& frame, const octree::SplatMark& emitted) 
     // The life cycle: the fraction of the phase first, so that a huge phase keeps its digits.
     const float cycle = emitted.phase + static_cast<float>(std::fmod(double(drawing.phase), 1.0));
     const float u = cycle - std::floor(cycle);
-    const glm::vec3 centre = emitted.position + (u - 0.5f) * length * unit;
+    const glm::vec3 travelled = emitted.position + (u - 0.5f) * length * unit;
+    // The part of the mark inside the grid's box: a mark near the data's edge is cut there (its
+    // head and tail kept, shorter), so that no mark draws beyond the data.
+    float from = -0.5f;
+    float to = 0.5f;
+    for (int axis = 0; axis < 3; ++axis) {
+        const float step = length * unit[axis];
+        const float low = (drawing.dataLow[axis] - travelled[axis]);
+        const float high = (drawing.dataHigh[axis] - travelled[axis]);
+        if (step == 0.0f) {
+            if (low > 0.0f || high < 0.0f) {
+                return mark;
+            }
+            continue;
+        }
+        const float a = low / step;
+        const float b = high / step;
+        from = std::max(from, std::min(a, b));
+        to = std::min(to, std::max(a, b));
+    }
+    if (!(from < to)) {
+        return mark;
+    }
+    const glm::vec3 centre = travelled + 0.5f * (from + to) * length * unit;
+    const float kept = to - from; // of the mark's length
     const glm::vec4 middle = toImage(frame, centre);
-    const glm::vec4 tail = toImage(frame, centre - 0.5f * length * unit);
-    const glm::vec4 head = toImage(frame, centre + 0.5f * length * unit);
+    const glm::vec4 tail = toImage(frame, centre - 0.5f * kept * length * unit);
+    const glm::vec4 head = toImage(frame, centre + 0.5f * kept * length * unit);
     if (!(middle.w > 0.0f && tail.w > 0.0f && head.w > 0.0f) || !(std::abs(middle.z) <= 1.0f)) {
         return mark; // behind the eye, or outside the near and far planes
     }
     // Pixels per voxel at the mark, across the line of sight.
     const float pixels = frame.pixelsPerUnit * frame.voxel / middle.w;
-    const float unforeshortened = 0.5f * drawing.length * pixels;
+    const float unforeshortened = 0.5f * kept * drawing.length * pixels;
     const glm::vec2 along(head.x - tail.x, head.y - tail.y);
     const float projected = 0.5f * glm::length(along);
     const float foreshortening =
         unforeshortened > 0.0f ? std::min(projected / unforeshortened, 1.0f) : 0.0f;
-    const MarkSize size(drawing, pixels, foreshortening);
+    const MarkSize size(drawing, pixels, kept * foreshortening);
     mark.halfLength = size.halfLength;
     mark.halfWidth = size.halfWidth;
     mark.head = size.head;
@@ -120,7 +144,10 @@ ScreenMark screenMark(const MarkFrame& frame, const octree::SplatMark& emitted) 
     const glm::vec3 sight =
         frame.isPerspective ? glm::normalize(centre - frame.eye) : frame.direction;
     const float voxelDepth = 1.0f / glm::length(sight * frame.inverseSpacing);
-    const float area = mark.halfLength * mark.halfWidth * markProfileArea(drawing.type, mark.head);
+    // The whole mark's area: the part cut off at the data's edge keeps its share.
+    const MarkSize whole(drawing, pixels, foreshortening);
+    const float area =
+        whole.halfLength * whole.halfWidth * markProfileArea(drawing.type, whole.head);
     const double opticalDepth = double(emitted.extinction) * voxelDepth * pixels * pixels /
                                 (drawing.marksPerVoxel * area * (1.0 - MarkDrawing::kLifeFade));
     const double alpha = -std::expm1(-opticalDepth * lifeFade(u));

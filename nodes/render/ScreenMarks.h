@@ -91,7 +91,8 @@ float pixelsPerVoxel(const FrameSplats& batch, int width, int height, const glm:
 /// How each mark is placed (docs/vector-splats.md, "How marks are drawn"): at animation phase
 /// p its life cycle is at u = frac(phase_mark + p); its centre has moved (u − ½) mark lengths
 /// along its unit vector from where it was emitted, and it fades in and out over the first and
-/// last MarkDrawing::kLifeFade of the cycle. Its ends, half a mark length either side along the
+/// last MarkDrawing::kLifeFade of the cycle; the part of it outside the grid's box
+/// (MarkDrawing::dataLow, dataHigh) is cut off. Its ends, half a mark length either side along the
 /// vector, project to the image (so a vector towards the eye gives a short mark); a mark is
 /// never narrower than MarkDrawing::kMinHalfWidthPixels nor, in the image plane, shorter than
 /// kMinHalfLengthPixels, and never shorter than wide. Its colour is its voxel's (combined

@@ -13,7 +13,6 @@ class Framebuffer;
 class ObjectName;
 class Program;
 class Texture2D;
-class Texture2DArray;
 class VertexArray;
 struct ContextInfo;
 struct EglContextOptions;

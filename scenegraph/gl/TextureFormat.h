@@ -2,14 +2,14 @@
 
 namespace texsplat::gl {
 
-/// @brief Storage format of a `Texture2D` or `Texture2DArray`; uploads are always floats.
+/// @brief Storage format of a `Texture2D`; uploads are always floats.
 enum class TextureFormat {
     R32F,     ///< One float channel (splat footprints).
     RG32F,    ///< Two float channels.
     RGBA32F,  ///< Four float channels.
     RGBA16F,  ///< Four half-float channels (render targets).
     RGBA8,    ///< Four 8-bit normalized channels; uploaded floats are clamped to [0, 1].
-    RG8,      ///< Two 8-bit normalized channels, as RGBA8 (the vector splat table).
+    RG8,      ///< Two 8-bit normalized channels, as RGBA8.
     Depth24,  ///< 24-bit normalized depth.
     Depth32F, ///< 32-bit float depth.
 };

@@ -427,7 +427,7 @@ TEST_F(RenderCommandTest, vectorSplatsRenderOnTheCpuBackendAsOnGl) {
         }
     }
     EXPECT_GT(images[0].statistics().maximum.r, 0.05) << "marks drawn";
-    // The PNGs' 8 bits, and llvmpipe filtering the RG8 mark table with 8-bit weights.
+    // The PNGs' 8 bits.
     EXPECT_LE(largest, 3.0f / 255.0f);
 }
 

@@ -387,6 +387,36 @@ TEST(VectorSplat, voxelsOutsideTheMaskRangeDrawNothing) {
     }
 }
 
+TEST(VectorSplat, marksAreCutAtTheEdgeOfTheData) {
+    // A field along a diagonal in an 8 x 8 x 2 box seen at 20 pixels a voxel, at phases that
+    // carry marks out of it: nothing is drawn beyond the box's cells but the marks' half-width
+    // (2.5 pixels).
+    const VolumeData::Ptr field = uniformField({8, 8, 2}, glm::vec3(1.0f, 0.6f, 0.0f));
+    for (const Backend backend : kBackends) {
+        VectorSplat::Ptr splat = constantMarks(glm::vec3(1.0f));
+        sg::Separator::Ptr root =
+            sceneOf({topCamera(3.5f, 3.5f, 12.0f), field, constantOpacity(20.0f), splat});
+        for (const float phase : {0.0f, 0.3f, 0.7f}) {
+            splat->phase.setValue(phase);
+            const image::Image image = drawWith(backend, *root, 240, 240).image;
+            test::expectFiniteAndNotEmpty(image, "cut marks");
+            // Pixel (x, y) covers world x from x / 20 − 2.5, y from 9.5 − y / 20.
+            for (int y = 0; y < 240; ++y) {
+                for (int x = 0; x < 240; ++x) {
+                    const float worldX = (x + 0.5f) / 20.0f - 2.5f;
+                    const float worldY = 9.5f - (y + 0.5f) / 20.0f;
+                    const float outside =
+                        std::max({-0.5f - worldX, worldX - 7.5f, -0.5f - worldY, worldY - 7.5f});
+                    if (outside > 3.0f / 20.0f) {
+                        ASSERT_EQ(image.pixel(x, y).a, 0.0f)
+                            << nameOf(backend) << ", phase " << phase << " at " << x << ", " << y;
+                    }
+                }
+            }
+        }
+    }
+}
+
 TEST(VectorSplat, colourByPositionFollowsTheAxis) {
     // Marks of voxels along x coloured by their x through a gray map: the colour of each voxel's
     // column of pixels (over its opacity) grows from black to white.

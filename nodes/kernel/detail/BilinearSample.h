@@ -8,7 +8,7 @@ namespace texsplat::kernel::detail {
 
 /// The lookup GL makes with GL_LINEAR and GL_CLAMP_TO_EDGE in an n × n texture covering the
 /// square [−extent, extent]² (texel centres at −extent + (k + ½)·2·extent/n), and 0 outside the
-/// square: what the footprint textures and the vector splat table answer a CPU backend.
+/// square: what a footprint texture answers a CPU backend.
 /// `texel(i, j)` gives the texel of column i (along x) and row j (along y).
 template <class Real, class Texel>
 auto bilinearSample(Real x, Real y, Real extent, int n, const Texel& texel)
