@@ -16,9 +16,9 @@ packages=(
     # pytest for its tests, xarray and tqdm that it works with.
     python3-venv python3-dev python3-pytest python3-xarray python3-tqdm
     libnetcdf-dev zlib1g-dev
-    # ncgen and unu write the NetCDF and NRRD files of the readers' tests; pyopenvdb the .vdb of
-    # docs/getting-started.md, whose commands a test runs.
-    netcdf-bin teem-apps python3-openvdb
+    # ncgen and unu write the NetCDF and NRRD files of the readers' tests; pyopenvdb and netCDF4
+    # the .vdb and .nc of docs/getting-started.md, whose commands a test runs.
+    netcdf-bin teem-apps python3-openvdb python3-netcdf4
 )
 apt-get update
 apt-get install -y --no-install-recommends "${packages[@]}"
