@@ -31,10 +31,8 @@ void withNpyData(const std::string& path, const RawDataDecoder& use) {
 } // namespace detail
 
 AnyGrid readNpyVolume(const std::string& path, const ProgressCallback& progress) {
-    AnyGrid grid;
-    detail::withNpyData(
-        path, [&](const detail::RawDataView& data) { grid = detail::readRawData(data, progress); });
-    return grid;
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) { detail::withNpyData(path, use); }, progress);
 }
 
 } // namespace texsplat::volume

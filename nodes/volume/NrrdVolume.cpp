@@ -140,11 +140,9 @@ void withNrrdData(const std::string& path, const RawDataDecoder& use, const sg::
 
 AnyGrid readNrrdVolume(const std::string& path, const ProgressCallback& progress,
                        const sg::DataRoots* roots) {
-    AnyGrid grid;
-    detail::withNrrdData(
-        path, [&](const detail::RawDataView& data) { grid = detail::readRawData(data, progress); },
-        roots);
-    return grid;
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) { detail::withNrrdData(path, use, roots); },
+        progress);
 }
 
 } // namespace texsplat::volume

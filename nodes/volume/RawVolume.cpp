@@ -157,26 +157,30 @@ void withHeaderlessRawData(const std::string& path, const RawHeader& layout,
     use({in, path, layout, RawOrder::XFastest, {}});
 }
 
-AnyGrid readRawData(const RawDataView& data, const ProgressCallback& progress) {
-    return readRawData(data.in, data.path, data.layout, data.order, progress, data.axes);
+AnyGrid readRawGrid(const std::function<void(const RawDataDecoder&)>& with,
+                    const ProgressCallback& progress) {
+    AnyGrid grid;
+    with([&](const RawDataView& data) {
+        grid = readRawData(data.in, data.path, data.layout, data.order, progress, data.axes);
+    });
+    return grid;
 }
 
 } // namespace detail
 
 AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress) {
-    AnyGrid grid;
-    detail::withRawVolumeData(
-        path, [&](const detail::RawDataView& data) { grid = detail::readRawData(data, progress); });
-    return grid;
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) { detail::withRawVolumeData(path, use); },
+        progress);
 }
 
 AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout,
                                 std::int64_t headerBytes, const ProgressCallback& progress) {
-    AnyGrid grid;
-    detail::withHeaderlessRawData(path, layout, headerBytes, [&](const detail::RawDataView& data) {
-        grid = detail::readRawData(data, progress);
-    });
-    return grid;
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) {
+            detail::withHeaderlessRawData(path, layout, headerBytes, use);
+        },
+        progress);
 }
 
 namespace detail {

@@ -200,11 +200,8 @@ std::string describe(const AnyGrid& grid, int bins) {
 std::string describeRaw(const RawHeader& layout, detail::RawOrder order,
                         const std::function<void(const detail::RawDataDecoder&)>& use, int bins) {
     const int components = layout.components;
-    if (order == detail::RawOrder::ZFastest && components != 1) {
-        AnyGrid grid;
-        use([&](const detail::RawDataView& data) { grid = detail::readRawData(data, {}); });
-        return describe(grid, bins);
-    }
+    if (order == detail::RawOrder::ZFastest && components != 1)
+        return describe(detail::readRawGrid(use, {}), bins);
     const ValuePass pass = [&](const VoxelChunk& chunk) {
         use([&](const detail::RawDataView& data) {
             detail::readRawValues(data, {},

@@ -94,7 +94,9 @@ AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& 
                     RawOrder order, const ProgressCallback& progress,
                     const FileAxes& axes = {});
 
-/// @brief readRawData() of a checked file's data.
-AnyGrid readRawData(const RawDataView& data, const ProgressCallback& progress);
+/// @brief The grid readRawData() makes of the data that `with` (withNpyData() and the like, bound
+/// to a file) hands its decoder.
+AnyGrid readRawGrid(const std::function<void(const RawDataDecoder&)>& with,
+                    const ProgressCallback& progress);
 
 } // namespace texsplat::volume::detail
