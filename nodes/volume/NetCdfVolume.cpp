@@ -165,9 +165,16 @@ struct Selection {
 // The open file, with netCDF-C's lock held.
 struct NetCdfReader::File {
     std::lock_guard<std::mutex> lock{sNetCdfMutex};
+    struct SelectionFor {
+        std::string names;
+        std::int64_t timeStep = 0;
+        Selection selection;
+    };
+
     std::string path;
     int id = -1;
     std::vector<NetCdfVariableInfo> variables;
+    mutable std::optional<SelectionFor> lastSelection;
 
     explicit File(const std::string& filePath) : path(filePath) {
         // The same messages as every reader for missing files, folders and FIFOs.
@@ -336,7 +343,16 @@ struct NetCdfReader::File {
         selection.geometry = geometryOf(dims, origin, spacing, selection.where);
     }
 
-    Selection select(const std::string& names, std::int64_t timeStep) const {
+    // What `names` selects at `timeStep`, made once for the calls about one selection in a
+    // row (info asks its geometry, then streams it twice): a coordinate's warning is logged once.
+    const Selection& select(const std::string& names, std::int64_t timeStep) const {
+        if (!lastSelection || lastSelection->names != names ||
+            lastSelection->timeStep != timeStep)
+            lastSelection = SelectionFor{names, timeStep, makeSelection(names, timeStep)};
+        return lastSelection->selection;
+    }
+
+    Selection makeSelection(const std::string& names, std::int64_t timeStep) const {
         Selection selection;
         selection.ids = resolve(names);
         std::string quoted;
@@ -522,13 +538,13 @@ const std::vector<NetCdfVariableInfo>& NetCdfReader::variables() const {
 
 std::pair<GridGeometry, int> NetCdfReader::geometry(const std::string& names,
                                                     std::int64_t timeStep) const {
-    const Selection selection = mFile->select(names, timeStep);
+    const Selection& selection = mFile->select(names, timeStep);
     return {selection.geometry, static_cast<int>(selection.ids.size())};
 }
 
 AnyGrid NetCdfReader::read(const std::string& names, std::int64_t timeStep,
                            const ProgressCallback& progress) const {
-    const Selection selection = mFile->select(names, timeStep);
+    const Selection& selection = mFile->select(names, timeStep);
     const int components = static_cast<int>(selection.ids.size());
     detail::checkGridFitsInMemory(selection.where, selection.geometry, components);
     mFile->checkStorage(selection);
@@ -561,7 +577,7 @@ AnyGrid NetCdfReader::read(const std::string& names, std::int64_t timeStep,
 void NetCdfReader::forEachSlice(
     const std::string& names, std::int64_t timeStep,
     const std::function<void(std::int64_t z, const std::vector<float>& values)>& slice) const {
-    const Selection selection = mFile->select(names, timeStep);
+    const Selection& selection = mFile->select(names, timeStep);
     mFile->checkStorage(selection);
     mFile->readSlices(selection, timeStep, {}, slice);
 }

@@ -384,6 +384,31 @@ TEST(NetCdfVolume, decreasingEvenlySpacedCoordinatesRunTheirAxisFromTheOtherEnd)
                     << i << " " << j << " " << k;
 }
 
+// Uneven levels index their axis, with one warning, also when info streams the variable twice.
+TEST(NetCdfVolume, anUnevenCoordinateIndexesItsAxisWithOneWarning) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("uneven", R"(netcdf uneven {
+dimensions:
+    level = 3 ; y = 1 ; x = 2 ;
+variables:
+    float level(level) ;
+    float t(level, y, x) ;
+data:
+    level = 1000, 850, 500 ;
+    t = 1, 2, 3, 4, 5, 6 ;
+}
+)");
+    std::vector<std::string> logged;
+    const LogSink previous = setLogSink(
+        [&](LogLevel, std::string_view message) { logged.emplace_back(message); });
+    const std::string info = describeVolumeFile(path);
+    setLogSink(previous);
+    EXPECT_EQ(logged, std::vector<std::string>{path + ": variable 't': coordinate 'level' is not "
+                                                      "evenly spaced; its axis (z) is indexed 0, "
+                                                      "1, 2, ..."});
+    EXPECT_NE(info.find("  voxel size    1 x 1 x 1\n"), std::string::npos) << info;
+}
+
 // `gridName "u v w"`: vectors from three variables, in the clouds' place (the docs' climate example
 // needed a Python conversion to a vector .npy, which lost the coordinates).
 TEST(NetCdfVolume, threeVariablesNamedTogetherAreTheComponentsOfVectors) {
