@@ -1,9 +1,12 @@
 #include "apps/Commands.h"
+#include "apps/DataFileOptions.h"
+#include "apps/MemoryLimitOption.h"
 
 #include "nodes/NodeTypes.h"
 #include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/AtomicFile.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/NodeRegistry.h"
 #include "scenegraph/engines/EngineTypes.h"
@@ -17,8 +20,10 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace texsplat::apps {
 
@@ -28,6 +33,10 @@ struct InfoArguments {
     std::string scene;
     bool reference = false;
     std::string update;
+    bool printScene = false;
+    HeaderlessOptions headerless;
+    std::string memoryLimit;
+    std::vector<std::string> dataRoots;
 };
 
 // The types a scene file may name: the core's and the nodes library's nodes, and the engines.
@@ -59,10 +68,27 @@ void printScene(const std::string& path) {
 void runInfo(const InfoArguments& arguments) {
     registerTypes();
     if (!arguments.reference) {
+        setMemoryLimit(memoryLimitOf(arguments.memoryLimit));
+        const std::optional<volume::HeaderlessRawLayout> headerless =
+            headerlessLayout(arguments.headerless);
         // A data file (by its first bytes or extension) gets what a scene needs to read it.
-        if (volume::detectVolumeFileFormat(arguments.scene) != volume::VolumeFileFormat::Unknown) {
-            std::fputs(volume::describeVolumeFile(arguments.scene).c_str(), stdout);
+        if (headerless ||
+            volume::detectVolumeFileFormat(arguments.scene) != volume::VolumeFileFormat::Unknown) {
+            if (const auto roots = dataRootsOf(arguments.dataRoots)) {
+                roots->check(arguments.scene, "data file");
+            }
+            std::fputs((arguments.printScene
+                            ? volume::quickLookScene(arguments.scene, headerless)
+                            : volume::describeVolumeFile(arguments.scene, 10, headerless,
+                                                         dataRootsOf(arguments.dataRoots).get()))
+                           .c_str(),
+                       stdout);
             return;
+        }
+        if (arguments.printScene) {
+            throw DataError("--scene: " + arguments.scene +
+                            " is not a data file texsplat reads (texsplat-raw, .npy, NRRD, NetCDF, "
+                            ".vdb, or headerless raw with --dims)");
         }
         printScene(arguments.scene);
         return;
@@ -83,12 +109,14 @@ void addInfoCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     auto arguments = std::make_shared<InfoArguments>();
     CLI::App* command = app.add_subcommand(
         "info", "Print a scene file's graph (types, names, fields that differ from their "
-                "defaults), what a data file holds (texsplat-raw, .npy, .vdb: grids, dimensions, "
-                "voxel size, bounds, value range, histogram), or the scene-file reference of "
+                "defaults), what a data file holds (texsplat-raw, .npy, NRRD, NetCDF, .vdb, or "
+                "headerless raw with --dims: grids, dimensions, voxel size, bounds, value range, "
+                "histogram) and a scene that draws it (--scene), or the scene-file reference of "
                 "every node and engine type");
     CLI::Option* scene = command->add_option(
         "scene", arguments->scene,
-        "Inventor scene file (.iv) or data file (texsplat-raw, .npy, .vdb) to describe");
+        "Inventor scene file (.iv) or data file (texsplat-raw, .npy, NRRD, NetCDF, .vdb; raw "
+        "values with --dims) to describe");
     CLI::Option* reference = command->add_flag(
         "--reference", arguments->reference,
         "Print the Markdown reference of every node and engine type, generated from the types");
@@ -98,10 +126,18 @@ void addInfoCommand(CLI::App& app, int& exitCode, CommandMode mode) {
                      "(docs/scene-files.md) instead of printing")
         ->needs(reference);
     reference->excludes(scene);
+    command->add_flag("--scene", arguments->printScene,
+                      "For a data file: print a scene file that draws it (what `texsplat render "
+                      "FILE` draws), to save and edit");
+    addHeaderlessOptions(*command, arguments->headerless);
+    addMemoryLimitOption(*command, arguments->memoryLimit);
+    addDataRootOption(*command, arguments->dataRoots);
     command->callback([arguments, scene, mode, &exitCode] {
         if (!arguments->reference && scene->count() == 0) {
             throw CLI::RequiredError("scene (or --reference)");
         }
+        headerlessLayout(arguments->headerless);
+        memoryLimitOf(arguments->memoryLimit);
         if (mode == CommandMode::Run) {
             runInfo(*arguments);
         }

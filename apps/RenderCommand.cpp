@@ -1,4 +1,5 @@
 #include "apps/Commands.h"
+#include "apps/DataFileOptions.h"
 #include "apps/ImageAnnotations.h"
 #include "apps/MemoryLimitOption.h"
 #include "apps/SceneSetup.h"
@@ -31,6 +32,8 @@
 #include <string>
 #include <string_view>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include <sys/resource.h>
 #include <unistd.h>
@@ -65,6 +68,8 @@ struct RenderArguments {
     AnnotationOptions annotations;
     std::string memoryLimit;
     BudgetOverride budget;
+    HeaderlessOptions headerless;
+    std::vector<std::string> dataRoots;
 };
 
 // The output name of each frame. A name with one printf-style integer conversion is a pattern:
@@ -181,6 +186,28 @@ struct Animation {
     // Frame k shows the scene at k / fps seconds: SimulatedClock::setTime(k / fps) is the time a
     // TimerSensor computes for its k-th trigger, so no error accumulates over a long movie.
     double time(int frame) const { return static_cast<double>(frame) / fps; }
+
+    // "frame 3/10 (t = 0.0833 s): out0002.png", as the progress line and errors name a frame.
+    std::string describe(int frame) const {
+        char text[64];
+        std::snprintf(text, sizeof text, "frame %d/%d (t = %.6g s): ", frame + 1, frames,
+                      time(frame));
+        return text + output.name(frame);
+    }
+
+    // Runs frame `frame`'s work; for an animation an error it throws names the frame first, so
+    // that a failure in frame 700 of 1000 says which.
+    template <class Work> void inFrame(int frame, Work&& work) const {
+        if (frames == 1) {
+            work();
+            return;
+        }
+        try {
+            work();
+        } catch (const Error& error) {
+            throw Error(describe(frame) + ": " + error.what());
+        }
+    }
 };
 
 int parseFrames(const std::string& text) {
@@ -241,8 +268,7 @@ public:
     // Reports frame `frame` written (a line on stderr for animations; nothing for one image).
     void reportWritten(int frame) const {
         if (mAnimation.frames > 1) {
-            std::fprintf(stderr, "frame %d/%d (t = %.6g s): %s\n", frame + 1, mAnimation.frames,
-                         mAnimation.time(frame), mAnimation.output.name(frame).c_str());
+            std::fprintf(stderr, "%s\n", mAnimation.describe(frame).c_str());
             std::fflush(stderr);
         }
     }
@@ -377,15 +403,17 @@ void runRayCast(const RenderArguments& arguments, const Animation& animation, sg
     double integrate = setup.frame;
     double write = 0.0;
     for (int frame = 0; frame < animation.frames; ++frame) {
-        clock.moveTo(frame);
-        action.setProgress(RayCastProgress());
-        Clock::time_point start = Clock::now();
-        action.render(root);
-        integrate += secondsSince(start);
-        const image::Image image = render::rayCastImage(action);
-        start = Clock::now();
-        annotations.write(image, animation.output.name(frame));
-        write += secondsSince(start);
+        animation.inFrame(frame, [&] {
+            clock.moveTo(frame);
+            action.setProgress(RayCastProgress());
+            Clock::time_point start = Clock::now();
+            action.render(root);
+            integrate += secondsSince(start);
+            const image::Image image = render::rayCastImage(action);
+            start = Clock::now();
+            annotations.write(image, animation.output.name(frame));
+            write += secondsSince(start);
+        });
         clock.reportWritten(frame);
     }
     if (arguments.timeReport) {
@@ -413,6 +441,7 @@ struct RenderOptions {
     render::BackendRequest request;
     glm::vec4 background;
     std::uint64_t memoryLimit;
+    SceneSource source;
 };
 
 RenderOptions checkRenderOptions(const RenderArguments& arguments) {
@@ -437,7 +466,17 @@ RenderOptions checkRenderOptions(const RenderArguments& arguments) {
                         std::to_string(kMaxThreads) + ", got " +
                         std::to_string(arguments.threads));
     }
-    return {size, animation, format, request, background, memoryLimitOf(arguments.memoryLimit)};
+    SceneSource source;
+    source.path = arguments.scene;
+    source.headerless = headerlessLayout(arguments.headerless);
+    source.headerlessArguments = headerlessArguments(arguments.headerless);
+    if (source.headerless && arguments.scene.empty()) {
+        throw DataError("--dims: names the layout of a headerless raw file given as the scene");
+    }
+    return {size,       animation,
+            format,     request,
+            background, memoryLimitOf(arguments.memoryLimit),
+            std::move(source)};
 }
 
 void runRender(const RenderArguments& arguments, const RenderOptions& options) {
@@ -458,7 +497,9 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     }
     SetupTimes setup;
     Clock::time_point start = Clock::now();
-    const sg::Node::Ptr scene = loadScene(arguments.scene);
+    SceneSource source = options.source;
+    source.dataRoots = dataRootsOf(arguments.dataRoots);
+    const sg::Node::Ptr scene = loadScene(source);
     applyBudget(*scene, arguments.budget);
     setup.readScene = secondsSince(start);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
@@ -484,12 +525,14 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     double write = 0.0;
     renderer->setWorkProgress(WorkProgressPrinter());
     for (int frame = 0; frame < animation.frames; ++frame) {
-        clock.moveTo(frame);
-        const image::Image image = renderer->render(*root, withDepth);
-        total += renderer->statistics();
-        const Clock::time_point writeStart = Clock::now();
-        annotations.write(image, animation.output.name(frame));
-        write += secondsSince(writeStart);
+        animation.inFrame(frame, [&] {
+            clock.moveTo(frame);
+            const image::Image image = renderer->render(*root, withDepth);
+            total += renderer->statistics();
+            const Clock::time_point writeStart = Clock::now();
+            annotations.write(image, animation.output.name(frame));
+            write += secondsSince(writeStart);
+        });
         clock.reportWritten(frame);
     }
     if (arguments.timeReport) {
@@ -509,7 +552,9 @@ void addRenderCommand(CLI::App& app, int& exitCode, CommandMode mode) {
         "render", "Render a scene file (or the built-in tornado scene) to a PNG or OpenEXR image, "
                   "or an animation to numbered images, headless");
     command->add_option("scene", arguments->scene,
-                        "Inventor scene file (.iv); none: the built-in tornado with fibers");
+                        "Inventor scene file (.iv), or a data file (texsplat-raw, .npy, NRRD, "
+                        "NetCDF, .vdb; raw values with --dims) drawn with the scene `texsplat info "
+                        "FILE --scene` prints; none: the built-in tornado with fibers");
     command->add_option("-o,--output", arguments->output,
                         "Output image: .png or .exr (float RGBA, Z); with --frames a name with "
                         "one frame number such as out%04d.png (%% for a '%')")
@@ -559,6 +604,8 @@ void addRenderCommand(CLI::App& app, int& exitCode, CommandMode mode) {
                         "Integration step of --raycast in voxels")
         ->capture_default_str();
     addMemoryLimitOption(*command, arguments->memoryLimit);
+    addHeaderlessOptions(*command, arguments->headerless);
+    addDataRootOption(*command, arguments->dataRoots);
     command->callback([arguments, mode, &exitCode] {
         const RenderOptions options = checkRenderOptions(*arguments);
         if (mode == CommandMode::Run) {

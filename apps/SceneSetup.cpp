@@ -17,6 +17,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <optional>
 #include <sstream>
 
@@ -211,10 +212,36 @@ int applyBudget(sg::Node& scene, const BudgetOverride& budget) {
     return static_cast<int>(search.paths().size());
 }
 
-sg::Node::Ptr loadScene(const std::string& path) {
+sg::Node::Ptr loadScene(const SceneSource& source) {
     nodes::registerNodeTypes();
     sg::registerEngineTypes(sg::NodeRegistry::instance());
-    return path.empty() ? sg::Node::Ptr(nodes::makeDefaultScene()) : sg::SceneReader::readFile(path);
+    const std::string& path = source.path;
+    if (path.empty()) {
+        return sg::Node::Ptr(nodes::makeDefaultScene());
+    }
+    sg::SceneReader::ReadOptions options;
+    options.dataRoots = source.dataRoots;
+    if (!source.headerless &&
+        volume::detectVolumeFileFormat(path) == volume::VolumeFileFormat::Unknown) {
+        return sg::SceneReader::readFile(path, options);
+    }
+    // A data file in place of a scene: a first look, with the scene `info --scene` prints.
+    if (source.dataRoots) {
+        source.dataRoots->check(path, "data file");
+    }
+    const std::string info = "texsplat info " + path + source.headerlessArguments + " --scene";
+    std::fprintf(stderr,
+                 "texsplat: %s is a data file: drawing it with the scene `%s` prints; to edit "
+                 "it, save it (%s > scene.iv) and render scene.iv\n",
+                 path.c_str(), info.c_str(), info.c_str());
+    return sg::SceneReader::readString(volume::quickLookScene(path, source.headerless),
+                                       "scene of " + path, options);
+}
+
+sg::Node::Ptr loadScene(const std::string& path) {
+    SceneSource source;
+    source.path = path;
+    return loadScene(source);
 }
 
 void addViewOptions(CLI::App& command, Framing& framing) {

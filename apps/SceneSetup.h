@@ -1,6 +1,8 @@
 #pragma once
 
 #include "nodes/render/SceneFraming.h"
+#include "nodes/volume/VolumeFileInfo.h"
+#include "scenegraph/io/DataRoots.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/WorkProgress.h"
 
@@ -8,6 +10,8 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include <memory>
+#include <optional>
 #include <string>
 
 namespace CLI {
@@ -44,8 +48,30 @@ struct BudgetOverride {
 /// node to set.
 int applyBudget(sg::Node& scene, const BudgetOverride& budget);
 
-/// @brief Registers every node and engine type, then reads `path`, or builds the built-in
-/// default scene (the tornado with fibres) when `path` is empty.
+/// @brief What a command draws: a scene file, a data file, or the built-in default scene.
+struct SceneSource {
+    /// @brief A scene file; a data file (texsplat-raw, .npy, NRRD, NetCDF, .vdb), drawn with the
+    /// scene `texsplat info FILE --scene` prints (volume::quickLookScene()); or empty for the
+    /// built-in default scene (the tornado with fibres).
+    std::string path;
+    /// @brief Set: `path` is a headerless raw file laid out so (drawn as a data file).
+    std::optional<volume::HeaderlessRawLayout> headerless;
+    /// @brief How the command line gave `headerless` (" --dims 256,256,180 --type uint8"), for
+    /// the message that says how to print the data file's scene.
+    std::string headerlessArguments;
+    /// @brief The folders every file the scene reads must lie in; null: any.
+    std::shared_ptr<const sg::DataRoots> dataRoots;
+};
+
+/// @brief Registers every node and engine type, then reads `source`: its scene file, the scene
+/// of its data file (saying on stderr which one, and how to save it to edit it), or the built-in
+/// default scene.
+/// @throws what the scene reader or volume::quickLookScene() throws; IoError for a data file
+/// outside the data roots.
+sg::Node::Ptr loadScene(const SceneSource& source);
+
+/// @brief loadScene() of the scene file (or data file) `path`, or of the default scene when it
+/// is empty.
 sg::Node::Ptr loadScene(const std::string& path);
 
 /// @brief How to frame a scene that has no camera of its own (the --camera and --direction

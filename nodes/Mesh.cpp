@@ -22,7 +22,7 @@ std::shared_ptr<const TriangleMesh> Mesh::triangleMesh() const {
                 throw DataError("fileName is empty; a Mesh reads a glTF file");
             }
             return std::make_shared<const TriangleMesh>(
-                detail::readGltf(resolvedPath(fileName.value())));
+                detail::readGltf(readablePath(fileName.value(), "glTF file"), dataRoots().get()));
         });
     }
     return mMesh;

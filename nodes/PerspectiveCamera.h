@@ -31,15 +31,19 @@ public:
 
     sg::SFFloat heightAngle; ///< full vertical opening angle, radians, in (0, pi)
 
+    /// @brief Refuses a heightAngle outside (0, pi): what every projection asks, and what code
+    /// that changes the angle (a zoom) asks first, since its arithmetic would wrap such an angle
+    /// into the range.
+    /// @throws DataError "PerspectiveCamera: heightAngle must lie strictly between 0 and pi
+    /// radians, got 7".
+    void checkHeightAngle() const;
+
 protected:
     PerspectiveCamera();
 
     glm::mat4 projection(float aspect, const DepthRange& range) const override;
     float frameSphere(float radius, float aspect) override;
     float minimumNearDistance(float rangeFar) const override;
-
-private:
-    void checkHeightAngle() const;
 };
 
 } // namespace texsplat::nodes

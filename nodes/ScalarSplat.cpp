@@ -112,11 +112,12 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     });
     const bool withMarks = footprint()->hasMarks();
     const bool mayCut = errorThreshold.value() > 0.0f || maxSplats.value() > 0;
-    // Every stage's allocation, estimated and refused before the first one is made.
-    const detail::SplatMemory memory = detail::withNodeContext(*this, [&] {
-        const detail::SplatMemory estimate = detail::estimateSplatMemory(
-            volume, withMarks, mayCut, static_cast<std::uint64_t>(maxSplats.value()));
-        detail::checkSplatMemory(estimate);
+    // Each stage's allocation is estimated and refused before it is made: the classified grid
+    // now (every stored voxel may be visible), the octree and the splats once the classified
+    // grid has counted the voxels that are.
+    const detail::SplatMemory classifiedMemory = detail::withNodeContext(*this, [&] {
+        const detail::SplatMemory estimate = detail::estimateClassification(volume, withMarks);
+        detail::checkClassificationMemory(estimate);
         return estimate;
     });
     const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
@@ -125,7 +126,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     const auto classifying = [&](const char* stage, const auto& make) {
         return timed(statistics, sg::RenderPhase::Classify, [&] {
             return detail::withNodeContext(*this, [&] {
-                return withMemoryStage(stage, memory.classified, detail::kSplatMemoryAdvice, make);
+                return withMemoryStage(stage, classifiedMemory.classified,
+                                       detail::kSplatMemoryAdvice, make);
             });
         });
     };
@@ -146,6 +148,14 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
             "classifying", [&] { return classify(*mCache, state, volume, transfer, model); });
     }
     mDrewPreview = isPreview;
+    const detail::SplatMemory memory = detail::withNodeContext(*this, [&] {
+        const detail::SplatMemory estimate = detail::estimateSplats(
+            classifiedMemory, classified->memoryBytes() + mCache->dataSummaryBytes(),
+            classified->nonEmptyVoxelCount(), withMarks, mayCut,
+            static_cast<std::uint64_t>(maxSplats.value()));
+        detail::checkSplatMemory(estimate);
+        return estimate;
+    });
     const auto tree = [&]() -> const octree::Octree& {
         return isPreview ? mCache->previewOctree() : mCache->octree();
     };
@@ -273,8 +283,8 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
     mCache->setWorkProgress(action.workProgress());
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
         detail::withNodeContext(*this, [&] {
-            const detail::SplatMemory memory = detail::estimateSplatMemory(volume, false, false, 0);
-            detail::checkClassificationMemory(memory);
+            const detail::SplatMemory memory = detail::estimateClassification(volume, false);
+            detail::checkClassificationMemory(memory, " for the ray-cast reference");
             return withMemoryStage("classifying", memory.classified, detail::kSplatMemoryAdvice,
                                    [&] { return mCache->classified(grid, transfer); });
         });

@@ -125,7 +125,7 @@ std::shared_ptr<const detail::TransferTable> TransferFunction::buildTable() cons
             table->colors = detail::presetColors(preset.value());
         } else {
             colormap::ParaViewColorMap map =
-                colormap::readParaViewColorMap(resolvedPath(colorMapFile.value()));
+                colormap::readParaViewColorMap(readablePath(colorMapFile.value(), "colour map"));
             table->colors = {std::move(map.positions), std::move(map.colors)};
         }
     } else {

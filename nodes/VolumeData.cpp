@@ -10,6 +10,7 @@
 #include "nodes/volume/NetCdfVolume.h"
 #include "nodes/volume/NpyVolume.h"
 #include "nodes/volume/NrrdVolume.h"
+#include "nodes/volume/PlacedGrid.h"
 #include "nodes/volume/RawVolume.h"
 #include "nodes/volume/Tornado.h"
 #include "nodes/volume/VdbVolume.h"
@@ -101,6 +102,11 @@ VolumeData::VolumeData() {
     addField(components, "components", 1,
              "FILE_RAW_HEADERLESS: values per voxel, 1 (scalars) or 3 (vectors, x y z "
              "interleaved)");
+    addField(origin, "origin", std::vector<glm::vec3>{},
+             "Any source: the centre of voxel (0,0,0) as x y z; none: the source's own");
+    addField(spacing, "spacing", std::vector<glm::vec3>{},
+             "Any source: the distance between voxel centres along x, y, z (> 0); none: the "
+             "source's own");
 }
 
 namespace {
@@ -123,6 +129,31 @@ glm::i64vec3 wholeNumbers(const sg::SFVec3f& field, const std::string& name) {
 } // namespace
 
 glm::i64vec3 VolumeData::dims() const { return wholeNumbers(resolution, "resolution"); }
+
+template <typename T>
+std::shared_ptr<const volume::Grid<T>>
+VolumeData::placed(std::shared_ptr<const volume::Grid<T>> grid) const {
+    if (origin.size() == 0 && spacing.size() == 0) {
+        return grid;
+    }
+    const auto one = [](const sg::MFVec3f& field, const glm::dvec3& fallback) {
+        if (field.size() > 1) {
+            throw DataError(field.name() +
+                            " holds one x y z (or none, for the source's own), got " +
+                            std::to_string(field.size()) + " values");
+        }
+        return field.size() == 1 ? glm::dvec3(field[0]) : fallback;
+    };
+    const volume::GridGeometry& own = grid->geometry();
+    const glm::dvec3 where = one(origin, own.origin());
+    const glm::dvec3 step = one(spacing, own.spacing());
+    try {
+        const volume::GridGeometry geometry(own.dims(), where, step);
+        return std::make_shared<volume::PlacedGrid<T>>(std::move(grid), geometry);
+    } catch (const DataError& error) {
+        throw DataError(std::string("origin and spacing: ") + error.what());
+    }
+}
 
 volume::RawHeader VolumeData::headerlessLayout() const {
     volume::RawHeader layout;
@@ -149,9 +180,10 @@ VolumeData::loadShared(const sg::WorkProgress& progress) const {
     if (!readsFile || fileName.value().empty()) {
         return read(progress);
     }
-    // Everything that shapes what is read, so that only equal loads share.
-    std::string key =
-        source.valueText() + "\n" + detail::fileIdentity(resolvedPath(fileName.value()));
+    // Everything that shapes what is read, so that only equal loads share. The data roots are
+    // asked first: a grid another node read is shared only with a node that may read it too.
+    std::string key = source.valueText() + "\n" +
+                      detail::fileIdentity(readablePath(fileName.value(), "file"));
     const std::initializer_list<const sg::Field*> shaping = {
         &gridName, &timeStep, &dimensions, &dataType, &byteOrder, &headerBytes, &components};
     for (const sg::Field* field : shaping) {
@@ -170,7 +202,7 @@ VolumeData::read(const sg::WorkProgress& progress) const {
             throw DataError("fileName is empty; source " +
                             *kVolumeSourceNames.name(source.value()) + " reads a file");
         }
-        return resolvedPath(fileName.value());
+        return readablePath(fileName.value(), "file");
     };
     switch (kind) {
     case VolumeSource::FileRaw: {
@@ -192,7 +224,8 @@ VolumeData::read(const sg::WorkProgress& progress) const {
     }
     case VolumeSource::FileNrrd: {
         const std::string path = requireFile();
-        result->grid = volume::readNrrdVolume(path, loadProgress(*this, path, progress));
+        result->grid =
+            volume::readNrrdVolume(path, loadProgress(*this, path, progress), dataRoots().get());
         break;
     }
     case VolumeSource::FileNetCdf: {
@@ -290,13 +323,13 @@ volume::ScalarGridPtr VolumeData::scalarGrid() const {
         return mScalar;
     }
     if (const auto* scalar = std::get_if<volume::ScalarGridPtr>(&data->grid)) {
-        mScalar = *scalar;
+        mScalar = detail::withNodeContext(*this, [&] { return placed(*scalar); });
         return mScalar;
     }
     const volume::VectorGridPtr& vectors = std::get<volume::VectorGridPtr>(data->grid);
     mScalar = detail::withNodeContext(*this, [&]() -> volume::ScalarGridPtr {
         if (component.as<VolumeComponent>() == VolumeComponent::Magnitude) {
-            return volume::magnitudeGrid(*vectors);
+            return placed(volume::magnitudeGrid(*vectors));
         }
         const auto found = data->scalars.find(gridName.value());
         if (found == data->scalars.end()) {
@@ -311,7 +344,7 @@ volume::ScalarGridPtr VolumeData::scalarGrid() const {
                                            : "it has: " + names) +
                             ")");
         }
-        return found->second;
+        return placed(found->second);
     });
     return mScalar;
 }
@@ -320,7 +353,13 @@ volume::VectorGridPtr VolumeData::vectorGrid() const {
     const std::lock_guard<std::mutex> lock(mMutex);
     const std::shared_ptr<const Loaded> data = loaded();
     const auto* vectors = std::get_if<volume::VectorGridPtr>(&data->grid);
-    return vectors != nullptr ? *vectors : nullptr;
+    if (vectors == nullptr) {
+        return nullptr;
+    }
+    if (!mVectors) {
+        mVectors = detail::withNodeContext(*this, [&] { return placed(*vectors); });
+    }
+    return mVectors;
 }
 
 std::vector<volume::Fiber> VolumeData::fibers() const {
@@ -329,11 +368,9 @@ std::vector<volume::Fiber> VolumeData::fibers() const {
 }
 
 sg::Box3 VolumeData::bounds() const {
-    const std::lock_guard<std::mutex> lock(mMutex);
-    const std::shared_ptr<const Loaded> data = loaded();
-    const volume::GridGeometry& geometry =
-        std::visit([](const auto& grid) -> const volume::GridGeometry& { return grid->geometry(); },
-                   data->grid);
+    const volume::VectorGridPtr vectors = vectorGrid();
+    const volume::GridGeometry geometry =
+        vectors ? vectors->geometry() : scalarGrid()->geometry();
     return sg::Box3(glm::vec3(geometry.boundsMin()), glm::vec3(geometry.boundsMax()));
 }
 
@@ -371,6 +408,7 @@ void VolumeData::notify(const sg::Field* changed) {
         const std::lock_guard<std::mutex> lock(mMutex);
         mLoaded.reset();
         mScalar.reset();
+        mVectors.reset();
     }
     sg::Node::notify(changed);
 }

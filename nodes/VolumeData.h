@@ -94,7 +94,8 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 ///   scene file the node was read from (sg::RelativeFileNames), or to the working directory for
 ///   a node made in C++; errors name the path tried.
 /// - `gridName`: FILE_VDB: the grid in the file (may stay empty when the file has one grid);
-///   FILE_NETCDF: the variable (may stay empty when one variable is 3-D or 4-D); with
+///   FILE_NETCDF: the variable (may stay empty when one variable is 3-D or 4-D), or three
+///   variables separated by spaces, the x, y and z components of vectors ("u v w"); with
 ///   `component SCALAR`: the generator's scalar grid (JET_STREAM: "cloudiness").
 /// - `resolution`: samples along x, y, z for the generators, as an SFVec3f of whole numbers >= 1
 ///   (Inventor has no integer vector field); files bring their own.
@@ -107,6 +108,12 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 ///   the value type, the byte order of multi-byte values, bytes to skip before the values, and
 ///   1 (scalars) or 3 (vectors, x y z interleaved per voxel). The file must hold exactly
 ///   `headerBytes` plus the values.
+/// - `origin`, `spacing`: where the voxels lie, for any source: the centre of voxel (0,0,0) and
+///   the distance between voxel centres along x, y and z (finite, and > 0 for spacing). Empty
+///   (the default): the source's own (a file's header or coordinates; 0 and 1 for raw and NumPy
+///   files). One value places the grid there without a copy (volume::PlacedGrid), so that data
+///   without geometry lines up with data that has it: winds from a `.npy` over clouds from a
+///   NetCDF file.
 ///
 /// The node's bounding box is the box the grid's voxel cells cover (GridGeometry bounds) under
 /// the model matrix. During a traversal the node puts itself into VolumeElement. The accessors
@@ -129,6 +136,8 @@ inline const sg::EnumNames kVolumeComponentNames{{"MAGNITUDE", VolumeComponent::
 ///     byteOrder   LITTLE      # LITTLE, BIG
 ///     headerBytes 0
 ///     components  1
+///     origin      [ ]         # one x y z, or none: the source's
+///     spacing     [ ]         # one x y z (> 0), or none: the source's
 /// }
 /// @endcode
 class VolumeData : public sg::Declare<VolumeData, sg::Node>, public sg::RelativeFileNames {
@@ -148,6 +157,8 @@ public:
     sg::SFEnum byteOrder;   ///< FILE_RAW_HEADERLESS byte order (volume::RawEndian)
     sg::SFInt32 headerBytes; ///< FILE_RAW_HEADERLESS bytes before the values
     sg::SFInt32 components; ///< FILE_RAW_HEADERLESS values per voxel: 1 or 3
+    sg::MFVec3f origin;     ///< centre of voxel (0,0,0), or none: the source's
+    sg::MFVec3f spacing;    ///< distance between voxel centres, or none: the source's
 
     /// @brief The scalar field for scalar splats: scalar data as it is, vector data as
     /// `component` says. Loads on first use.
@@ -219,10 +230,15 @@ private:
     std::shared_ptr<const Loaded> read(const sg::WorkProgress& progress) const;
     glm::i64vec3 dims() const;
     volume::RawHeader headerlessLayout() const;
+    // `grid` where `origin` and `spacing` put it: itself when both are empty.
+    template <typename T>
+    std::shared_ptr<const volume::Grid<T>>
+    placed(std::shared_ptr<const volume::Grid<T>> grid) const;
 
     mutable std::mutex mMutex;
     mutable std::shared_ptr<const Loaded> mLoaded;
-    mutable volume::ScalarGridPtr mScalar;
+    mutable volume::ScalarGridPtr mScalar;  // placed, made once per load
+    mutable volume::VectorGridPtr mVectors; // placed, made once per load
     volume::AnyGrid mMemoryGrid; // source MEMORY: setGrid()'s grid (guarded by mMutex)
 };
 

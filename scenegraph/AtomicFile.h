@@ -11,7 +11,10 @@ namespace texsplat {
 ///
 /// A reader never sees a half-written file, and a failed write (an exception from `write`, a
 /// full disk, an unwritable directory) leaves neither `path` nor the temporary file behind; an
-/// existing `path` stays as it was. Failures throw IoError("path: what"); errors `write` throws
+/// existing `path` stays as it was. Where the folder's file system can make a file without a
+/// name (Linux' O_TMPFILE: ext4, XFS, Btrfs, tmpfs), the temporary file has none until it is
+/// complete, so that a process killed while writing (Ctrl-C, SIGKILL, the OOM killer) leaves
+/// nothing behind either; elsewhere it is a hidden sibling (".NAME.tmpPID-N"). Failures throw IoError("path: what"); errors `write` throws
 /// itself (texsplat::Error) pass through unchanged. A `path` that is a symbolic link is written
 /// through: the file it points to gets the contents (and its name is in messages), the link
 /// stays a link.

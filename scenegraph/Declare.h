@@ -2,6 +2,7 @@
 
 #include "scenegraph/NodeType.h"
 
+#include <cstddef>
 #include <memory>
 #include <type_traits>
 
@@ -35,7 +36,8 @@ public:
     /// @brief The type of `Derived`: name `Derived::kTypeName`, parent `Base::classType()`,
     /// abstract when `Derived` is.
     static const NodeType& classType() {
-        static const NodeType type(Derived::kTypeName, &Base::classType(), factory());
+        static const NodeType type(Derived::kTypeName, &Base::classType(), factory(),
+                                   instanceBytes());
         return type;
     }
 
@@ -46,6 +48,14 @@ protected:
     Declare() = default;
 
 private:
+    static std::size_t instanceBytes() {
+        if constexpr (std::is_abstract_v<Derived>) {
+            return 0;
+        } else {
+            return sizeof(Derived);
+        }
+    }
+
     static NodeType::Factory factory() {
         if constexpr (std::is_abstract_v<Derived>) {
             return nullptr;

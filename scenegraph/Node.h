@@ -1,5 +1,6 @@
 #pragma once
 
+#include "scenegraph/Error.h"
 #include "scenegraph/FieldContainer.h"
 #include "scenegraph/SourceFiles.h"
 
@@ -97,5 +98,18 @@ private:
     std::uint32_t mSourceLine = 0;
     std::uint32_t mSourceColumn = 0;
 };
+
+/// @brief Runs `work` and answers what it answers; a texsplat::Error it throws gets `node`'s place
+/// in its scene file in front (Error::locateAtNode()), as when an action is at the node. For
+/// checks made outside a traversal (a colour bar's transfer function, the command line's zoom
+/// of the scene's camera), so that they point into the file as traversals do.
+template <class Work> decltype(auto) withNodeLocation(const Node& node, Work&& work) {
+    try {
+        return work();
+    } catch (Error& error) {
+        error.locateAtNode(node.sourceLocation());
+        throw;
+    }
+}
 
 } // namespace texsplat::sg

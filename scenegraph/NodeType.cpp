@@ -5,8 +5,10 @@
 
 namespace texsplat::sg {
 
-NodeType::NodeType(std::string name, const NodeType* parent, Factory factory)
-    : mName(std::move(name)), mParent(parent), mFactory(factory) {}
+NodeType::NodeType(std::string name, const NodeType* parent, Factory factory,
+                   std::size_t instanceBytes)
+    : mName(std::move(name)), mParent(parent), mFactory(factory),
+      mInstanceBytes(factory == nullptr ? 0 : instanceBytes) {}
 
 bool NodeType::isDerivedFrom(const NodeType& other) const {
     for (const NodeType* type = this; type != nullptr; type = type->mParent) {

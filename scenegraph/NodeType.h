@@ -2,6 +2,7 @@
 
 #include "scenegraph/Fwd.h"
 
+#include <cstddef>
 #include <functional>
 #include <map>
 #include <memory>
@@ -26,7 +27,9 @@ public:
 
     /// @brief Declares a type named `name` (as written in scene files) derived from `parent`
     /// (nullptr only for the root, FieldContainer); `factory` is nullptr for abstract types.
-    NodeType(std::string name, const NodeType* parent, Factory factory);
+    /// `instanceBytes`: the size of an instance (sizeof), 0 when not known.
+    NodeType(std::string name, const NodeType* parent, Factory factory,
+             std::size_t instanceBytes = 0);
     NodeType(const NodeType&) = delete;
     NodeType& operator=(const NodeType&) = delete;
 
@@ -38,6 +41,10 @@ public:
 
     /// @brief True for types that cannot be instantiated (Node, Engine, ...).
     bool isAbstract() const { return mFactory == nullptr; }
+
+    /// @brief The bytes of an instance itself (its sizeof, without what its fields hold on the
+    /// heap); 0 for abstract types. What the scene reader counts against the memory limit.
+    std::size_t instanceBytes() const { return mInstanceBytes; }
 
     /// @brief True when this type is `other` or derives from it.
     bool isDerivedFrom(const NodeType& other) const;
@@ -58,6 +65,7 @@ private:
     std::string mName;
     const NodeType* mParent;
     Factory mFactory;
+    std::size_t mInstanceBytes;
     mutable std::once_flag mDescriptionsOnce;
     mutable std::map<std::string, std::string, std::less<>> mDescriptions;
 };

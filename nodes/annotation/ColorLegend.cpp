@@ -97,8 +97,13 @@ ColorLegend ColorLegend::ofScene(sg::Node& root, LegendPosition position) {
     if (!transfer) {
         throw DataError("colour legend: the scene has no TransferFunction");
     }
-    const glm::vec2 range = volume ? transfer->dataScale(*volume->scalarGrid()).range
-                                   : transfer->range.value();
+    // Checked here, outside a traversal: a refusal names the node's line as a render's does.
+    const volume::ScalarGridPtr grid =
+        volume ? sg::withNodeLocation(*volume, [&volume] { return volume->scalarGrid(); })
+               : nullptr;
+    const glm::vec2 range = sg::withNodeLocation(*transfer, [&] {
+        return grid ? transfer->dataScale(*grid).range : transfer->range.value();
+    });
     return ColorLegend([transfer](float t) { return transfer->colorAt(t); }, range, position);
 }
 

@@ -1,5 +1,6 @@
 #include "nodes/colormap/ParaViewColorMap.h"
 
+#include "nodes/detail/JsonNesting.h"
 #include "nodes/image/detail/FileBytes.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/fields/ValueFormat.h"
@@ -60,6 +61,9 @@ std::string text(const nlohmann::json& map, const char* key) {
 } // namespace
 
 ParaViewColorMap parseParaViewColorMap(const std::string& source, const std::string& path) {
+    // nlohmann parses without recursion, but copies a document recursively (document.front()
+    // below): a million levels overflowed the stack.
+    nodes::detail::checkJsonNesting(source, path);
     nlohmann::json document;
     try {
         document = nlohmann::json::parse(source);

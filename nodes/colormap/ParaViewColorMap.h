@@ -26,7 +26,8 @@ struct ParaViewColorMap {
 
 /// @brief Reads the first colour map of a ParaView colour-map JSON file.
 /// @throws IoError when the file cannot be read; ParseError "path:line:column: …" for JSON that
-/// does not parse; DataError "path: …" naming the map and what is wrong for JSON that is not a
+/// does not parse or nests objects and arrays deeper than 256 levels (nodes::detail::
+/// kMaxJsonNesting, checked before the text is parsed); DataError "path: …" naming the map and what is wrong for JSON that is not a
 /// colour map (no RGBPoints, a count not a multiple of 4, x decreasing, a colour outside [0, 1]).
 ParaViewColorMap readParaViewColorMap(const std::string& path);
 

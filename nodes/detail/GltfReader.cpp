@@ -1,5 +1,6 @@
 #include "nodes/detail/GltfReader.h"
 
+#include "nodes/detail/JsonNesting.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/InputFile.h"
 
@@ -29,7 +30,7 @@ namespace texsplat::nodes::detail {
 
 bool isGltfAvailable() { return false; }
 
-TriangleMesh readGltf(const std::string& path) {
+TriangleMesh readGltf(const std::string& path, const sg::DataRoots* /*roots*/) {
     throw IoError(path + ": cannot read glTF: texsplat was built without glTF support "
                          "(TEXSPLAT_WITH_GLTF=OFF)");
 }
@@ -330,45 +331,6 @@ bool hasBinaryExtension(const std::string& path) {
     return tail == extension;
 }
 
-// tinygltf converts JSON values (extras, extensions) recursively, one stack frame per level:
-// 20 000 levels overflow an 8 MB stack. Real files nest a handful of levels.
-constexpr int kMaxJsonNesting = 256;
-
-// Refuses JSON nested deeper than kMaxJsonNesting before tinygltf parses it; `where` names the
-// text in the message ("model.gltf", or "model.glb (JSON chunk)"). Brackets inside strings do
-// not count; the scan is not a validator, tinygltf's parser reports what else is wrong.
-void checkJsonNesting(std::string_view json, const std::string& where) {
-    int depth = 0;
-    bool inString = false;
-    std::size_t line = 1;
-    std::size_t column = 1;
-    for (std::size_t i = 0; i < json.size(); ++i, ++column) {
-        const char c = json[i];
-        if (inString) {
-            if (c == '\\') {
-                ++i; // the escaped character cannot end the string
-                ++column;
-            } else if (c == '"') {
-                inString = false;
-            }
-        } else if (c == '"') {
-            inString = true;
-        } else if (c == '{' || c == '[') {
-            if (++depth > kMaxJsonNesting) {
-                throw ParseError(where + ":" + std::to_string(line) + ":" +
-                                 std::to_string(column) +
-                                 ": JSON objects and arrays nested deeper than the limit of " +
-                                 std::to_string(kMaxJsonNesting) + " levels");
-            }
-        } else if ((c == '}' || c == ']') && depth > 0) {
-            --depth;
-        } else if (c == '\n') {
-            ++line;
-            column = 0;
-        }
-    }
-}
-
 // The JSON of a .glb: its first chunk, when the container header and chunk header fit the file
 // (glTF 2.0, section 4.4); otherwise tinygltf reports what is wrong.
 std::string_view glbJson(const std::vector<unsigned char>& bytes) {
@@ -408,16 +370,20 @@ bool fileExists(const std::string& path, void* /*userData*/) {
 }
 
 // tinygltf's file reader for buffers and images that the glTF names by URI, refusing FIFOs and
-// devices as readGltf refuses them for the glTF itself. The IoError passes through tinygltf.
+// devices as readGltf refuses them for the glTF itself, and files outside the data roots
+// (`userData`, null for none). The IoError passes through tinygltf.
 bool readReferencedFile(std::vector<unsigned char>* out, std::string* error,
                         const std::string& path, void* userData) {
+    if (const auto* roots = static_cast<const sg::DataRoots*>(userData)) {
+        roots->check(path, "glTF buffer");
+    }
     requireRegularFile(path, "glTF buffer");
-    return tinygltf::ReadWholeFile(out, error, path, userData);
+    return tinygltf::ReadWholeFile(out, error, path, nullptr);
 }
 
 } // namespace
 
-TriangleMesh readGltf(const std::string& path) {
+TriangleMesh readGltf(const std::string& path, const sg::DataRoots* roots) {
     const bool isBinary = hasBinaryExtension(path);
     const std::vector<unsigned char> bytes =
         readBytes(path, isBinary ? "glTF binary" : "glTF file");
@@ -431,8 +397,9 @@ TriangleMesh readGltf(const std::string& path) {
         checkJsonNesting({reinterpret_cast<const char*>(bytes.data()), bytes.size()}, path);
     }
     tinygltf::TinyGLTF loader;
+    // tinygltf keeps the user data as a pointer to non-const; readReferencedFile only reads it.
     loader.SetFsCallbacks({&fileExists, &tinygltf::ExpandFilePath, &readReferencedFile,
-                           &tinygltf::WriteWholeFile, nullptr});
+                           &tinygltf::WriteWholeFile, const_cast<sg::DataRoots*>(roots)});
     tinygltf::Model model;
     std::string error;
     std::string warning;

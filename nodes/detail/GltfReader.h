@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/TriangleMesh.h"
+#include "scenegraph/io/DataRoots.h"
 
 #include <string>
 
@@ -15,7 +16,10 @@ bool isGltfAvailable();
 /// primitive's material base colour (white without material).
 /// @throws IoError "path: cannot open file (...)" or when built without glTF; ParseError
 /// "path: <tinygltf's message>" for a file tinygltf rejects, or for accessors that do not fit
-/// their buffers; DataError for a primitive that is not made of triangles.
-TriangleMesh readGltf(const std::string& path);
+/// their buffers; DataError for a primitive that is not made of triangles. With `roots`, a
+/// buffer or image that the glTF names by URI is read only inside them (sg::DataRoots::check(),
+/// IoError "mesh.gltf: ../secret.bin: cannot read glTF buffer: it lies outside the data roots
+/// …"); the glTF itself is the caller's to check.
+TriangleMesh readGltf(const std::string& path, const sg::DataRoots* roots = nullptr);
 
 } // namespace texsplat::nodes::detail

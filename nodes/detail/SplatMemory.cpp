@@ -38,8 +38,7 @@ std::string sizeText(std::uint64_t bytes) {
 
 } // namespace
 
-SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool withOctree,
-                                std::uint64_t maxSplats) {
+SplatMemory estimateClassification(const VolumeData& volume, bool withVectors) {
     // The vector field when there is one: scalarGrid() of vector data would make a component.
     const volume::VectorGridPtr vectors = volume.vectorGrid();
     SplatMemory memory;
@@ -64,10 +63,24 @@ SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool
         memory.classified = byteSum(memory.classified, octree::ValueRanges::memoryBytesFor(
                                                            dims, std::min(boxBlocks, stored)));
     }
+    return memory;
+}
+
+void checkClassificationMemory(const SplatMemory& memory, const std::string& purpose) {
+    checkMemory("classifying " + dimsText(memory.dims) + " voxels" + purpose, memory.classified,
+                "use a volume of lower resolution or a larger --memory-limit");
+}
+
+SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
+                           std::uint64_t nonEmptyVoxels, bool withVectors, bool withOctree,
+                           std::uint64_t maxSplats) {
+    memory.classified = classifiedBytes;
     // Records exist for non-empty nodes of level >= 1: at most one per 7 non-empty voxels
     // (1/8 + 1/64 + ...).
-    memory.octree = withOctree ? byteProduct(stored / 7 + 1, sizeof(octree::OctreeNode)) : 0;
-    const std::uint64_t splats = maxSplats > 0 ? std::min(stored, maxSplats) : stored;
+    memory.octree =
+        withOctree ? byteProduct(nonEmptyVoxels / 7 + 1, sizeof(octree::OctreeNode)) : 0;
+    const std::uint64_t splats =
+        maxSplats > 0 ? std::min(nonEmptyVoxels, maxSplats) : nonEmptyVoxels;
     memory.splats =
         byteProduct(splats, kBytesPerSplat + (withVectors ? kBytesPerVectorSplat : 0));
     return memory;
@@ -78,11 +91,6 @@ void checkSplatMemory(const SplatMemory& memory) {
                 "the classified grid takes " + sizeText(memory.classified) + ", the octree " +
                     sizeText(memory.octree) + ", the splats " + sizeText(memory.splats) + "; " +
                     kSplatMemoryAdvice);
-}
-
-void checkClassificationMemory(const SplatMemory& memory) {
-    checkMemory("classifying " + dimsText(memory.dims) + " voxels for the ray-cast reference",
-                memory.classified, "use a volume of lower resolution or a larger --memory-limit");
 }
 
 } // namespace texsplat::nodes::detail

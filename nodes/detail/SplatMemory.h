@@ -5,6 +5,7 @@
 #include <glm/ext/vector_int3_sized.hpp>
 
 #include <cstdint>
+#include <string>
 
 namespace texsplat::nodes {
 class VolumeData;
@@ -12,9 +13,14 @@ class VolumeData;
 
 namespace texsplat::nodes::detail {
 
-/// @brief What a splat node's frame allocates once its volume is loaded, estimated before
-/// classifying, when nothing is known of the voxels but their number: an upper bound, since
-/// transparent voxels make no splat but classifying is what finds them.
+/// @brief What a splat node's frame allocates once its volume is loaded, estimated in two steps
+/// so that each is refused before it allocates and neither counts voxels that turn out
+/// transparent (the frame was estimated as if every voxel were visible: 24 times too much for a
+/// cloud that fills a twentieth of its box):
+/// - before classifying, when nothing is known of the voxels but their number: the classified
+///   grid, an upper bound (estimateClassification());
+/// - once classified, when the non-empty voxels are counted: the octree and the splats, exact
+///   bounds (estimateSplats()).
 struct SplatMemory {
     glm::i64vec3 dims{0};         ///< voxels per axis of the grid classified
     std::uint64_t classified = 0; ///< the classified grid: colour and extinction (and vector);
@@ -28,23 +34,28 @@ struct SplatMemory {
     }
 };
 
-/// @brief The estimate for `volume`'s grid (loaded; its vector field for vector splats).
-/// `withOctree`: a cut is asked for (an error threshold or a budget); `maxSplats` > 0 bounds
-/// the splats, else every voxel may be one.
-SplatMemory estimateSplatMemory(const VolumeData& volume, bool withVectors, bool withOctree,
-                                std::uint64_t maxSplats);
+/// @brief The classified grid's bound for `volume`'s grid (loaded; its vector field for vector
+/// splats): each stored voxel may make one block of the box visible.
+SplatMemory estimateClassification(const VolumeData& volume, bool withVectors);
 
-/// @brief Refuses a frame whose estimate exceeds the memory limit (texsplat::memoryLimit()),
-/// before anything is allocated: throws ResourceError "classifying and splatting 1200x1200x1200
-/// voxels would need <total>, more than the memory limit of …; the classified grid takes …, the
-/// octree …, the splats …; <kSplatMemoryAdvice>".
+/// @brief Refuses classifying when `memory.classified` exceeds the memory limit, before anything
+/// is allocated: throws ResourceError "classifying 1200x1200x1200 voxels <purpose> would need
+/// <classified>, more than the memory limit of …; <advice>" (`purpose` empty for a frame, " for
+/// the ray-cast reference" for RayCastAction).
+void checkClassificationMemory(const SplatMemory& memory, const std::string& purpose = {});
+
+/// @brief `memory` with the octree and the splats of the classified grid, which holds
+/// `nonEmptyVoxels` (what can become a splat) in `classifiedBytes`: `withOctree`, a cut is asked
+/// for (an error threshold or a budget); `maxSplats` > 0 bounds the splats.
+SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
+                           std::uint64_t nonEmptyVoxels, bool withVectors, bool withOctree,
+                           std::uint64_t maxSplats);
+
+/// @brief Refuses a frame whose estimate exceeds the memory limit, before the octree and the
+/// splats are made: throws ResourceError "classifying and splatting 1200x1200x1200 voxels would
+/// need <total>, more than the memory limit of …; the classified grid takes …, the octree …, the
+/// splats …; <kSplatMemoryAdvice>".
 void checkSplatMemory(const SplatMemory& memory);
-
-/// @brief The ray-cast reference's part of the check: it classifies but makes no splats. Throws
-/// ResourceError "classifying 1200x1200x1200 voxels for the ray-cast reference would need
-/// <classified>, more than the memory limit of …; use a volume of lower resolution or a larger
-/// --memory-limit".
-void checkClassificationMemory(const SplatMemory& memory);
 
 /// @brief What to do when a splat node's stages run out of memory.
 inline constexpr const char* kSplatMemoryAdvice =

@@ -63,6 +63,8 @@ void changeView(nodes::Camera& camera, const ViewChange& change) {
     camera.orientation.setValue(sg::Rotation(glm::axis(orientation), glm::angle(orientation)));
     camera.position.setValue(focus - orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance);
     if (auto* perspective = dynamic_cast<nodes::PerspectiveCamera*>(&camera)) {
+        // tan() below would wrap an angle outside (0, pi) into it (7 became 0.72).
+        sg::withNodeLocation(camera, [perspective] { perspective->checkHeightAngle(); });
         const float half = 0.5f * perspective->heightAngle.value();
         perspective->heightAngle.setValue(2.0f * std::atan(std::tan(half) / change.zoom));
     } else if (auto* orthographic = dynamic_cast<nodes::OrthographicCamera*>(&camera)) {

@@ -9,11 +9,12 @@
 
 namespace texsplat::volume {
 
-AnyGrid readNpyVolume(const std::string& path, const ProgressCallback& progress) {
-    std::ifstream in = detail::openForReading(path);
+namespace detail {
+
+void withNpyData(const std::string& path, const RawDataDecoder& use) {
+    std::ifstream in = openForReading(path);
     const NpyHeader header = NpyHeader::parse(in, path);
-    const std::int64_t fileSize = detail::fileSize(path);
-    const std::int64_t available = fileSize - header.dataOffset;
+    const std::int64_t available = fileSize(path) - header.dataOffset;
     const std::int64_t needed = header.layout.dataBytes();
     const std::string asks = "the header's shape " + header.shapeText() + " of '" + header.descr +
                              "' asks for " + std::to_string(needed) + " bytes";
@@ -23,10 +24,15 @@ AnyGrid readNpyVolume(const std::string& path, const ProgressCallback& progress)
     if (available > needed)
         throw DataError(path + ": data size mismatch: " + asks + ", but " +
                         std::to_string(available) + " bytes follow it");
-    return detail::readRawData(in, path, header.layout,
-                               header.fortranOrder ? detail::RawOrder::ZFastest
-                                                   : detail::RawOrder::XFastest,
-                               progress);
+    use({in, path, header.layout, header.fortranOrder ? RawOrder::ZFastest : RawOrder::XFastest,
+         {}});
+}
+
+} // namespace detail
+
+AnyGrid readNpyVolume(const std::string& path, const ProgressCallback& progress) {
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) { detail::withNpyData(path, use); }, progress);
 }
 
 } // namespace texsplat::volume

@@ -41,8 +41,8 @@ std::int64_t skipLines(std::istream& in, const std::string& path, std::int64_t c
     return bytes;
 }
 
-AnyGrid readRaw(std::istream& in, const std::string& path, const NrrdHeader& header,
-                std::int64_t position, const std::string& asks, const ProgressCallback& progress) {
+void useRaw(std::istream& in, const std::string& path, const NrrdHeader& header,
+            std::int64_t position, const std::string& asks, const detail::RawDataDecoder& use) {
     const std::int64_t needed = header.layout.dataBytes();
     std::int64_t available = detail::fileSize(path) - position;
     const std::int64_t skip = header.byteSkip == -1 ? std::max<std::int64_t>(0, available - needed)
@@ -63,12 +63,24 @@ AnyGrid readRaw(std::istream& in, const std::string& path, const NrrdHeader& hea
                         std::to_string(available) + " bytes follow " + after +
                         " (for data at the end of a longer file, say 'byte skip: -1')");
     in.seekg(static_cast<std::streamoff>(position + skip));
-    return detail::readRawData(in, path, header.layout, detail::RawOrder::XFastest, progress,
-                               fileAxes(header));
+    use({in, path, header.layout, detail::RawOrder::XFastest, fileAxes(header)});
 }
 
-AnyGrid readGzip(std::istream& in, const std::string& path, const NrrdHeader& header,
-                 const std::string& asks, const ProgressCallback& progress) {
+void useGzip(std::istream& in, const std::string& path, const NrrdHeader& header,
+             std::int64_t position, const std::string& asks, const detail::RawDataDecoder& use) {
+    // A few bytes of gzip can declare any size: the data must be able to hold what the header
+    // asks before anything is allocated for it (a 1 MB file asked for 3.8 GB, which was
+    // allocated, then inflated to the end of the data).
+    const auto compressed = static_cast<std::uint64_t>(detail::fileSize(path) - position);
+    const std::uint64_t most = detail::maxDeflatedBytes(compressed);
+    const auto declared = static_cast<std::uint64_t>(header.layout.dataBytes()) +
+                          static_cast<std::uint64_t>(header.byteSkip);
+    if (declared > most)
+        throw DataError(path + ": truncated data: " + asks +
+                        (header.byteSkip > 0 ? " after 'byte skip'" : "") + ", but its " +
+                        std::to_string(compressed) + " bytes of gzip data hold at most " +
+                        std::to_string(most) + " (deflate expands at most " +
+                        std::to_string(detail::kMaxDeflateRatio) + " to 1)");
     detail::GzipInputStream data(in);
     // The data ended (cleanly, or at damage) before the values did.
     const auto ended = [&] {
@@ -83,10 +95,8 @@ AnyGrid readGzip(std::istream& in, const std::string& path, const NrrdHeader& he
     data.ignore(static_cast<std::streamsize>(header.byteSkip));
     if (data.gcount() != header.byteSkip)
         throw ended();
-    AnyGrid grid;
     try {
-        grid = detail::readRawData(data, path, header.layout, detail::RawOrder::XFastest,
-                                   progress, fileAxes(header));
+        use({data, path, header.layout, detail::RawOrder::XFastest, fileAxes(header)});
     } catch (const IoError&) {
         throw ended(); // the only reads are from the gzip stream
     }
@@ -95,13 +105,14 @@ AnyGrid readGzip(std::istream& in, const std::string& path, const NrrdHeader& he
                         ", but the gzip data holds more");
     if (!data.failure().empty())
         throw ended();
-    return grid;
 }
 
 } // namespace
 
-AnyGrid readNrrdVolume(const std::string& path, const ProgressCallback& progress) {
-    std::ifstream headerFile = detail::openForReading(path);
+namespace detail {
+
+void withNrrdData(const std::string& path, const RawDataDecoder& use, const sg::DataRoots* roots) {
+    std::ifstream headerFile = openForReading(path);
     const NrrdHeader header = NrrdHeader::parse(headerFile, path);
     std::string dataPath = path;
     std::ifstream detachedFile;
@@ -109,7 +120,9 @@ AnyGrid readNrrdVolume(const std::string& path, const ProgressCallback& progress
     std::int64_t position = header.dataOffset;
     if (!header.dataFile.empty()) {
         dataPath = dataFilePath(path, header.dataFile);
-        detachedFile = detail::openForReading(dataPath);
+        if (roots != nullptr)
+            roots->check(dataPath, "the NRRD header's data file");
+        detachedFile = openForReading(dataPath);
         data = &detachedFile;
         position = 0;
     }
@@ -117,9 +130,19 @@ AnyGrid readNrrdVolume(const std::string& path, const ProgressCallback& progress
     const std::string asks = "the header's sizes " + header.sizesText() + " of type '" +
                              header.typeName + "' ask for " +
                              std::to_string(header.layout.dataBytes()) + " bytes";
-    return header.encoding == NrrdEncoding::Raw
-               ? readRaw(*data, dataPath, header, position, asks, progress)
-               : readGzip(*data, dataPath, header, asks, progress);
+    if (header.encoding == NrrdEncoding::Raw)
+        useRaw(*data, dataPath, header, position, asks, use);
+    else
+        useGzip(*data, dataPath, header, position, asks, use);
+}
+
+} // namespace detail
+
+AnyGrid readNrrdVolume(const std::string& path, const ProgressCallback& progress,
+                       const sg::DataRoots* roots) {
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) { detail::withNrrdData(path, use, roots); },
+        progress);
 }
 
 } // namespace texsplat::volume

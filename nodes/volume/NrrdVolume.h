@@ -2,6 +2,7 @@
 
 #include "nodes/volume/Grid.h"
 #include "nodes/volume/Progress.h"
+#include "scenegraph/io/DataRoots.h"
 
 #include <string>
 
@@ -20,7 +21,10 @@ namespace texsplat::volume {
 /// @throws IoError when a file cannot be opened or read; ParseError when the header is not NRRD;
 /// DataError for a header of data this reader does not read, when the data are shorter or longer
 /// than the header says (or the gzip data is damaged), when the grid does not fit in memory or
-/// every voxel is NaN or infinite; LoadCancelled when `progress` answered false.
-AnyGrid readNrrdVolume(const std::string& path, const ProgressCallback& progress = {});
+/// every voxel is NaN or infinite; LoadCancelled when `progress` answered false. With `roots`,
+/// a detached data file is read only inside them (sg::DataRoots::check()); the header itself is
+/// the caller's to check.
+AnyGrid readNrrdVolume(const std::string& path, const ProgressCallback& progress = {},
+                       const sg::DataRoots* roots = nullptr);
 
 } // namespace texsplat::volume

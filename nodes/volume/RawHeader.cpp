@@ -178,8 +178,9 @@ RawHeader RawHeader::parse(std::istream& in, const std::string& source) {
         if (hasFirstLine && !found.empty())
             what += isText(found) ? ", found '" + printable(found) + "'"
                                   : std::string(", found binary data (a headerless raw file? "
-                                                "describe it in the scene: VolumeData source "
-                                                "FILE_RAW_HEADERLESS)");
+                                                "give its layout: texsplat info FILE --dims "
+                                                "X,Y,Z --type TYPE, or in a scene VolumeData "
+                                                "source FILE_RAW_HEADERLESS)");
         throw ParseError(reader.where(1, 1) + what);
     }
     if (line.tokens[1].text != "1")

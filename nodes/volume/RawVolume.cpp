@@ -32,36 +32,6 @@ std::string sizeDescription(const RawHeader& header, const std::string& subject)
            ") = " + std::to_string(header.dataBytes()) + " bytes";
 }
 
-// Reads the values chunk by chunk into `store(firstValue, values, count)`, reporting progress.
-template <typename Store>
-void readValues(std::istream& in, const std::string& path, const RawHeader& header,
-                const ProgressCallback& progress, Store store) {
-    const std::int64_t valueBytes = header.bytesPerValue();
-    const std::int64_t totalValues = header.dataBytes() / valueBytes;
-    // Whole voxels per chunk, so a vector never straddles two chunks.
-    const std::int64_t voxelBytes = valueBytes * header.components;
-    const std::int64_t chunkValues = std::max<std::int64_t>(1, kChunkBytes / voxelBytes) *
-                                     header.components;
-    const bool swapBytes = (header.endian == RawEndian::Little) != kHostIsLittleEndian;
-    std::vector<unsigned char> bytes;
-    std::vector<float> values;
-    const std::string message = "reading";
-    reportProgress(progress, path, 0.0, message);
-    for (std::int64_t done = 0; done < totalValues;) {
-        const std::int64_t count = std::min(chunkValues, totalValues - done);
-        bytes.resize(static_cast<std::size_t>(count * valueBytes));
-        values.resize(static_cast<std::size_t>(count));
-        if (!in.read(reinterpret_cast<char*>(bytes.data()),
-                     static_cast<std::streamsize>(bytes.size())))
-            throw IoError(path + ": read failed after " + std::to_string(done * valueBytes) +
-                          " bytes of data");
-        detail::decodeValues(header.type, bytes.data(), values.size(), swapBytes, values.data());
-        store(done, values.data(), count);
-        done += count;
-        reportProgress(progress, path, double(done) / double(totalValues), message);
-    }
-}
-
 template <typename T>
 void writeGrid(const std::string& path, const Grid<T>& grid, int components) {
     const GridGeometry& geometry = grid.geometry();
@@ -107,12 +77,42 @@ void writeGrid(const std::string& path, const Grid<T>& grid, int components) {
 
 } // namespace
 
-AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress) {
-    std::ifstream in = detail::openForReading(path);
+namespace detail {
+
+void readRawValues(const RawDataView& data, const ProgressCallback& progress,
+                   const RawValueChunk& chunk) {
+    const RawHeader& header = data.layout;
+    const std::int64_t valueBytes = header.bytesPerValue();
+    const std::int64_t totalValues = header.dataBytes() / valueBytes;
+    // Whole voxels per chunk, so a vector never straddles two chunks.
+    const std::int64_t voxelBytes = valueBytes * header.components;
+    const std::int64_t chunkValues = std::max<std::int64_t>(1, kChunkBytes / voxelBytes) *
+                                     header.components;
+    const bool swapBytes = (header.endian == RawEndian::Little) != kHostIsLittleEndian;
+    std::vector<unsigned char> bytes;
+    std::vector<float> values;
+    const std::string message = "reading";
+    reportProgress(progress, data.path, 0.0, message);
+    for (std::int64_t done = 0; done < totalValues;) {
+        const std::int64_t count = std::min(chunkValues, totalValues - done);
+        bytes.resize(static_cast<std::size_t>(count * valueBytes));
+        values.resize(static_cast<std::size_t>(count));
+        if (!data.in.read(reinterpret_cast<char*>(bytes.data()),
+                          static_cast<std::streamsize>(bytes.size())))
+            throw IoError(data.path + ": read failed after " +
+                          std::to_string(done * valueBytes) + " bytes of data");
+        decodeValues(header.type, bytes.data(), values.size(), swapBytes, values.data());
+        chunk(done, values.data(), count);
+        done += count;
+        reportProgress(progress, data.path, double(done) / double(totalValues), message);
+    }
+}
+
+void withRawVolumeData(const std::string& path, const RawDataDecoder& use) {
+    std::ifstream in = openForReading(path);
     const RawHeader header = RawHeader::parse(in, path);
     const std::int64_t dataStart = in.tellg();
-    const std::int64_t fileSize = detail::fileSize(path);
-    const std::int64_t available = fileSize - dataStart;
+    const std::int64_t available = fileSize(path) - dataStart;
     const std::int64_t needed = [&] {
         try {
             return header.dataBytes();
@@ -127,16 +127,16 @@ AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress)
     if (available > needed)
         throw DataError(path + ": data size mismatch: " + sizeDescription(header, subject) +
                         ", but " + std::to_string(available) + " bytes follow it");
-    return detail::readRawData(in, path, header, detail::RawOrder::XFastest, progress);
+    use({in, path, header, RawOrder::XFastest, {}});
 }
 
-AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout,
-                                std::int64_t headerBytes, const ProgressCallback& progress) {
-    std::ifstream in = detail::openForReading(path);
+void withHeaderlessRawData(const std::string& path, const RawHeader& layout,
+                           std::int64_t headerBytes, const RawDataDecoder& use) {
+    std::ifstream in = openForReading(path);
     if (headerBytes < 0)
         throw DataError(path + ": headerBytes must be 0 or more, got " +
                         std::to_string(headerBytes));
-    const std::int64_t fileSize = detail::fileSize(path);
+    const std::int64_t size = fileSize(path);
     const std::int64_t needed = [&] {
         try {
             const std::int64_t dataBytes = layout.dataBytes();
@@ -147,14 +147,40 @@ AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout
             throw DataError(path + ": " + error.what());
         }
     }();
-    if (fileSize != needed)
+    if (size != needed)
         throw DataError(path + ": file size mismatch: " +
                         sizeDescription(layout, "the scene describes") + ", plus " +
                         std::to_string(headerBytes) + " header bytes = " +
                         std::to_string(needed) + " bytes, but the file has " +
-                        std::to_string(fileSize) + " bytes");
+                        std::to_string(size) + " bytes");
     in.seekg(static_cast<std::streamoff>(headerBytes));
-    return detail::readRawData(in, path, layout, detail::RawOrder::XFastest, progress);
+    use({in, path, layout, RawOrder::XFastest, {}});
+}
+
+AnyGrid readRawGrid(const std::function<void(const RawDataDecoder&)>& with,
+                    const ProgressCallback& progress) {
+    AnyGrid grid;
+    with([&](const RawDataView& data) {
+        grid = readRawData(data.in, data.path, data.layout, data.order, progress, data.axes);
+    });
+    return grid;
+}
+
+} // namespace detail
+
+AnyGrid readRawVolume(const std::string& path, const ProgressCallback& progress) {
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) { detail::withRawVolumeData(path, use); },
+        progress);
+}
+
+AnyGrid readHeaderlessRawVolume(const std::string& path, const RawHeader& layout,
+                                std::int64_t headerBytes, const ProgressCallback& progress) {
+    return detail::readRawGrid(
+        [&](const detail::RawDataDecoder& use) {
+            detail::withHeaderlessRawData(path, layout, headerBytes, use);
+        },
+        progress);
 }
 
 namespace detail {
@@ -225,8 +251,8 @@ AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& 
     if (layout.components == 1) {
         auto grid = std::make_shared<DenseScalarGrid>(geometry);
         float* target = grid->values().data();
-        readValues(in, path, layout, progress,
-                   [&](std::int64_t first, const float* values, std::int64_t count) {
+        readRawValues({in, path, layout, order, axes}, progress,
+                      [&](std::int64_t first, const float* values, std::int64_t count) {
                        if (inGridOrder) {
                            std::copy(values, values + count, target + first);
                            return;
@@ -248,8 +274,8 @@ AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& 
     } else {
         auto grid = std::make_shared<DenseVectorGrid>(geometry);
         glm::vec3* target = grid->values().data();
-        readValues(in, path, layout, progress,
-                   [&](std::int64_t first, const float* values, std::int64_t count) {
+        readRawValues({in, path, layout, order, axes}, progress,
+                      [&](std::int64_t first, const float* values, std::int64_t count) {
                        if (order == RawOrder::XFastest) {
                            for (std::int64_t i = 0; i < count; i += 3) {
                                const std::int64_t voxel = (first + i) / 3;

@@ -16,12 +16,15 @@ void Action::apply(Node& root) {
     if (!visitsSharedNodesOnce()) {
         const detail::VisitCount count = detail::countVisits(root, kMaxVisits);
         if (count.overLimit != nullptr) {
-            throw DataError("scene graph is too large to traverse: " +
+            DataError error("scene graph is too large to traverse: " +
                             count.overLimit->describe() + " and the nodes under it would be " +
                             "visited " + std::to_string(count.visits) +
                             " times (a node shared with DEF/USE is visited once per use), more "
                             "than the limit of " + std::to_string(kMaxVisits) + " (in the graph "
                             "under " + root.describe() + ")");
+            // Where the file defines the node that multiplies the visits.
+            error.locateAtNode(count.overLimit->sourceLocation());
+            throw error;
         }
     }
     beginTraversal(root);

@@ -77,6 +77,10 @@ public:
     /// @brief Copies the value of a field of the same type (`typeName()` equal).
     virtual void copyValueFrom(const Field& other) = 0;
 
+    /// @brief The bytes the value holds on the heap beside the field itself (an MF field's list,
+    /// a long string); what the scene reader counts of a file against the memory limit.
+    virtual std::size_t heapBytes() const { return 0; }
+
     /// @brief Notifies as if the value had changed (without clearing the default flag).
     void touch();
 

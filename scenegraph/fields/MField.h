@@ -3,9 +3,12 @@
 #include "scenegraph/fields/Field.h"
 #include "scenegraph/fields/FieldValueReader.h"
 #include "scenegraph/fields/FieldValueWriter.h"
+#include "scenegraph/fields/detail/ValueTraits.h"
 
 #include <cstddef>
+#include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -84,6 +87,17 @@ public:
     void copyValueFrom(const Field& other) override {
         checkSameType(other);
         setValue(static_cast<const MField&>(other).mValues);
+    }
+
+    /// @copydoc Field::heapBytes
+    std::size_t heapBytes() const override {
+        std::size_t bytes = mValues.capacity() * sizeof(Value);
+        if constexpr (std::is_same_v<Value, std::string>) {
+            for (const std::string& value : mValues) {
+                bytes += detail::stringHeapBytes(value);
+            }
+        }
+        return bytes;
     }
 
 private:

@@ -3,8 +3,12 @@
 #include "scenegraph/fields/Field.h"
 #include "scenegraph/fields/FieldValueReader.h"
 #include "scenegraph/fields/FieldValueWriter.h"
+#include "scenegraph/fields/detail/ValueTraits.h"
 
+#include <cstddef>
+#include <string>
 #include <string_view>
+#include <type_traits>
 
 namespace texsplat::sg {
 
@@ -51,6 +55,15 @@ public:
     void copyValueFrom(const Field& other) override {
         checkSameType(other);
         setValue(static_cast<const SField&>(other).mValue);
+    }
+
+    /// @copydoc Field::heapBytes
+    std::size_t heapBytes() const override {
+        if constexpr (std::is_same_v<Value, std::string>) {
+            return detail::stringHeapBytes(mValue);
+        } else {
+            return 0;
+        }
     }
 
 private:

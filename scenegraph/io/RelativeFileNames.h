@@ -1,6 +1,9 @@
 #pragma once
 
+#include "scenegraph/io/DataRoots.h"
+
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <utility>
 
@@ -16,6 +19,9 @@ namespace texsplat::sg {
 /// directory and resolves against the working directory. Absolute names are used as they are.
 /// Set the base directory before the node is used: nodes that cache what they read do not drop
 /// the cache when it changes.
+///
+/// The files a node opens may be confined to folders (dataRoots(), `--data-root`): the reader
+/// gives every node the roots of its ReadOptions, and the node opens what readablePath() answers.
 class RelativeFileNames {
 public:
     virtual ~RelativeFileNames() = default;
@@ -37,6 +43,22 @@ public:
         return (std::filesystem::path(mBaseDirectory) / name).string();
     }
 
+    /// @brief The folders the node's files must lie in; null or empty: any file may be read.
+    const std::shared_ptr<const DataRoots>& dataRoots() const { return mDataRoots; }
+
+    /// @brief Confines the node's files to `roots` (null: no confinement). Set it, like the base
+    /// directory, before the node is used.
+    void setDataRoots(std::shared_ptr<const DataRoots> roots) { mDataRoots = std::move(roots); }
+
+    /// @brief resolvedPath(fileName), when it lies inside the data roots: the path a node opens.
+    /// @throws IoError as DataRoots::check(), `what` naming the file ("file", "colour map").
+    std::string readablePath(const std::string& fileName, const std::string& what) const {
+        std::string path = resolvedPath(fileName);
+        if (mDataRoots)
+            mDataRoots->check(path, what);
+        return path;
+    }
+
 protected:
     RelativeFileNames() = default;
     RelativeFileNames(const RelativeFileNames&) = default;
@@ -44,6 +66,7 @@ protected:
 
 private:
     std::string mBaseDirectory;
+    std::shared_ptr<const DataRoots> mDataRoots;
 };
 
 } // namespace texsplat::sg

@@ -2,6 +2,7 @@
 
 #include "scenegraph/Error.h"
 #include "scenegraph/InputFile.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/io/detail/SceneLexer.h"
 #include "scenegraph/io/detail/SceneParser.h"
@@ -10,7 +11,8 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
+#include <iterator>
+#include <string>
 
 namespace texsplat::sg {
 
@@ -22,10 +24,7 @@ constexpr std::size_t kHeaderProbeBytes = 256;
 
 } // namespace
 
-std::shared_ptr<Node> SceneReader::readFile(const std::string& path) {
-    if (std::filesystem::is_directory(path)) {
-        throw IoError(path + ": cannot read scene file: it is a directory");
-    }
+std::shared_ptr<Node> SceneReader::readFile(const std::string& path, const ReadOptions& options) {
     requireRegularFile(path, "scene file");
     std::ifstream file(path, std::ios::binary);
     if (!file) {
@@ -37,10 +36,23 @@ std::shared_ptr<Node> SceneReader::readFile(const std::string& path) {
     file.read(start.data(), static_cast<std::streamsize>(start.size()));
     start.resize(static_cast<std::size_t>(file.gcount()));
     detail::SceneLexer(start, path).readHeader();
-    std::ostringstream contents;
-    contents << start;
+    // The rest read straight into one string: a stream of the contents and its copy held the
+    // text three times over.
+    std::string text = std::move(start);
     if (!file.eof()) {
-        contents << file.rdbuf();
+        std::error_code sizeError;
+        const std::uintmax_t size = std::filesystem::file_size(path, sizeError);
+        if (!sizeError && size > text.size()) {
+            checkMemory(path + ": the scene file's text", size,
+                        "use a smaller scene file, or a larger --memory-limit");
+            const std::size_t read = text.size();
+            text.resize(static_cast<std::size_t>(size));
+            file.read(text.data() + read, static_cast<std::streamsize>(size - read));
+            text.resize(read + static_cast<std::size_t>(file.gcount()));
+        }
+        if (file) { // what a file that grew since holds more, or all when its size is unknown
+            text.append(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>());
+        }
     }
     if (file.bad()) {
         throw IoError(path + ": cannot read scene file");
@@ -48,13 +60,14 @@ std::shared_ptr<Node> SceneReader::readFile(const std::string& path) {
     // Relative file names in the scene (VolumeData's fileName) mean files beside it.
     std::error_code error;
     const std::filesystem::path absolute = std::filesystem::absolute(path, error);
-    const std::string text = contents.str(); // the parser views it
-    detail::SceneParser parser(text, path, error ? std::string() : absolute.parent_path().string());
+    detail::SceneParser parser(text, path, error ? std::string() : absolute.parent_path().string(),
+                               options.dataRoots);
     return parser.parseFile();
 }
 
-std::shared_ptr<Node> SceneReader::readString(std::string_view text, const std::string& fileName) {
-    detail::SceneParser parser(text, fileName);
+std::shared_ptr<Node> SceneReader::readString(std::string_view text, const std::string& fileName,
+                                              const ReadOptions& options) {
+    detail::SceneParser parser(text, fileName, {}, options.dataRoots);
     return parser.parseFile();
 }
 

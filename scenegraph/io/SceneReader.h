@@ -1,6 +1,7 @@
 #pragma once
 
 #include "scenegraph/Fwd.h"
+#include "scenegraph/io/DataRoots.h"
 
 #include <memory>
 #include <string>
@@ -24,15 +25,25 @@ namespace texsplat::sg {
 /// returned then. A file with several top-level nodes is read as a Separator holding them.
 class SceneReader {
 public:
+    /// @brief How a scene is read.
+    struct ReadOptions {
+        /// @brief The folders every file the scene's nodes read must lie in (docs/security.md):
+        /// given to each node that reads files (RelativeFileNames::setDataRoots()). Null: any
+        /// file its user can read, as a scene file one wrote oneself may.
+        std::shared_ptr<const DataRoots> dataRoots;
+    };
+
     /// @brief Reads the file at `path`. Throws IoError when it cannot be read, ParseError when
     /// its content is not a valid scene. Nodes that read files (RelativeFileNames) resolve
     /// relative names against the folder of `path`.
-    static std::shared_ptr<Node> readFile(const std::string& path);
+    static std::shared_ptr<Node> readFile(const std::string& path,
+                                          const ReadOptions& options = {});
 
     /// @brief Reads scene text; `fileName` names it in messages. Relative file names in the
     /// scene stay relative to the working directory.
     static std::shared_ptr<Node> readString(std::string_view text,
-                                            const std::string& fileName = "<string>");
+                                            const std::string& fileName = "<string>",
+                                            const ReadOptions& options = {});
 };
 
 } // namespace texsplat::sg

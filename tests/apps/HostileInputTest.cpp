@@ -15,16 +15,18 @@ namespace {
 // frame must see, and errors found after parsing, which must point into the scene file.
 class HostileInputTest : public texsplat::test::ScratchDirectoryTest {
 protected:
-    // An all-zero (all transparent) 64^3 uint8 raw volume as texture splats, in a scene file.
-    std::string writeZeroVolumeScene() const {
+    // A 64^3 uint8 raw volume of `value` everywhere as texture splats, in a scene file: 0 is
+    // all transparent under its transfer function, 255 all opaque.
+    std::string writeVolumeScene(char value = '\0') const {
         const std::string raw = write("zero.raw", "texsplat-raw 1\ndims 64 64 64\ntype uint8\n"
                                                   "data\n" +
-                                                      std::string(64 * 64 * 64, '\0'));
+                                                      std::string(64 * 64 * 64, value));
         return write("zero.iv", "#Inventor V2.1 ascii\nSeparator {\n"
                                 "TransferFunction { preset HOT range 0 1 }\n"
                                 "VolumeData { source FILE_RAW fileName \"" +
                                     raw + "\" }\nTextureSplat { }\n}\n");
     }
+    std::string writeZeroVolumeScene() const { return writeVolumeScene(); }
 
     // Expects a failure with exactly `message` and no image left behind.
     void expectError(const std::string& arguments, const std::string& message) const {
@@ -36,17 +38,23 @@ protected:
 };
 
 TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
-    // The grid (1 MiB of floats) fits; classification (16 bytes a voxel) and the splats (every
-    // voxel may be one) would not. Before the estimate, a 1200^3 grid of zeros passed the grid's
-    // check and died of std::bad_alloc in classification, as "internal error".
+    // The grid (1 MiB of floats) fits; the splats of its opaque voxels (84 bytes each) would not.
+    // Before the estimate, a 1200^3 grid of zeros passed the grid's check and died of
+    // std::bad_alloc in classification, as "internal error".
+    const std::string opaque = writeVolumeScene('\xff');
+    expectError(opaque + " --memory-limit 8M",
+                opaque + ":5:1: TextureSplat: classifying and splatting 64x64x64 voxels would "
+                         "need 26243072 bytes (25 MiB), more than the memory limit of 8388608 "
+                         "bytes (8 MiB); the classified grid takes 4.03 MiB, the octree 0 KiB, the "
+                         "splats 21 MiB; use a volume of lower resolution, a splat budget "
+                         "(maxSplats, or --max-splats) to bound the splats, or a larger "
+                         "--memory-limit");
+    // The classified grid is asked before classifying, as if every voxel were visible.
     const std::string scene = writeZeroVolumeScene();
-    expectError(scene + " --memory-limit 8M",
-                scene + ":5:1: TextureSplat: classifying and splatting 64x64x64 voxels would "
-                        "need 26243072 bytes (25 MiB), more than the memory limit of 8388608 "
-                        "bytes (8 MiB); the classified grid takes 4.03 MiB, the octree 0 KiB, the "
-                        "splats 21 MiB; use a volume of lower resolution, a splat budget "
-                        "(maxSplats, or --max-splats) to bound the splats, or a larger "
-                        "--memory-limit");
+    expectError(scene + " --memory-limit 2M --size 64x64",
+                scene + ":5:1: TextureSplat: classifying 64x64x64 voxels would need 4222976 "
+                        "bytes (4.03 MiB), more than the memory limit of 2097152 bytes (2 MiB); "
+                        "use a volume of lower resolution or a larger --memory-limit");
     // The volume readers ask the same limit before they allocate the grid.
     expectError(scene + " --memory-limit 512K",
                 scene + ":4:1: VolumeData: " + path("zero.raw") + ": a grid of 64 x 64 x 64 "
@@ -60,10 +68,18 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
                         "of 2097152 bytes (2 MiB); use a volume of lower resolution or a larger "
                         "--memory-limit");
     // A splat budget bounds the splats: the same frame fits.
-    const auto budget = runTexsplat("render " + scene + " --memory-limit 8M --max-splats 1000 -o " +
-                                    path("out.png"));
+    const auto budget = runTexsplat("render " + opaque +
+                                    " --memory-limit 8M --max-splats 1000 -o " + path("out.png"));
     EXPECT_EQ(budget.exitCode, 0) << budget.standardError;
     EXPECT_TRUE(fs::exists(path("out.png")));
+}
+
+// The frame was estimated as if every voxel were visible (24 times too much for a cloud that
+// fills a twentieth of its box): transparent voxels make no splat, counted once classified.
+TEST_F(HostileInputTest, aMostlyTransparentVolumeIsEstimatedByTheVoxelsItShows) {
+    const std::string scene = writeZeroVolumeScene();
+    const auto result = runTexsplat("render " + scene + " --memory-limit 8M -o " + path("out.png"));
+    EXPECT_EQ(result.exitCode, 0) << result.standardError;
 }
 
 TEST_F(HostileInputTest, anImageAboveTheMemoryLimitIsRefusedBeforeRendering) {
@@ -228,4 +244,56 @@ TEST_F(HostileInputTest, aVoxelSizeTooLargeToDrawIsBlamedOnTheVolume) {
     expectError(huge, huge + ": cannot frame the scene: its bounding box reaches 1.1428572e+30, "
                              "beyond 1e+18, the largest coordinate texsplat draws in single "
                              "precision (a Transform that scales too much?)");
+}
+
+// Issue 31's hostile inputs that the command line meets as a whole.
+TEST_F(HostileInputTest, aHeightAngleOutsideZeroToPiIsRefusedNotWrapped) {
+    // The zoom's tan() wrapped 7 radians into 0.72, silently.
+    const std::string scene =
+        write("h7.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                       "  PerspectiveCamera { position 0 0 20 heightAngle 7 }\n"
+                       "TransferFunction { preset HOT range 0 1 }\n"
+                       "VolumeData { source BLOB resolution 8 8 8 }\n"
+                       "TextureSplat { }\n}\n");
+    expectError(scene, scene + ":3:3: PerspectiveCamera: heightAngle must lie strictly between 0 "
+                               "and pi radians, got 7");
+}
+
+TEST_F(HostileInputTest, aLoopOfSymbolicLinksAsTheSceneIsAnErrorNotAnInternalError) {
+    const std::string first = path("loop1.iv");
+    fs::create_symlink(path("loop2.iv"), first);
+    fs::create_symlink(first, path("loop2.iv"));
+    expectError(first, first + ": cannot read scene file: Too many levels of symbolic links");
+}
+
+TEST_F(HostileInputTest, theColourBarsRefusalsNameTheNodesLine) {
+    // The legend checks the transfer function outside a traversal: its refusal named no line.
+    const std::string scene =
+        write("percentile.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                               "  TransferFunction { rangeMode PERCENTILE percentiles 50 20 }\n"
+                               "VolumeData { source BLOB resolution 8 8 8 }\n"
+                               "TextureSplat { }\n}\n");
+    expectError(scene + " --colorbar",
+                scene + ":3:3: TransferFunction: percentiles must satisfy 0 <= percentiles[0] < "
+                        "percentiles[1] <= 100, got 50 20");
+}
+
+TEST_F(HostileInputTest, aFailingFrameOfAnAnimationIsNamed) {
+    // errorThreshold follows the clock backwards: frame 1 (t = 0) draws, frame 2 is refused.
+    const std::string scene =
+        write("frames.iv", "#Inventor V2.1 ascii\nSeparator {\n"
+                           "TransferFunction { preset HOT range 0 1 }\n"
+                           "VolumeData { source BLOB resolution 8 8 8 }\n"
+                           "TextureSplat { errorThreshold = ElapsedTime { speed -1 } . timeOut }\n"
+                           "}\n");
+    const auto result = runTexsplat("render " + scene + " --frames 3 --fps 1 --size 16x16 -o " +
+                                    path("f%d.png"));
+    EXPECT_EQ(result.exitCode, 1);
+    EXPECT_NE(result.standardError.find(
+                  "texsplat: error: frame 2/3 (t = 1 s): " + path("f1.png") + ": " + scene +
+                  ":5:1: TextureSplat: errorThreshold must be"),
+              std::string::npos)
+        << result.standardError;
+    EXPECT_TRUE(fs::exists(path("f0.png")));
+    EXPECT_FALSE(fs::exists(path("f1.png")));
 }

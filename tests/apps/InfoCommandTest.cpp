@@ -158,8 +158,93 @@ TEST_F(InfoCommandTest, aHeaderlessRawFileGetsTheFormatNamedNotItsBytes) {
     EXPECT_EQ(output.standardError,
               "texsplat: error: " + path +
                   ":1:1: expected 'texsplat-raw 1' on the first line, found binary data (a "
-                  "headerless raw file? describe it in the scene: VolumeData source "
-                  "FILE_RAW_HEADERLESS)\n");
+                  "headerless raw file? give its layout: texsplat info FILE --dims X,Y,Z --type "
+                  "TYPE, or in a scene VolumeData source FILE_RAW_HEADERLESS)\n");
+}
+
+// `texsplat info ct.raw --dims 256,256,180 --type uint8`: a headerless raw file described from
+// the layout given on the command line, with the VolumeData that reads it.
+TEST_F(InfoCommandTest, describesAHeaderlessRawFileFromTheLayoutGiven) {
+    std::string bytes(2, '\0'); // two bytes of another program's header
+    for (int value = 0; value < 24; ++value)
+        bytes += static_cast<char>(value);
+    const std::string path = write("ct.raw", bytes);
+    const auto output =
+        runTexsplat("info " + path + " --dims 4,3,2 --type uint8 --header-bytes 2");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    const std::string text = output.standardOutput;
+    EXPECT_EQ(text.substr(0, text.find("  histogram")),
+              path + ": headerless raw, uint8, little endian, after 2 header bytes\n"
+                     "  values        scalar\n"
+                     "  dimensions    4 x 3 x 2 voxels (x, y, z)\n"
+                     "  voxel size    1 x 1 x 1\n"
+                     "  bounding box  (-0.5, -0.5, -0.5) .. (3.5, 2.5, 1.5)\n"
+                     "  active voxels 24 of 24\n"
+                     "  value range   0 .. 23\n");
+    EXPECT_NE(text.find("  scene         VolumeData { source FILE_RAW_HEADERLESS fileName \"" +
+                        path + "\" dimensions 4 3 2 dataType UINT8 headerBytes 2 }\n"),
+              std::string::npos)
+        << text;
+
+    const auto mismatch = runTexsplat("info " + path + " --dims 4,3,3 --type uint8");
+    EXPECT_EQ(mismatch.exitCode, 1);
+    EXPECT_EQ(mismatch.standardError,
+              "texsplat: error: " + path +
+                  ": file size mismatch: the scene describes 4 x 3 x 3 voxels x 1 component x 1 "
+                  "bytes (uint8) = 36 bytes, plus 0 header bytes = 36 bytes, but the file has 26 "
+                  "bytes\n");
+    const auto bad = [&](const std::string& options, const std::string& message) {
+        const auto result = runTexsplat("info " + path + " " + options);
+        EXPECT_EQ(result.exitCode, 1) << options;
+        EXPECT_EQ(result.standardError, "texsplat: error: " + message + "\n") << options;
+    };
+    bad("--type uint8", "--type: only with --dims, for a headerless raw file (other files say "
+                        "their own layout)");
+    bad("--dims 4,3", "--dims: expected X,Y,Z (voxels along x, y and z, x fastest in the file), "
+                      "got '4,3'");
+    bad("--dims 4,0,2", "--dims: expected X,Y,Z of whole numbers from 1 to 1e9, got '4,0,2'");
+    bad("--dims 4,3,2 --type int64", "--type: expected uint8, int8, uint16, int16, uint32, int32, "
+                                     "float32 or float64, got 'int64'");
+    bad("--dims 4,3,2 --components 2", "--components: expected 1 or 3, got '2'");
+}
+
+// The values are streamed from the file, never held as a grid: a 128³ file of bytes (8 MiB as a
+// float grid, what `info` allocated before) is described under a limit of 4 MiB.
+TEST_F(InfoCommandTest, streamsTheValuesWithinTheMemoryLimit) {
+    const std::string path =
+        write("big.raw", "texsplat-raw 1\ndims 128 128 128\ntype uint8\ndata\n" +
+                             std::string(128 * 128 * 128, '\x07'));
+    const auto output = runTexsplat("info " + path + " --memory-limit 4M");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_NE(output.standardOutput.find("  active voxels 2097152 of 2097152\n"
+                                         "  value range   7 .. 7\n"),
+              std::string::npos)
+        << output.standardOutput;
+    const auto bad = runTexsplat("info " + path + " --memory-limit lots");
+    EXPECT_EQ(bad.standardError, "texsplat: error: --memory-limit: expected a byte count such as "
+                                 "512M or 8G, got 'lots'\n");
+}
+
+// `--scene` prints a scene that draws the data file, which reads back as a scene.
+TEST_F(InfoCommandTest, printsASceneThatDrawsADataFile) {
+    const std::string path =
+        write("ramp.raw", "texsplat-raw 1\ndims 4 3 2\ntype float32\ndata\n" + floatRamp(24));
+    const auto output = runTexsplat("info " + path + " --scene");
+    EXPECT_EQ(output.exitCode, 0) << output.standardError;
+    EXPECT_EQ(output.standardOutput.rfind("#Inventor V2.1 ascii\n", 0), 0u);
+    EXPECT_NE(output.standardOutput.find("    VolumeData { source FILE_RAW fileName \"" + path +
+                                         "\" }\n"),
+              std::string::npos)
+        << output.standardOutput;
+    const std::string scene = write("ramp.iv", output.standardOutput);
+    const auto read = runTexsplat("info " + scene);
+    EXPECT_EQ(read.exitCode, 0) << read.standardError;
+    EXPECT_NE(read.standardOutput.find("TextureSplat"), std::string::npos);
+    const auto notData = runTexsplat("info " + scene + " --scene");
+    EXPECT_EQ(notData.standardError,
+              "texsplat: error: --scene: " + scene +
+                  " is not a data file texsplat reads (texsplat-raw, .npy, NRRD, NetCDF, .vdb, or "
+                  "headerless raw with --dims)\n");
 }
 
 TEST_F(InfoCommandTest, aBrokenDataFileGetsTheReadersMessage) {

@@ -118,6 +118,18 @@ TEST(ColorMap, badJsonIsLocated) {
                               "unexpected end of input; expected '[', '{', or a literal");
 }
 
+TEST(ColorMap, jsonNestedAMillionDeepIsRefusedBeforeItIsParsed) {
+    // Copying the parsed document recursed once a level: a stack overflow (100 000 levels
+    // with a 4 MB stack). The depth is counted before nlohmann sees the text.
+    const std::string deep = "[{\"RGBPoints\": " + std::string(1000000, '[') + "]}]";
+    EXPECT_EQ(parseError(deep), "map.json:1:270: JSON objects and arrays nested deeper than the "
+                                "limit of 256 levels");
+    // As deep as the limit, the text is parsed (and found to be no colour map).
+    const std::string limit = std::string(256, '[') + std::string(256, ']');
+    EXPECT_EQ(parseError(limit), "map.json: expected a ParaView colour map, a list of objects with "
+                                 "\"RGBPoints\", got array");
+}
+
 TEST(ColorMap, jsonThatIsNoColorMapIsNamed) {
     EXPECT_EQ(parseError("42"), "map.json: expected a ParaView colour map, a list of objects with "
                                 "\"RGBPoints\", got number");

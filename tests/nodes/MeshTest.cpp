@@ -216,6 +216,27 @@ TEST(Mesh, readsABufferInTheFolderAboveTheGltfs) {
     mesh->fileName = writeFile("models/above.gltf", text);
     EXPECT_EQ(mesh->triangleMesh()->positions,
               (std::vector<glm::vec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}));
+
+    // Confined to the models' folder (`--data-root`), the buffer above it is refused before it is
+    // read, and so is a glTF outside it; the folder's own files are read.
+    const auto roots = std::make_shared<const sg::DataRoots>(
+        std::vector<std::string>{std::filesystem::canonical(testPath("models")).string()});
+    mesh->setDataRoots(roots);
+    mesh->touch();
+    const std::string real = std::filesystem::canonical(buffer).string();
+    EXPECT_EQ(errorOf<IoError>([&] { mesh->triangleMesh(); }),
+              "Mesh: " + testPath("models/above.gltf") + ": " + testPath("models") + "/../" +
+                  std::filesystem::path(buffer).filename().string() +
+                  ": cannot read glTF buffer: it lies outside the data roots (" +
+                  roots->folders().front() + ") (it leads to " + real +
+                  "), which --data-root confines the files a scene reads to");
+    const auto outside = Mesh::create();
+    outside->setDataRoots(roots);
+    outside->fileName = writeFile("outside.gltf", text);
+    EXPECT_EQ(errorOf<IoError>([&] { outside->triangleMesh(); }).rfind(
+                  "Mesh: " + testPath("outside.gltf") + ": cannot read glTF file: it lies outside "
+                  "the data roots", 0),
+              0u);
 }
 
 } // namespace

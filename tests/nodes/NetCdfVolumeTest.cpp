@@ -6,6 +6,7 @@
 #include "nodes/VolumeData.h"
 #include "nodes/volume/VolumeFileInfo.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/Log.h"
 #include "scenegraph/MemoryLimit.h"
 #include "scenegraph/WorkProgress.h"
 #include "scenegraph/io/SceneReader.h"
@@ -328,6 +329,158 @@ TEST(NetCdfVolume, aGlobalHeapThatHdf5WouldReadForeverIsRefused) {
               damaged + ": truncated or corrupt NetCDF file: the HDF5 global heap at byte " +
                   std::to_string(collection) + " has a free-space object of 0 bytes at byte " +
                   std::to_string(object) + ", which HDF5 1.10 reads forever");
+}
+
+// Winds and clouds of one climate file: u, v and w on pressure levels (decreasing) and latitudes
+// from north to south (decreasing), as ERA5 and most reanalyses store them.
+const char* const kClimate = R"(netcdf climate {
+dimensions:
+    level = 3 ; latitude = 2 ; longitude = 4 ;
+variables:
+    float level(level) ;
+    float latitude(latitude) ;
+    float longitude(longitude) ;
+    float u(level, latitude, longitude) ;
+    float v(level, latitude, longitude) ;
+    float w(level, latitude, longitude) ;
+    float cc(level, latitude, longitude) ;
+    float flat(latitude, longitude) ;
+data:
+    level = 1000, 850, 700 ;
+    latitude = 60, 50 ;
+    longitude = -120, -119.5, -119, -118.5 ;
+    u = 0, 1, 2, 3, 10, 11, 12, 13, 100, 101, 102, 103, 110, 111, 112, 113,
+        200, 201, 202, 203, 210, 211, 212, 213 ;
+    v = 0, -1, -2, -3, -10, -11, -12, -13, -100, -101, -102, -103, -110, -111, -112, -113,
+        -200, -201, -202, -203, -210, -211, -212, -213 ;
+    w = 1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 2, 2, 2, 2, 2, 2, 3, 3, 3, 3, 3, 3, 3, 3 ;
+    cc = 0, 1, 2, 3, 10, 11, 12, 13, 100, 101, 102, 103, 110, 111, 112, 113,
+         200, 201, 202, 203, 210, 211, 212, 213 ;
+    flat = 1, 2, 3, 4, 5, 6, 7, 8 ;
+}
+)";
+
+// The value the file stores at (longitude, latitude, level) index (i, j, k) of u and cc.
+float climateValue(int i, int j, int k) { return float(i + 10 * j + 100 * k); }
+
+// The decreasing levels and latitudes run from their other end: voxel (0, 0, 0) is the file's
+// last latitude and last level, the smallest coordinates. It was indexed 0, 1, 2 with a warning
+// ("not evenly spaced and increasing"): winds and clouds lost their place in the world.
+TEST(NetCdfVolume, decreasingEvenlySpacedCoordinatesRunTheirAxisFromTheOtherEnd) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("climate", kClimate);
+    std::vector<std::string> logged;
+    const LogSink previous = setLogSink(
+        [&](LogLevel, std::string_view message) { logged.emplace_back(message); });
+    const auto clouds = std::get<ScalarGridPtr>(readNetCdfVariable(path, "cc"));
+    setLogSink(previous);
+    EXPECT_TRUE(logged.empty()) << logged.front();
+    EXPECT_EQ(clouds->geometry(),
+              GridGeometry({4, 2, 3}, {-120.0, 50.0, 700.0}, {0.5, 10.0, 150.0}));
+    for (int k = 0; k < 3; ++k)
+        for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 4; ++i)
+                ASSERT_EQ(clouds->value({i, j, k}), climateValue(i, 1 - j, 2 - k))
+                    << i << " " << j << " " << k;
+}
+
+// Uneven levels index their axis, with one warning, also when info streams the variable twice.
+TEST(NetCdfVolume, anUnevenCoordinateIndexesItsAxisWithOneWarning) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("uneven", R"(netcdf uneven {
+dimensions:
+    level = 3 ; y = 1 ; x = 2 ;
+variables:
+    float level(level) ;
+    float t(level, y, x) ;
+data:
+    level = 1000, 850, 500 ;
+    t = 1, 2, 3, 4, 5, 6 ;
+}
+)");
+    std::vector<std::string> logged;
+    const LogSink previous = setLogSink(
+        [&](LogLevel, std::string_view message) { logged.emplace_back(message); });
+    const std::string info = describeVolumeFile(path);
+    setLogSink(previous);
+    EXPECT_EQ(logged, std::vector<std::string>{path + ": variable 't': coordinate 'level' is not "
+                                                      "evenly spaced; its axis (z) is indexed 0, "
+                                                      "1, 2, ..."});
+    EXPECT_NE(info.find("  voxel size    1 x 1 x 1\n"), std::string::npos) << info;
+}
+
+// `gridName "u v w"`: vectors from three variables, in the clouds' place (the docs' climate example
+// needed a Python conversion to a vector .npy, which lost the coordinates).
+TEST(NetCdfVolume, threeVariablesNamedTogetherAreTheComponentsOfVectors) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("climate", kClimate);
+    const auto winds = std::get<VectorGridPtr>(readNetCdfVariable(path, "u v w"));
+    const auto clouds = std::get<ScalarGridPtr>(readNetCdfVariable(path, "cc"));
+    EXPECT_EQ(winds->geometry(), clouds->geometry());
+    EXPECT_EQ(winds->value({3, 0, 0}), glm::vec3(213.0f, -213.0f, 3.0f));
+    EXPECT_EQ(winds->value({1, 1, 2}), glm::vec3(1.0f, -1.0f, 1.0f));
+
+    nodes::registerNodeTypes();
+    const sg::Node::Ptr root = sg::SceneReader::readString(
+        "#Inventor V2.1 ascii\nVolumeData { source FILE_NETCDF fileName \"" + path +
+        "\" gridName \"u v w\" }\n");
+    const auto& volume = static_cast<const nodes::VolumeData&>(*root);
+    ASSERT_NE(volume.vectorGrid(), nullptr);
+    EXPECT_EQ(volume.vectorGrid()->value({3, 0, 0}), glm::vec3(213.0f, -213.0f, 3.0f));
+
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "u v"); }),
+              path + ": 'u v' names 2 variables; vectors take three, their x, y and z "
+                     "components ('u v w')");
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "u v q"); }),
+              path + ": no variable named 'q' (of the vector 'u v q'); the file has: float "
+                     "u(level=3, latitude=2, longitude=4), float v(level=3, latitude=2, "
+                     "longitude=4), float w(level=3, latitude=2, longitude=4), float cc(level=3, "
+                     "latitude=2, longitude=4), float flat(latitude=2, longitude=4)");
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "u v flat"); }),
+              path + ": variable 'flat' has 2 dimensions (float flat(latitude=2, longitude=4)); "
+                     "texsplat reads 3-D variables (z, y, x) and 4-D ones (time, z, y, x)");
+}
+
+TEST(NetCdfVolume, theComponentsOfVectorsMustHaveTheSameDimensions) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("mismatch", R"(netcdf mismatch {
+dimensions:
+    z = 1 ; y = 1 ; x = 2 ; x2 = 2 ;
+variables:
+    float u(z, y, x) ; float v(z, y, x) ; float w(z, y, x2) ;
+}
+)");
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "u v w"); }),
+              path + ": variables 'u', 'v', 'w': the components of vectors must have the same "
+                     "dimensions, but float u(z=1, y=1, x=2) and float w(z=1, y=1, x2=2) differ");
+}
+
+// A NetCDF-4 file of 8 KB declares a variable of 4 GB in chunks never written: HDF5 reads them
+// as fill values, which `texsplat info` allocated and converted (25.7 s, 3.97 GB) before "all
+// voxels are NaN". What the file can hold is checked first.
+TEST(NetCdfVolume, aNetCdf4VariableLargerThanItsFileCouldHoldIsRefusedBeforeReading) {
+    REQUIRE_NCGEN();
+    const std::string path = generate("fill", R"(netcdf fill {
+dimensions:
+    z = 1000 ; y = 1000 ; x = 1000 ;
+variables:
+    float v(z, y, x) ;
+        v:_ChunkSizes = 100, 100, 100 ;
+}
+)", "nc4");
+    const auto bytes = std::filesystem::file_size(path);
+    ASSERT_LT(bytes, 100000u);
+    const std::string expected =
+        path + ": variable 'v': a step of 1000 x 1000 x 1000 values of 4 bytes (4000000000 "
+               "bytes) cannot come from a file of " +
+        std::to_string(bytes) + " bytes, which uncompressed holds at most " +
+        std::to_string(bytes) +
+        " bytes of values: the rest would be fill values, never written (empty voxels)";
+    const std::uint64_t previous = setMemoryLimit(std::uint64_t{64} << 30);
+    EXPECT_EQ(errorOf<DataError>([&] { readNetCdfVariable(path, "v"); }), expected);
+    // info streams the values and needs no memory for the grid, but asks the same.
+    EXPECT_EQ(errorOf<DataError>([&] { describeVolumeFile(path); }), expected);
+    setMemoryLimit(previous);
 }
 
 TEST(NetCdfVolume, isASourceOfVolumeDataAndOfInfo) {

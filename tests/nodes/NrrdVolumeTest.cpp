@@ -15,6 +15,8 @@
 
 #include <gtest/gtest.h>
 
+#include <zlib.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
@@ -261,20 +263,45 @@ TEST(NrrdVolume, refusesTruncatedData) {
         << error;
 }
 
-// A few bytes of gzip can declare any size: the grid is checked against memory before anything
-// is allocated or decompressed.
+// zlib's compression of `bytes` zeros: what unu writes for an empty volume, a few bytes a MiB.
+std::string compressedZeros(std::size_t bytes) {
+    const std::string zeros(bytes, '\0');
+    uLongf size = compressBound(static_cast<uLong>(bytes));
+    std::string packed(size, '\0');
+    EXPECT_EQ(compress2(reinterpret_cast<Bytef*>(packed.data()), &size,
+                        reinterpret_cast<const Bytef*>(zeros.data()), static_cast<uLong>(bytes), 9),
+                        Z_OK);
+    packed.resize(size);
+    return packed;
+}
+
+// A few bytes of gzip can declare any size. A 1 MB file declaring 3.8 GB was allocated (the
+// machine had the memory) and inflated to its end; deflate expands a byte into at most 1032, so
+// what the data can hold is checked before anything is allocated or decompressed.
 TEST(NrrdVolume, refusesAGzipBombBeforeAllocatingForIt) {
-    const std::string path = writeFile(testPath("bomb.nrrd"),
-                                       "NRRD0004\ntype: float\ndimension: 3\n"
-                                       "sizes: 100000 100000 100000\nendian: little\n"
-                                       "encoding: gzip\n\n");
-    const std::uint64_t bytes = std::uint64_t{100000} * 100000 * 100000 * sizeof(float);
-    ASSERT_GT(bytes, memoryLimit()) << "this machine could hold the grid";
-    EXPECT_EQ(errorOf<ResourceError>([&] { readNrrdVolume(path); }),
-              path + ": a grid of 100000 x 100000 x 100000 voxels x 1 float would need " +
-                  bytesText(bytes) + ", more than the memory limit of " +
-                  bytesText(memoryLimit()) +
-                  "; use a volume of lower resolution, or a larger --memory-limit");
+    const std::string header = "NRRD0004\ntype: float\ndimension: 3\nsizes: 1000 1000 1000\n"
+                               "endian: little\nencoding: gzip\n\n";
+    const std::string data = compressedZeros(std::size_t{1} << 20);
+    const std::string path = writeFile(testPath("bomb.nrrd"), header + data);
+    EXPECT_EQ(errorOf<DataError>([&] { readNrrdVolume(path); }),
+              path + ": truncated data: the header's sizes 1000 1000 1000 of type 'float' ask for "
+                     "4000000000 bytes, but its " +
+                  std::to_string(data.size()) + " bytes of gzip data hold at most " +
+                  std::to_string(data.size() * 1032 + 258) +
+                  " (deflate expands at most 1032 to 1)");
+    // Data that could hold the grid: then the memory limit is asked, before allocating.
+    const std::string fits = writeFile(testPath("fits.nrrd"),
+                                       "NRRD0004\ntype: float\ndimension: 3\nsizes: 64 64 64\n"
+                                       "endian: little\nencoding: gzip\n\n" +
+                                           compressedZeros(std::size_t{1} << 20));
+    const std::uint64_t previous = setMemoryLimit(std::uint64_t{512} << 10);
+    const std::string error = errorOf<ResourceError>([&] { readNrrdVolume(fits); });
+    setMemoryLimit(previous);
+    EXPECT_EQ(error, fits + ": a grid of 64 x 64 x 64 voxels x 1 float would need " +
+                         bytesText(std::uint64_t{1} << 20) + ", more than the memory limit of " +
+                         bytesText(std::uint64_t{512} << 10) +
+                         "; use a volume of lower resolution, or a larger --memory-limit");
+    EXPECT_EQ(std::get<ScalarGridPtr>(readNrrdVolume(fits))->value({63, 63, 63}), 0.0f);
 }
 
 TEST(NrrdVolume, aFileThatIsNotNrrdGetsTheFormatNamed) {

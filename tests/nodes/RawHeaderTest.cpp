@@ -82,8 +82,8 @@ TEST(RawHeader, defaultsAndFormatRoundTrip) {
 TEST(RawHeader, binaryDataIsNamedNotPrinted) {
     EXPECT_EQ(errorOf(std::string("\x01\x02\xff\xfe\x00\x80 junk\n", 12)),
               "ParseError: grid.raw:1:1: expected 'texsplat-raw 1' on the first line, found "
-              "binary data (a headerless raw file? describe it in the scene: VolumeData source "
-              "FILE_RAW_HEADERLESS)");
+              "binary data (a headerless raw file? give its layout: texsplat info FILE --dims "
+              "X,Y,Z --type TYPE, or in a scene VolumeData source FILE_RAW_HEADERLESS)");
     EXPECT_EQ(errorOf(std::string(2000, '\x07')),
               "ParseError: grid.raw:1:1: header line longer than 1024 characters; is this a "
               "texsplat-raw file?");

@@ -386,8 +386,8 @@ TEST(VolumeData, readsAHeaderlessRawFileAsTheSceneDescribesIt) {
     volume.source.setValue(VolumeSource::FileRaw);
     EXPECT_EQ(errorOf<ParseError>([&] { volume.scalarGrid(); }),
               "VolumeData 'ct': " + path + ":1:1: expected 'texsplat-raw 1' on the first line, "
-              "found binary data (a headerless raw file? describe it in the scene: VolumeData "
-              "source FILE_RAW_HEADERLESS)");
+              "found binary data (a headerless raw file? give its layout: texsplat info FILE "
+              "--dims X,Y,Z --type TYPE, or in a scene VolumeData source FILE_RAW_HEADERLESS)");
 }
 
 TEST(VolumeData, readsANumpyFile) {
@@ -410,6 +410,38 @@ TEST(VolumeData, readsANumpyFile) {
     EXPECT_EQ(grid->geometry().dims(), glm::i64vec3(3, 1, 2));
     EXPECT_EQ(grid->value({2, 0, 0}), 1.0f);
     EXPECT_EQ(grid->value({0, 0, 1}), 1.5f);
+}
+
+// `origin` and `spacing` place any source's voxels (winds from a .npy over clouds from a NetCDF
+// file): the same voxels, read through, not copied; the box and both grids follow.
+TEST(VolumeData, originAndSpacingPlaceAnySourcesVoxels) {
+    const auto tornado = generated(VolumeSource::Tornado, 4.0f);
+    const volume::VectorGridPtr own = tornado->vectorGrid();
+    tornado->origin.setValue({glm::vec3(-140.0f, 15.0f, 0.0f)});
+    tornado->spacing.setValue({glm::vec3(2.0f, 1.0f, 0.5f)});
+    const volume::VectorGridPtr placed = tornado->vectorGrid();
+    EXPECT_EQ(placed->geometry(),
+              volume::GridGeometry({4, 4, 4}, {-140.0, 15.0, 0.0}, {2.0, 1.0, 0.5}));
+    EXPECT_EQ(placed->value({1, 2, 3}), own->value({1, 2, 3}));
+    EXPECT_EQ(tornado->vectorGrid(), placed) << "made once per load: caches key on it";
+    EXPECT_EQ(tornado->scalarGrid()->geometry(), placed->geometry());
+    EXPECT_EQ(tornado->scalarGrid()->value({1, 2, 3}), glm::length(own->value({1, 2, 3})));
+    const sg::Box3 box = tornado->bounds();
+    EXPECT_EQ(box.min(), glm::vec3(-141.0f, 14.5f, -0.25f));
+    EXPECT_EQ(box.max(), glm::vec3(-133.0f, 18.5f, 1.75f));
+    // One of the two: the other stays the source's own.
+    tornado->origin.setValue({});
+    EXPECT_EQ(tornado->scalarGrid()->geometry().origin(), own->geometry().origin());
+    EXPECT_EQ(tornado->scalarGrid()->geometry().spacing(), glm::dvec3(2.0, 1.0, 0.5));
+
+    tornado->spacing.setValue({glm::vec3(1.0f, 0.0f, 1.0f)});
+    EXPECT_EQ(errorOf<DataError>([&] { tornado->scalarGrid(); }),
+              "VolumeData: origin and spacing: grid spacing must be finite and positive, got 1 0 "
+              "1");
+    tornado->spacing.setValue({glm::vec3(1.0f), glm::vec3(2.0f)});
+    EXPECT_EQ(errorOf<DataError>([&] { tornado->vectorGrid(); }),
+              "VolumeData: spacing holds one x y z (or none, for the source's own), got 2 "
+              "values");
 }
 
 TEST(VolumeData, errorsNameTheNodeAndTheSource) {

@@ -152,11 +152,12 @@ TEST(Action, anExponentialDagReadFromAFileIsRefused) {
         action.apply(*root);
         FAIL() << "no error";
     } catch (const DataError& error) {
+        // Located at the node that multiplies the visits (it named no file or line).
         EXPECT_STREQ(error.what(),
-                     "scene graph is too large to traverse: Group(a23) and the nodes under it "
-                     "would be visited 16777215 times (a node shared with DEF/USE is visited "
-                     "once per use), more than the limit of 10000000 (in the graph under "
-                     "Separator)");
+                     "dag.iv:25:9: scene graph is too large to traverse: Group(a23) and the "
+                     "nodes under it would be visited 16777215 times (a node shared with DEF/USE "
+                     "is visited once per use), more than the limit of 10000000 (in the graph "
+                     "under Separator)");
     }
 }
 

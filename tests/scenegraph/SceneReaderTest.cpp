@@ -2,6 +2,7 @@
 
 #include "SceneTestSupport.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/Switch.h"
 #include "scenegraph/io/UnknownNode.h"
@@ -315,6 +316,53 @@ TEST_F(SceneReaderTest, refusesFilesThatAreNotRegularBeforeOpeningThem) {
     const texsplat::test::TestFifo pipe(scratchPath("scene.iv"));
     const std::string& fifo = pipe.path();
     EXPECT_EQ(fileError(fifo), fifo + ": cannot read scene file: it is a FIFO, not a regular file");
+}
+
+TEST_F(SceneReaderTest, aLoopOfSymbolicLinksIsAnIoErrorNamingTheFile) {
+    // std::filesystem threw its own filesystem_error for it: "internal error".
+    const std::string first = scratchPath("loop1.iv");
+    const std::string second = scratchPath("loop2.iv");
+    std::filesystem::create_symlink(second, first);
+    std::filesystem::create_symlink(first, second);
+    EXPECT_EQ(fileError(first),
+              first + ": cannot read scene file: Too many levels of symbolic links");
+    std::filesystem::remove(first);
+    std::filesystem::remove(second);
+}
+
+// A scene of 100 MB of small nodes took 2.6 GB. What the file's nodes hold is counted as they
+// are made and refused, at the line being read, where it passes the memory limit.
+TEST_F(SceneReaderTest, aSceneAboveTheMemoryLimitIsRefusedWhereItPassesIt) {
+    std::string text = "#Inventor V2.1 ascii\nSeparator {\n";
+    for (int i = 0; i < 20000; ++i) {
+        text += "  Group { }\n";
+    }
+    text += "}\n";
+    const std::uint64_t limit = std::uint64_t{1} << 20;
+    const std::uint64_t previous = texsplat::setMemoryLimit(limit);
+    std::string message;
+    try {
+        SceneReader::readString(text, "big.iv");
+    } catch (const texsplat::ResourceError& error) {
+        message = error.what();
+    }
+    texsplat::setMemoryLimit(previous);
+    // Where it stops depends on the nodes' sizes; that it stops inside the file does not.
+    const std::size_t colon = message.find(':', 7);
+    ASSERT_EQ(message.rfind("big.iv:", 0), 0u) << message;
+    const int line = std::stoi(message.substr(7, colon - 7));
+    EXPECT_GT(line, 100);
+    EXPECT_LT(line, 20000);
+    EXPECT_NE(message.find(": the scene read up to here (its text and the nodes made of it) "
+                           "would need "),
+              std::string::npos)
+        << message;
+    EXPECT_NE(message.find(", more than the memory limit of 1048576 bytes (1 MiB); use a smaller "
+                           "scene file, or a larger --memory-limit"),
+              std::string::npos)
+        << message;
+    // Within the limit, the same text is read.
+    EXPECT_EQ(SceneReader::readString(text, "big.iv")->typeName(), "Separator");
 }
 
 TEST_F(SceneReaderTest, checksTheHeaderBeforeReadingAHugeFile) {

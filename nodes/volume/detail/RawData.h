@@ -3,8 +3,11 @@
 #include "nodes/volume/Grid.h"
 #include "nodes/volume/Progress.h"
 #include "nodes/volume/RawHeader.h"
+#include "scenegraph/io/DataRoots.h"
 
 #include <cstddef>
+#include <cstdint>
+#include <functional>
 #include <istream>
 #include <string>
 
@@ -34,6 +37,50 @@ struct FileAxes {
 void decodeValues(RawValueType type, const unsigned char* bytes, std::size_t count,
                   bool swapBytes, float* out);
 
+/// @brief A file's raw values, checked and ready to decode: `in` stands on the first value and
+/// holds exactly the values `layout` describes, stored in `order` (and `axes`).
+struct RawDataView {
+    std::istream& in;
+    const std::string& path;
+    const RawHeader& layout;
+    RawOrder order;
+    FileAxes axes;
+};
+
+/// @brief What is done with a file's raw values once they are checked: read into a grid
+/// (readRawData()) or streamed (readRawValues(), `texsplat info`).
+using RawDataDecoder = std::function<void(const RawDataView& data)>;
+
+/// @brief Receives decoded values chunk by chunk in the file's order: `first` is the number of
+/// values before `values[0]`; `count` is a whole number of voxels (of `components` values).
+using RawValueChunk =
+    std::function<void(std::int64_t first, const float* values, std::int64_t count)>;
+
+/// @brief Decodes the values of `data` chunk by chunk (4 MiB of the file each) into `chunk`,
+/// without holding the grid; `progress` hears "reading" after each chunk.
+/// @throws IoError when reading fails; LoadCancelled when `progress` answered false.
+void readRawValues(const RawDataView& data, const ProgressCallback& progress,
+                   const RawValueChunk& chunk);
+
+/// @brief Opens the texsplat-raw file `path`, checks its header and data size as
+/// readRawVolume() does, and hands the data to `use`.
+void withRawVolumeData(const std::string& path, const RawDataDecoder& use);
+
+/// @brief The same for a headerless raw file laid out as `layout` after `headerBytes` bytes
+/// (readHeaderlessRawVolume()).
+void withHeaderlessRawData(const std::string& path, const RawHeader& layout,
+                           std::int64_t headerBytes, const RawDataDecoder& use);
+
+/// @brief The same for a NumPy .npy file (readNpyVolume()).
+void withNpyData(const std::string& path, const RawDataDecoder& use);
+
+/// @brief The same for a NRRD file (readNrrdVolume()): its attached data, or the detached data
+/// file its header names; gzip data is decompressed as `use` reads it, and checked to end
+/// where the header says after it returns. With `roots`, a detached data file must lie inside
+/// them.
+void withNrrdData(const std::string& path, const RawDataDecoder& use,
+                  const sg::DataRoots* roots = nullptr);
+
 /// @brief Reads the values of the grid `layout` describes (dims, type, components, byte order,
 /// spacing, origin) from `in`, which stands on the first value, into a dense grid; the one decoder
 /// of texsplat-raw, headerless raw, NumPy and NRRD files. `layout.dims` are the grid's; `axes`
@@ -46,5 +93,10 @@ void decodeValues(RawValueType type, const unsigned char* bytes, std::size_t cou
 AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& layout,
                     RawOrder order, const ProgressCallback& progress,
                     const FileAxes& axes = {});
+
+/// @brief The grid readRawData() makes of the data that `with` (withNpyData() and the like, bound
+/// to a file) hands its decoder.
+AnyGrid readRawGrid(const std::function<void(const RawDataDecoder&)>& with,
+                    const ProgressCallback& progress);
 
 } // namespace texsplat::volume::detail

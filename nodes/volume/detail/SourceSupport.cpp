@@ -48,6 +48,10 @@ void checkGridFitsInMemory(const std::string& source, const GridGeometry& geomet
                                   static_cast<std::uint64_t>(components) * sizeof(float)));
 }
 
+std::uint64_t maxDeflatedBytes(std::uint64_t compressedBytes) {
+    return byteSum(byteProduct(compressedBytes, kMaxDeflateRatio), 258);
+}
+
 void checkFiniteVoxels(const std::string& source, const GridStatistics& statistics) {
     if (statistics.nonFiniteCount == 0)
         return;

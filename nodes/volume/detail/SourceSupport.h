@@ -31,6 +31,14 @@ void checkFitsInMemory(const std::string& what, std::uint64_t bytes);
 void checkGridFitsInMemory(const std::string& source, const GridGeometry& geometry,
                            int components);
 
+/// @brief The most bytes deflate (gzip, zlib, NetCDF-4's compression) expands one byte into: its
+/// longest match, 258 bytes, coded in two bits.
+inline constexpr std::uint64_t kMaxDeflateRatio = 1032;
+
+/// @brief The most bytes `compressedBytes` of deflate data can hold (kMaxDeflateRatio times, and
+/// one longest match more for rounding), saturating.
+std::uint64_t maxDeflatedBytes(std::uint64_t compressedBytes);
+
 /// @brief The one check a loader makes of the voxels it read. Logs one warning for empty (NaN or
 /// infinite) voxels, naming the source and the count ("f.raw: 3 voxels are NaN or infinite;
 /// treated as empty"); nothing when there are none.

@@ -9,11 +9,18 @@
 
 #include <glm/glm.hpp>
 
+#include <cstddef>
 #include <cstdint>
 #include <string>
 #include <string_view>
 
 namespace texsplat::sg::detail {
+
+/// @brief The bytes a string holds on the heap: its capacity, or none when it is short enough to
+/// live inside the string object (the small-string buffer).
+inline std::size_t stringHeapBytes(const std::string& value) {
+    return value.capacity() > std::string().capacity() ? value.capacity() + 1 : 0;
+}
 
 struct BoolTraits {
     using Value = bool;

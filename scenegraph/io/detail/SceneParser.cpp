@@ -5,6 +5,7 @@
 #include "scenegraph/EnumNames.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Group.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/NodeRegistry.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/SourceFiles.h"
@@ -38,11 +39,42 @@ bool startsNumber(char c) {
     return std::isdigit(static_cast<unsigned char>(c)) != 0 || c == '-' || c == '+' || c == '.';
 }
 
+// What a node or engine costs besides its instance (NodeType::instanceBytes()), its field list
+// and its fields' values, in resident memory: the shared pointer's count, its parent list, its
+// slot in its parent's child list, malloc's headers and what the heap cannot give back between
+// them. Measured as the resident size per node less its sizeof (docs/reliability.md, "Memory per
+// scene node": Group 383 - 128, Separator 663 - 352, Transform 743 - 400 bytes; a 100 MB file
+// of Transforms, 731 - 400).
+constexpr std::uint64_t kInstanceOverheadBytes = 300;
+
+// The memory limit is asked each time the file's nodes hold this much more: a 100 MB file of
+// small nodes took 2.6 GB, so each check covers about 20 KB of such a file.
+constexpr std::uint64_t kMemoryCheckBytes = std::uint64_t{1} << 20;
+
 } // namespace
 
-SceneParser::SceneParser(std::string_view text, std::string fileName, std::string baseDirectory)
+SceneParser::SceneParser(std::string_view text, std::string fileName, std::string baseDirectory,
+                         std::shared_ptr<const DataRoots> dataRoots)
     : mSourceFile(internSourceFile(fileName)), mLexer(text, std::move(fileName)),
-      mBaseDirectory(std::move(baseDirectory)) {}
+      mBaseDirectory(std::move(baseDirectory)), mDataRoots(std::move(dataRoots)),
+      mHeldBytes(text.size()), mNextMemoryCheck(text.size()) {}
+
+void SceneParser::countHeldBytes(std::uint64_t bytes) {
+    mHeldBytes += bytes;
+    if (mHeldBytes < mNextMemoryCheck) {
+        return;
+    }
+    mNextMemoryCheck = mHeldBytes + kMemoryCheckBytes;
+    const SourceLocation where = mLexer.location();
+    checkMemory(sourceFileName(mSourceFile) + ":" + SceneLexer::format(where) +
+                    ": the scene read up to here (its text and the nodes made of it)",
+                mHeldBytes, "use a smaller scene file, or a larger --memory-limit");
+}
+
+void SceneParser::countInstance(const FieldContainer& container) {
+    countHeldBytes(container.type().instanceBytes() + kInstanceOverheadBytes +
+                   container.fields().size() * sizeof(Field*));
+}
 
 std::shared_ptr<Node> SceneParser::parseFile() {
     mLexer.readHeader();
@@ -234,8 +266,10 @@ std::shared_ptr<FieldContainer> SceneParser::createInstance(const std::string& t
                                    " is abstract and cannot be read");
         }
         std::shared_ptr<FieldContainer> container = type->create();
+        countInstance(*container);
         if (auto* files = dynamic_cast<RelativeFileNames*>(container.get())) {
             files->setBaseDirectory(mBaseDirectory);
+            files->setDataRoots(mDataRoots);
         }
         for (const std::optional<Description>& description : {fields, inputs}) {
             if (description) {
@@ -256,6 +290,7 @@ std::shared_ptr<FieldContainer> SceneParser::createInstance(const std::string& t
                                " (not registered, and no 'fields [ ... ]' description follows)");
     }
     const UnknownNode::Ptr node = UnknownNode::create(typeName);
+    countHeldBytes(sizeof(UnknownNode) + kInstanceOverheadBytes);
     for (const DescribedField& entry : *fields) {
         if (!UnknownNode::isDescribableFieldType(entry.type)) {
             mLexer.fail(entry.where, "unknown field type " + SceneLexer::quote(entry.type) +
@@ -394,6 +429,7 @@ void SceneParser::readFieldEntry(Field& field) {
         } catch (const DataError& error) {
             mLexer.fail(valueAt, error.what());
         }
+        countHeldBytes(field.heapBytes());
         checkNoExtraValue(field);
     }
     if (mLexer.consumeIf('=')) {

@@ -2,9 +2,11 @@
 
 #include "scenegraph/SourceFiles.h"
 #include "scenegraph/fields/FieldValueReader.h"
+#include "scenegraph/io/DataRoots.h"
 #include "scenegraph/io/detail/ConnectionSources.h"
 #include "scenegraph/io/detail/SceneLexer.h"
 
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <optional>
@@ -30,9 +32,10 @@ public:
     static constexpr int kMaxNesting = 1000;
 
     /// @brief A parser for `text`, which came from `fileName` (for messages). Nodes that read
-    /// files (RelativeFileNames) get `baseDirectory` to resolve relative names against; empty
-    /// leaves them resolving against the working directory.
-    SceneParser(std::string_view text, std::string fileName, std::string baseDirectory = {});
+    /// files (RelativeFileNames) get `baseDirectory` to resolve relative names against (empty
+    /// leaves them resolving against the working directory) and `dataRoots` to confine them to.
+    SceneParser(std::string_view text, std::string fileName, std::string baseDirectory = {},
+                std::shared_ptr<const DataRoots> dataRoots = nullptr);
 
     /// @brief Parses the whole file: one top-level node is the result; several are put under
     /// a new Separator (as Inventor's SoDB::readAll does).
@@ -77,10 +80,17 @@ private:
     void checkListNotTruncated();
     std::string fieldContext() const;
     [[noreturn]] void failExpected(const std::string& what, const std::string& got);
+    // Counts `bytes` more that what the file made holds, and refuses a file whose nodes pass the
+    // memory limit, at the token being read (asked once a kMemoryCheckBytes more are held).
+    void countHeldBytes(std::uint64_t bytes);
+    // countHeldBytes() of a node or engine just made: the instance, its shared pointer's count
+    // and its field list.
+    void countInstance(const FieldContainer& container);
 
     SourceFileId mSourceFile; // where the nodes read were, for Node::sourceLocation()
     SceneLexer mLexer;
     std::string mBaseDirectory;
+    std::shared_ptr<const DataRoots> mDataRoots;
     std::map<std::string, std::shared_ptr<FieldContainer>, std::less<>> mDefinitions;
     std::vector<ReadConnection> mConnections;
     int mNesting = 0;
@@ -88,6 +98,8 @@ private:
     SourceLocation mTokenStart;
     std::optional<SourceLocation> mOpenList;
     bool mHasReadList = false;
+    std::uint64_t mHeldBytes = 0;       // the text and what was made of it, estimated
+    std::uint64_t mNextMemoryCheck = 0; // when mHeldBytes reaches it
 };
 
 } // namespace texsplat::sg::detail
