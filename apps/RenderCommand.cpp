@@ -461,6 +461,7 @@ RenderOptions checkRenderOptions(const RenderArguments& arguments) {
     // > 0); EXR keeps the premultiplied layer exactly.
     const glm::vec4 background = parseBackground(arguments.background);
     checkSceneOptions(arguments.framing, arguments.budget);
+    annotationRequest(arguments.annotations, background); // checked before any work
     if (arguments.threads < 0 || arguments.threads > kMaxThreads) {
         throw DataError("--threads: expected 0 (one per hardware thread) to " +
                         std::to_string(kMaxThreads) + ", got " +
@@ -514,7 +515,8 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
 
-    const annotation::ImageAnnotations annotations = imageAnnotations(arguments.annotations, *root);
+    const annotation::ImageAnnotations annotations =
+        imageAnnotations(arguments.annotations, *root, options.background);
     if (arguments.rayCast) {
         runRayCast(arguments, animation, *root, size, options.background, setup, annotations);
         return;

@@ -50,6 +50,10 @@ TransferFunction::TransferFunction() {
              "World length over which opacities and emission apply; 0: one voxel of the data");
     addField(emission, "emission", 0.0f,
              "Glow that does not absorb: emission is colour times (opacity + emission), >= 0");
+    addField(title, "title", std::string(),
+             "What the values are (\"Temperature\"): the colour bar's title; not used to classify");
+    addField(units, "units", std::string(),
+             "The values' unit (\"K\"): the colour bar shows \"title (units)\"");
 }
 
 namespace {
@@ -431,6 +435,10 @@ void TransferFunction::doAction(sg::Action& action) {
 }
 
 void TransferFunction::notify(const sg::Field* source) {
+    if (isLabelField(source)) {
+        sg::Node::notify(source); // the checked tables stay as they are
+        return;
+    }
     {
         const std::lock_guard<std::mutex> lock(mTableMutex);
         mTable.reset();

@@ -106,6 +106,9 @@ struct Classification {
 ///   `emission` adds glow that does not absorb, so fully transparent glowing voxels (opacities
 ///   0, emission 1: C = S, τ = 0) are expressible, as the paper's Figure 2 experiment needs.
 ///
+/// `title` and `units` say what the values are ("Temperature", "K"): the colour bar
+/// (annotation::ColorLegend) is titled "Temperature (K)"; they do not change the classification.
+///
 /// Control positions may repeat (a step) but must not decrease. Every check happens on first use
 /// after a change and throws DataError naming the field ("TransferFunction 'tf': colorValues has
 /// 3 values but colors has 2"). During a traversal the node puts itself into
@@ -126,6 +129,8 @@ struct Classification {
 ///     percentiles    1 99
 ///     unitDistance   1         # world length of the opacities; 0: one voxel
 ///     emission       0
+///     title          ""        # what the values are, for the colour bar
+///     units          ""        # their unit, for the colour bar
 /// }
 /// @endcode
 class TransferFunction : public sg::Declare<TransferFunction, sg::Node>,
@@ -145,6 +150,8 @@ public:
     sg::SFVec2f percentiles;    ///< the percentiles rangeMode PERCENTILE takes, in [0, 100]
     sg::SFFloat unitDistance;   ///< world length the opacities are given for; 0: one voxel
     sg::SFFloat emission;       ///< emission per unit length not tied to opacity, >= 0
+    sg::SFString title;         ///< what the classified values are: the colour bar's title
+    sg::SFString units;         ///< the unit of the values, shown after the title
 
     /// @brief Checks every field now (and reads `colorMapFile`).
     /// @throws DataError naming the first bad field; what reading `colorMapFile` throws.
@@ -215,6 +222,12 @@ public:
     /// visible value); it may answer false for a range whose values are all transparent only
     /// through float underflow or a step exactly at an end.
     bool isTransparentBetween(float minimum, float maximum, const DataScale& scale) const;
+
+    /// @brief Whether `field` (one of this node's) says how values are labelled rather than
+    /// how they are classified (`title`, `units`): a change of it needs no new classification.
+    bool isLabelField(const sg::Field* field) const {
+        return field == &title || field == &units;
+    }
 
     /// @brief Puts this node into TransferFunctionElement.
     void doAction(sg::Action& action) override;

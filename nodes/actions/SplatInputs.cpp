@@ -22,11 +22,12 @@ private:
     static sg::MethodTable& methods() {
         static sg::MethodTable table = [] {
             sg::MethodTable initial;
-            initial.add(ScalarSplat::classType(), [](sg::Action& action, sg::Node&) {
+            initial.add(ScalarSplat::classType(), [](sg::Action& action, sg::Node& node) {
                 auto& self = static_cast<SplatInputsAction&>(action);
                 const SplatInput input{
                     self.state().get<TransferFunctionElement>().transferFunction,
-                    self.state().get<VolumeElement>().volume};
+                    self.state().get<VolumeElement>().volume,
+                    static_cast<const ScalarSplat*>(&node)};
                 if (input.transfer != nullptr && input.volume != nullptr) {
                     self.inputs.push_back(input);
                 }

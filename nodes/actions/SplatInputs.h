@@ -6,6 +6,7 @@
 
 namespace texsplat::nodes {
 
+class ScalarSplat;
 class TransferFunction;
 class VolumeData;
 
@@ -14,6 +15,7 @@ class VolumeData;
 struct SplatInput {
     const TransferFunction* transfer = nullptr;
     const VolumeData* volume = nullptr;
+    const ScalarSplat* splat = nullptr; ///< the splat node itself
 };
 
 /// @brief The inputs of each splat node (ScalarSplat and its kinds) under `root` that has both a

@@ -2,34 +2,53 @@
 
 #include "nodes/annotation/VolumeOutline.h"
 #include "nodes/image/ImageIo.h"
+#include "scenegraph/Error.h"
 
 namespace texsplat::annotation {
 
 ImageAnnotations::ImageAnnotations(const AnnotationRequest& request, sg::Node& root)
-    : mRoot(root), mOutlineColor(request.outline) {
+    : mRoot(root), mRequest(request) {
+    if (request.colorbarTicks < 2 || request.colorbarTicks > LegendStyle::kMaxTicks) {
+        throw DataError("colour legend: the tick count must be from 2 to " +
+                        std::to_string(LegendStyle::kMaxTicks) + ", got " +
+                        std::to_string(request.colorbarTicks));
+    }
     if (request.colorbar) {
-        mLegend = ColorLegend::ofScene(root, *request.colorbar);
+        mBars = ColorBar::ofScene(root);
     }
 }
 
-image::Image ImageAnnotations::annotated(const image::Image& image) const {
-    image::Image result = image;
-    if (mOutlineColor) {
-        VolumeOutline::ofScene(mRoot, image.width(), image.height(), *mOutlineColor)
-            .draw(result);
+void ImageAnnotations::setBarTitles(const std::vector<std::string>& titles) {
+    if (titles.size() > mBars.size()) {
+        throw DataError("given " + std::to_string(titles.size()) + " times, but the scene has " +
+                        std::to_string(mBars.size()) + " colour bar" +
+                        (mBars.size() == 1 ? "" : "s"));
     }
-    if (mLegend) {
-        mLegend->draw(result);
+    for (std::size_t i = 0; i < titles.size(); ++i) {
+        mBars[i].title = titles[i];
     }
-    return result;
 }
 
-void ImageAnnotations::write(const image::Image& image, const std::string& path) const {
-    if (!mLegend && !mOutlineColor) {
-        image::writeImage(image, path);
+image::Image ImageAnnotations::annotated(const image::Image& picture) const {
+    image::Image figure = picture;
+    if (mRequest.outline) {
+        VolumeOutline::ofScene(mRoot, picture.width(), picture.height(), *mRequest.outline)
+            .draw(figure);
+    }
+    if (!mBars.empty()) {
+        const ColorLegend legend(mBars, {mRequest.colorbarPosition, mRequest.colorbarTicks},
+                                 picture.width(), picture.height());
+        figure = legend.compose(figure, mRequest.background);
+    }
+    return figure;
+}
+
+void ImageAnnotations::write(const image::Image& picture, const std::string& path) const {
+    if (mBars.empty() && !mRequest.outline) {
+        image::writeImage(picture, path);
         return;
     }
-    image::writeImage(annotated(image), path);
+    image::writeImage(annotated(picture), path);
 }
 
 } // namespace texsplat::annotation

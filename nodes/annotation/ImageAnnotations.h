@@ -1,5 +1,6 @@
 #pragma once
 
+#include "nodes/annotation/ColorBar.h"
 #include "nodes/annotation/ColorLegend.h"
 #include "nodes/image/Image.h"
 #include "scenegraph/Node.h"
@@ -8,37 +9,51 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace texsplat::annotation {
 
-/// @brief What to draw into a rendered image after rendering, so that every backend and the ray
-/// caster get the same figure: `texsplat render --colorbar --outline` and the Python module's
+/// @brief What to make of a rendered picture, so that every backend and the ray caster get the
+/// same figure: `texsplat render --colorbar --outline` and the Python module's
 /// `Image.save(colorbar=True)`.
 struct AnnotationRequest {
-    std::optional<LegendPosition> colorbar; ///< the colour legend (ColorLegend), where
+    bool colorbar = false;                             ///< colour bars beside the picture
+    LegendPosition colorbarPosition = LegendPosition::Right; ///< the side they take
+    int colorbarTicks = 5;                  ///< tick values each bar aims for (LegendStyle)
     std::optional<glm::vec4> outline;       ///< the volumes' outline (VolumeOutline), its colour
+    /// @brief What the picture is shown over (premultiplied): the colour bars' strip is filled
+    /// with it and their ink reads on it.
+    glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 /// @brief The annotations of a scene as it is drawn: the volumes' outline (per image, with the
-/// scene's camera as it is then) and, over it, the colour legend of the scene's first splat node.
+/// scene's camera as it is then) and the colour bars of the scene's splat nodes
+/// (ColorBar::ofScene(), ColorLegend) in a strip beside the picture.
 class ImageAnnotations {
 public:
     /// @brief The annotations `request` asks for on the scene under `root` (which must outlive
-    /// this object), the legend made now (ColorLegend::ofScene()).
-    /// @throws what ColorLegend::ofScene() throws.
+    /// this object), the bars found now (ColorBar::ofScene()).
+    /// @throws DataError for a tick count outside 2 to LegendStyle::kMaxTicks; what
+    /// ColorBar::ofScene() throws.
     ImageAnnotations(const AnnotationRequest& request, sg::Node& root);
 
-    /// @brief `image` annotated (a copy; `image` itself when nothing was asked for). The outline
-    /// uses the scene's camera as it is now: call it after rendering the frame.
-    image::Image annotated(const image::Image& image) const;
+    /// @brief Replaces the first bars' titles by `titles` ("" for none), in the bars' order.
+    /// @throws DataError "given 2 times, but the scene has 1 colour bar" for more titles than
+    /// bars.
+    void setBarTitles(const std::vector<std::string>& titles);
 
-    /// @brief Writes annotated(`image`) to `path` (image::writeImage()).
-    void write(const image::Image& image, const std::string& path) const;
+    /// @brief The figure of `picture` (a copy; `picture` itself when nothing was asked for):
+    /// the outline drawn over it, then the colour bars' strip added beside it. The outline uses
+    /// the scene's camera as it is now: call it after rendering the frame.
+    image::Image annotated(const image::Image& picture) const;
+
+    /// @brief Writes annotated(`picture`) to `path` (image::writeImage()).
+    void write(const image::Image& picture, const std::string& path) const;
 
 private:
     sg::Node& mRoot;
-    std::optional<ColorLegend> mLegend;
-    std::optional<glm::vec4> mOutlineColor;
+    AnnotationRequest mRequest;
+    std::vector<ColorBar> mBars;
 };
 
 } // namespace texsplat::annotation

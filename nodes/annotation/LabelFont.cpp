@@ -49,6 +49,10 @@ LabelFont LabelFont::forImage(int width, int height, const std::string& file) {
 LabelFont::LabelFont(const std::string& file, int pixelHeight, int fallbackScale)
     : mFace(faceOf(file)), mPixelHeight(pixelHeight), mFallbackScale(fallbackScale) {}
 
+bool LabelFont::canDraw(std::string_view text) const {
+    return mFace || std::all_of(text.begin(), text.end(), NumberFont::hasGlyph);
+}
+
 int LabelFont::textWidth(std::string_view text) const {
     return mFace ? mFace->render(text, float(mPixelHeight)).width
                  : NumberFont::textWidth(text, mFallbackScale);
@@ -77,6 +81,34 @@ void LabelFont::draw(image::Image& image, glm::ivec2 topLeft, std::string_view t
             if (cover > 0.0f && at.x >= 0 && at.y >= 0 && at.x < image.width() &&
                 at.y < image.height()) {
                 // "Over", the glyph's coverage scaling the premultiplied colour.
+                image.setPixel(at.x, at.y,
+                               rgba * cover + image.pixel(at.x, at.y) * (1.0f - rgba.a * cover));
+            }
+        }
+    }
+}
+
+void LabelFont::draw(image::Image& image, glm::ivec2 topLeft, std::string_view text,
+                     const glm::vec4& rgba, TextDirection direction) const {
+    if (direction == TextDirection::LeftToRight) {
+        draw(image, topLeft, text, rgba);
+        return;
+    }
+    const int width = textWidth(text);
+    const int height = this->height();
+    if (width <= 0 || height <= 0) {
+        return;
+    }
+    // The coverage, drawn white on transparent, then turned: the text's column x becomes the
+    // row width - 1 - x, its row y the column y.
+    image::Image upright(width, height);
+    draw(upright, {0, 0}, text, glm::vec4(1.0f));
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const float cover = upright.pixel(x, y).a;
+            const glm::ivec2 at = topLeft + glm::ivec2(y, width - 1 - x);
+            if (cover > 0.0f && at.x >= 0 && at.y >= 0 && at.x < image.width() &&
+                at.y < image.height()) {
                 image.setPixel(at.x, at.y,
                                rgba * cover + image.pixel(at.x, at.y) * (1.0f - rgba.a * cover));
             }

@@ -15,6 +15,12 @@ namespace detail {
 class TrueTypeFace;
 } // namespace detail
 
+/// @brief Which way a label reads.
+enum class TextDirection {
+    LeftToRight, ///< a line of text
+    BottomToTop, ///< turned a quarter counter-clockwise, as the title beside a vertical bar
+};
+
 /// @brief The font of labels drawn into images: DejaVu Sans, anti-aliased (stb_truetype), or the
 /// built-in NumberFont when the font file cannot be read.
 ///
@@ -38,6 +44,11 @@ public:
     /// @brief True when labels are drawn with the TrueType font.
     bool isTrueType() const { return mFace != nullptr; }
 
+    /// @brief Whether every character of `text` has a glyph: always with the TrueType font (a
+    /// character it lacks is drawn as its box), digits, sign, point, `e` and space in the
+    /// fallback.
+    bool canDraw(std::string_view text) const;
+
     /// @brief The width in pixels of `text`.
     int textWidth(std::string_view text) const;
 
@@ -53,6 +64,12 @@ public:
     /// @throws DataError for a character NumberFont has no glyph for, in the fallback.
     void draw(image::Image& image, glm::ivec2 topLeft, std::string_view text,
               const glm::vec4& rgba) const;
+
+    /// @brief draw() reading `direction`: BottomToTop turns the text's box a quarter
+    /// counter-clockwise, so it is height() wide and textWidth() high, its top-left corner at
+    /// `topLeft`.
+    void draw(image::Image& image, glm::ivec2 topLeft, std::string_view text,
+              const glm::vec4& rgba, TextDirection direction) const;
 
 private:
     std::shared_ptr<const detail::TrueTypeFace> mFace; // nullptr: NumberFont

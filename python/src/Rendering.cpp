@@ -42,10 +42,12 @@ struct Scene {
     std::unique_ptr<sg::SceneTime> time;
 };
 
-// A rendered image and the scene as drawn (its camera), for the annotations save() draws.
+// A rendered image, the scene as drawn (its camera) and what it was drawn over, for the
+// annotations save() draws.
 struct Image {
     image::Image pixels;
     sg::Node::Ptr drawn;
+    glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
 };
 
 // The memory limit of one call (`memory_limit`): as `--memory-limit`, the memory available now
@@ -209,7 +211,7 @@ Image renderScene(Scene& scene, std::pair<int, int> size, const std::string& bac
                                                                              framing, change);
                                               });
         image::Image pixels = renderer.render(*drawn);
-        return Image{std::move(pixels), std::move(drawn)};
+        return Image{std::move(pixels), std::move(drawn), options.background};
     });
 }
 
@@ -224,9 +226,11 @@ nb::ndarray<nb::numpy, float, nb::shape<-1, -1, 4>> pixelArray(nb::handle self) 
 void saveImage(const Image& image, const std::filesystem::path& file, bool colorbar,
                const std::string& colorbarPosition, bool outline) {
     annotation::AnnotationRequest request;
+    request.background = image.background;
+    request.colorbar = colorbar;
     if (colorbar) {
         try {
-            request.colorbar = annotation::parseLegendPosition(colorbarPosition);
+            request.colorbarPosition = annotation::parseLegendPosition(colorbarPosition);
         } catch (const DataError& error) {
             throw DataError(std::string("colorbar_position: ") + error.what());
         }

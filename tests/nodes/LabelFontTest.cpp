@@ -55,6 +55,39 @@ TEST(LabelFont, drawsAntiAliasedGlyphsOfTheBuildsFont) {
     EXPECT_EQ(image.pixel(2 + font.textWidth("0.5") + 1, 14), glm::vec4(0.0f));
 }
 
+TEST(LabelFont, turnsTextToReadFromBottomToTop) {
+    for (const std::string& file :
+         std::vector<std::string>{LabelFont::kDefaultFile, nodes::test::testPath("none.ttf")}) {
+        const LabelFont font(file, 16, 2);
+        const int width = font.textWidth("1.5");
+        const int height = font.height();
+        image::Image upright(width + 4, height + 4);
+        font.draw(upright, {2, 2}, "1.5", glm::vec4(1.0f));
+        image::Image turned(height + 4, width + 4);
+        font.draw(turned, {2, 2}, "1.5", glm::vec4(1.0f), TextDirection::BottomToTop);
+        // The upright text's pixel (x, y) is the turned text's (y, width - 1 - x).
+        for (int y = 0; y < height; ++y)
+            for (int x = 0; x < width; ++x) {
+                ASSERT_EQ(turned.pixel(2 + y, 2 + width - 1 - x), upright.pixel(2 + x, 2 + y))
+                    << file << " at " << x << ", " << y;
+            }
+    }
+}
+
+TEST(LabelFont, drawsUtf8Text) {
+    if (LabelFont::kDefaultFile.empty()) {
+        GTEST_SKIP() << "no DejaVuSans.ttf was found at build time (Debian: fonts-dejavu-core)";
+    }
+    const LabelFont font(LabelFont::kDefaultFile, 24, 1);
+    EXPECT_TRUE(font.canDraw("Temperature (°C)"));
+    // "°" is one glyph, not two Latin-1 ones ("Â°"); a lone byte that starts no UTF-8 character
+    // is the Latin-1 character of its value.
+    EXPECT_EQ(font.textWidth("\xc2\xb0"), font.textWidth("\xb0"));
+    EXPECT_LT(font.textWidth("\xc2\xb0"), font.textWidth("\xc2") + font.textWidth("\xb0"));
+    EXPECT_FALSE(LabelFont(nodes::test::testPath("none.ttf"), 24, 1).canDraw("K"));
+    EXPECT_TRUE(LabelFont(nodes::test::testPath("none.ttf"), 24, 1).canDraw("-1.5e+06"));
+}
+
 TEST(LabelFont, growsWithTheImage) {
     if (LabelFont::kDefaultFile.empty()) {
         GTEST_SKIP() << "no DejaVuSans.ttf was found at build time (Debian: fonts-dejavu-core)";

@@ -376,6 +376,19 @@ TEST_F(TransferFunctionEdit, anEditKeepsTheValueRangesAndDrawsWhatAFreshSceneDra
     }
 }
 
+TEST_F(TransferFunctionEdit, aNewTitleOrUnitClassifiesNothingAgain) {
+    const auto transfer = ramp({0.0f, 1.0f}, {0.0f, 2.0f});
+    const sg::Node::Ptr labelled = scene(transfer, 0);
+    const Rendered first = renderFrame(*labelled);
+    transfer->title.setValue("Density");
+    transfer->units.setValue("g/cm³");
+    const Rendered retitled = renderFrame(*labelled);
+    EXPECT_EQ(retitled.builds.classifications, 0u);
+    EXPECT_EQ(differingPixels(retitled.image, first.image), 0);
+    transfer->emission.setValue(0.5f);
+    EXPECT_EQ(renderFrame(*labelled).builds.classifications, 1u) << "other fields still do";
+}
+
 // The sum of `image`'s opacities: how much of the background it covers.
 double coverage(const image::Image& image) {
     double sum = 0.0;

@@ -13,6 +13,35 @@
 
 namespace texsplat::annotation::detail {
 
+namespace {
+
+// The code points of `text`: UTF-8 sequences decoded ("°C", "µm"), any other byte taken as the
+// Latin-1 character of that value, so that no text is refused.
+std::vector<int> codePoints(std::string_view text) {
+    std::vector<int> points;
+    for (std::size_t i = 0; i < text.size();) {
+        const auto lead = static_cast<unsigned char>(text[i]);
+        const int length = lead < 0xC2 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : lead < 0xF5 ? 4 : 1;
+        int point = length == 1 ? lead : lead & (0x7F >> length);
+        bool valid = length > 1 && i + std::size_t(length) <= text.size();
+        for (int k = 1; valid && k < length; ++k) {
+            const auto next = static_cast<unsigned char>(text[i + std::size_t(k)]);
+            valid = (next & 0xC0) == 0x80;
+            point = (point << 6) | (next & 0x3F);
+        }
+        if (length > 1 && !valid) {
+            points.push_back(lead);
+            ++i;
+            continue;
+        }
+        points.push_back(point);
+        i += std::size_t(length);
+    }
+    return points;
+}
+
+} // namespace
+
 struct TrueTypeFace::Font {
     stbtt_fontinfo info{};
 };
@@ -39,25 +68,25 @@ TrueTypeFace::Coverage TrueTypeFace::render(std::string_view text, float pixelHe
     coverage.baseline = static_cast<int>(std::ceil(float(ascent) * scale));
     coverage.height = coverage.baseline + static_cast<int>(std::ceil(float(-descent) * scale));
     // Pen positions in fractional pixels, so glyphs keep their spacing at any size.
+    const std::vector<int> characters = codePoints(text);
     std::vector<float> pens;
     float pen = 0.0f;
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const auto character = static_cast<unsigned char>(text[i]);
+    for (std::size_t i = 0; i < characters.size(); ++i) {
+        const int character = characters[i];
         pens.push_back(pen);
         int advance = 0;
         int leftBearing = 0;
         stbtt_GetCodepointHMetrics(&info, character, &advance, &leftBearing);
         pen += float(advance) * scale;
-        if (i + 1 < text.size()) {
-            pen += float(stbtt_GetCodepointKernAdvance(
-                       &info, character, static_cast<unsigned char>(text[i + 1]))) *
+        if (i + 1 < characters.size()) {
+            pen += float(stbtt_GetCodepointKernAdvance(&info, character, characters[i + 1])) *
                    scale;
         }
     }
     coverage.width = static_cast<int>(std::ceil(pen));
     coverage.values.assign(std::size_t(coverage.width) * std::size_t(coverage.height), 0.0f);
-    for (std::size_t i = 0; i < text.size(); ++i) {
-        const auto character = static_cast<unsigned char>(text[i]);
+    for (std::size_t i = 0; i < characters.size(); ++i) {
+        const int character = characters[i];
         const float shift = pens[i] - std::floor(pens[i]);
         int x0 = 0;
         int y0 = 0;

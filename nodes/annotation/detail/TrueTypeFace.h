@@ -32,7 +32,8 @@ public:
     TrueTypeFace& operator=(const TrueTypeFace&) = delete;
     ~TrueTypeFace();
 
-    /// @brief The coverage of `text` (one line, one byte per character) with an em of
+    /// @brief The coverage of `text` (one line of UTF-8; a byte that starts no UTF-8 character
+    /// is the Latin-1 character of its value) with an em of
     /// `pixelHeight` pixels from the highest ascent to the lowest descent.
     Coverage render(std::string_view text, float pixelHeight) const;
 

@@ -112,7 +112,10 @@ const octree::Octree& ClassificationCache::octree() {
     return *mOctree;
 }
 
-void ClassificationCache::changed(sg::Notifier& /*subject*/, const sg::Field* /*source*/) {
+void ClassificationCache::changed(sg::Notifier& /*subject*/, const sg::Field* source) {
+    if (mTransfer && mTransfer->isLabelField(source)) {
+        return; // a new title classifies nothing differently
+    }
     mTransferChanged = true;
     mPreviewStale = true;
 }
