@@ -34,7 +34,8 @@ void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {
                          "by the scene's camera");
     command
         .add_option("--outline-color", options.outlineColor,
-                    "Colour of --outline: black, white or r,g,b (linear, 0 to 1)")
+                    "Colour of --outline: black, white or r,g,b (0 to 1, as colour maps give "
+                    "them)")
         ->capture_default_str()
         ->needs(outline);
 }

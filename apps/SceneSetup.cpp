@@ -107,7 +107,7 @@ glm::vec3 parseDirection(const std::string& text) {
 
 namespace {
 
-// "black", "white" or "r,g,b" (linear, 0 to 1) as an opaque colour; nothing for other text.
+// "black", "white" or "r,g,b" (0 to 1) as an opaque colour; nothing for other text.
 std::optional<glm::vec4> opaqueColorNamed(const std::string& text) {
     if (text == "black") {
         return glm::vec4(0.0f, 0.0f, 0.0f, 1.0f);
@@ -130,7 +130,7 @@ glm::vec4 parseBackground(const std::string& text) {
     if (const std::optional<glm::vec4> color = opaqueColorNamed(text)) {
         return *color;
     }
-    throw DataError("--background: expected black, white, transparent or r,g,b (linear, 0 to 1), "
+    throw DataError("--background: expected black, white, transparent or r,g,b (0 to 1), "
                     "got '" + text + "'");
 }
 
@@ -138,7 +138,7 @@ glm::vec4 parseOpaqueColor(const std::string& text, const std::string& option) {
     if (const std::optional<glm::vec4> color = opaqueColorNamed(text)) {
         return *color;
     }
-    throw DataError(option + ": expected black, white or r,g,b (linear, 0 to 1), got '" + text +
+    throw DataError(option + ": expected black, white or r,g,b (0 to 1), got '" + text +
                     "'");
 }
 

@@ -28,12 +28,12 @@ glm::ivec2 parseSize(const std::string& text, const std::string& option = "--siz
 glm::vec3 parseDirection(const std::string& text);
 
 /// @brief The premultiplied clear colour `--background` names: "black" (the default), "white",
-/// "transparent" (alpha 0: the layer alone, for compositing) or "r,g,b" (linear, 0 to 1, opaque).
+/// "transparent" (alpha 0: the layer alone, for compositing) or "r,g,b" (0 to 1, opaque; display values as colour maps give them).
 /// Throws DataError naming --background otherwise.
 glm::vec4 parseBackground(const std::string& text);
 
 /// @brief The opaque colour an option such as `--outline-color` names: "black", "white" or
-/// "r,g,b" (linear, 0 to 1). Throws DataError naming `option` otherwise.
+/// "r,g,b" (0 to 1). Throws DataError naming `option` otherwise.
 glm::vec4 parseOpaqueColor(const std::string& text, const std::string& option);
 
 /// @brief What --max-splats and --error-threshold ask of every splat node of a scene.

@@ -14,7 +14,7 @@ DirectionalLight::DirectionalLight() {
     addField(on, "on", true, "Whether the light shines on the polygon geometry after it");
     addField(intensity, "intensity", 1.0f,
              "Brightness factor on color, 0 to 1 in Inventor (larger values allowed)");
-    addField(color, "color", glm::vec3(1.0f), "Colour of the light, linear RGB");
+    addField(color, "color", glm::vec3(1.0f), "Colour of the light, RGB");
     addField(direction, "direction", glm::vec3(0.0f, 0.0f, -1.0f),
              "Direction the light travels in, local space");
 }

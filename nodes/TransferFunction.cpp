@@ -33,7 +33,8 @@ TransferFunction::TransferFunction() {
     addField(colorValues, "colorValues", std::vector<float>{},
              "Positions of colors in the range normalized to 0..1, non-decreasing");
     addField(colors, "colors", std::vector<glm::vec3>{},
-             "Colour control points, linear RGB, one per colorValues; replace the colour map");
+             "Colour control points, RGB 0..1 as colour maps give them (display values), one "
+             "per colorValues; replace the colour map");
     addField(opacityValues, "opacityValues", std::vector<float>{0.0f, 1.0f},
              "Positions of opacities in the range normalized to 0..1, non-decreasing");
     addField(opacities, "opacities", std::vector<float>{0.0f, 1.0f},

@@ -8,6 +8,9 @@
 # grid over [-1, 1]^3, clamped to -0.15..0.15), is written with numpy (python3-numpy; set
 # PYTHON to a python3 that has it if the first on PATH has not).
 #
+# colorbar-matplotlib.png puts texsplat's colour bar of MAGMA under matplotlib's own (matplotlib
+# and Pillow: python3-matplotlib, python3-pil).
+#
 # Usage: scripts/transfer-function-pictures.sh [texsplat executable, or a build dir holding
 #                                               apps/texsplat; default build/release]
 set -euo pipefail
@@ -68,3 +71,34 @@ for scene in "$work"/*.iv; do
         --direction 1,-0.7,-1.4 $(cat "$work/$name.args")
     echo "wrote docs/transfer-functions/$name.png"
 done
+
+# texsplat's colour bar beside matplotlib's, of the same map over the same range: the bar's
+# strip cut from a render with --colorbar at the bottom, under matplotlib's own colorbar.
+cat > "$work/bar.iv" <<'SCENE'
+#Inventor V2.1 ascii
+Separator {
+    TransferFunction { preset MAGMA range 0 1.2 title "magma" units "texsplat" }
+    VolumeData { source MARSCHNER_LOBB resolution 8 8 8 }
+    TextureSplat { }
+}
+SCENE
+"$texsplat" render "$work/bar.iv" -o "$work/bar.png" --size 480x480 --backend cpu \
+    --colorbar --colorbar-position bottom --colorbar-ticks 7 --background white
+"${PYTHON:-python3}" - "$work/bar.png" "$pictures/colorbar-matplotlib.png" <<'PYTHON'
+import sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+import numpy as np
+from PIL import Image
+
+texsplat = np.asarray(Image.open(sys.argv[1]).convert("RGB"))[480:]  # the strip under the picture
+height = texsplat.shape[0] / 100.0
+figure = plt.figure(figsize=(4.8, 0.9 + height), dpi=100)
+bar = figure.add_axes([0.1, 1.0 - 0.25 / (0.9 + height), 0.8, 0.2 / (0.9 + height)])
+figure.colorbar(matplotlib.cm.ScalarMappable(matplotlib.colors.Normalize(0.0, 1.2), "magma"),
+                cax=bar, orientation="horizontal", label="magma (matplotlib)")
+figure.figimage(texsplat, xo=0, yo=0)
+figure.savefig(sys.argv[2], dpi=100)
+PYTHON
+echo "wrote docs/transfer-functions/colorbar-matplotlib.png"

@@ -5,8 +5,6 @@
 
 #include <epoxy/gl.h>
 
-#include <array>
-#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -23,34 +21,20 @@ void main() {
 }
 )";
 
-// Premultiplied "over" the background, then the sRGB transfer function (IEC 61966-2-1).
+// Premultiplied "over" the background, the colours shown as they are (display values, as the
+// PNGs hold them: docs/images.md).
 constexpr const char* kFragmentShader = R"(#version 330 core
 in vec2 uv;
 uniform sampler2D frame;
 uniform vec3 background;
 uniform float lightScale; // the factor by which the frame holds its light (gl/LightScale.h)
 out vec4 color;
-vec3 encodeSrgb(vec3 linear) {
-    vec3 c = clamp(linear, 0.0, 1.0);
-    return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(vec3(0.0031308), c));
-}
 void main() {
     vec4 premultiplied = texture(frame, uv);
     vec3 light = premultiplied.rgb / lightScale;
-    color = vec4(encodeSrgb(light + (1.0 - premultiplied.a) * background), 1.0);
+    color = vec4(clamp(light + (1.0 - premultiplied.a) * background, 0.0, 1.0), 1.0);
 }
 )";
-
-// The inverse of the shader's encodeSrgb for each 8-bit value.
-std::array<float, 256> srgbDecodeTable() {
-    std::array<float, 256> table{};
-    for (std::size_t i = 0; i < table.size(); ++i) {
-        const float encoded = static_cast<float>(i) / 255.0f;
-        table[i] = encoded <= 0.04045f ? encoded / 12.92f
-                                       : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-    }
-    return table;
-}
 
 } // namespace
 
@@ -88,7 +72,6 @@ image::Image FramePresenter::readBack(const glm::ivec2& windowSize) {
     glReadBuffer(GL_BACK);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, windowSize.x, windowSize.y, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
-    static const std::array<float, 256> kDecode = srgbDecodeTable();
     image::Image result(windowSize.x, windowSize.y);
     for (int y = 0; y < windowSize.y; ++y) {
         // GL's rows start at the bottom; the image's at the top.
@@ -96,8 +79,7 @@ image::Image FramePresenter::readBack(const glm::ivec2& windowSize) {
             bytes.data() + 4 * width * static_cast<std::size_t>(windowSize.y - 1 - y);
         for (int x = 0; x < windowSize.x; ++x) {
             const std::uint8_t* pixel = row + 4 * static_cast<std::size_t>(x);
-            const glm::vec3 linear(kDecode[pixel[0]], kDecode[pixel[1]], kDecode[pixel[2]]);
-            result.setPixel(x, y, glm::vec4(linear, 1.0f));
+            result.setPixel(x, y, glm::vec4(glm::vec3(pixel[0], pixel[1], pixel[2]) / 255.0f, 1.0f));
         }
     }
     return result;

@@ -14,9 +14,10 @@ class Texture2D;
 
 namespace texsplat::apps {
 
-/// @brief Shows the GL backend's float framebuffer (or the CPU backend's image) in the window: the premultiplied linear
-/// color composited over a background, encoded to sRGB, as `texsplat render` writes its PNGs,
-/// so the window and the files look alike. One full-screen triangle, no blending.
+/// @brief Shows the GL backend's float framebuffer (or the CPU backend's image) in the window:
+/// the premultiplied color composited over a background and shown as it is (display values), as
+/// `texsplat render` writes its PNGs, so the window and the files look alike. One full-screen
+/// triangle, no blending.
 ///
 /// Created and used with the window's context current (it holds GL objects).
 class FramePresenter {
@@ -24,7 +25,7 @@ public:
     FramePresenter();
 
     /// @brief Draws `frame` (a GlRenderer's, whose light GL draws scaled: gl/LightScale.h) over
-    /// `background` (linear RGB) into the default framebuffer of size `windowSize`, scaled to
+    /// `background` (RGB) into the default framebuffer of size `windowSize`, scaled to
     /// fill it.
     void present(const gl::Framebuffer& frame, const glm::vec3& background,
                  const glm::ivec2& windowSize);
@@ -35,8 +36,8 @@ public:
                  const glm::ivec2& windowSize);
 
     /// @brief Reads back what the window's default framebuffer holds now (its back buffer, of
-    /// size `windowSize`): the sRGB bytes the window shows, decoded to linear floats with alpha
-    /// 1, top row first, so that writing it as PNG gives those bytes again.
+    /// size `windowSize`): the bytes the window shows as floats (byte / 255) with alpha 1, top
+    /// row first, so that writing it as PNG gives those bytes again.
     static image::Image readBack(const glm::ivec2& windowSize);
 
 private:

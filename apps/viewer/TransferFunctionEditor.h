@@ -117,7 +117,7 @@ public:
     /// @brief Sets the preset.
     void setPreset(nodes::ColorPreset preset);
 
-    /// @brief The selected function's colour map S(t) at `t` in [0, 1] (linear RGB).
+    /// @brief The selected function's colour map S(t) at `t` in [0, 1] (RGB).
     /// @throws DataError when its fields are invalid.
     glm::vec3 colorAt(float t) const { return current().node->colorAt(t); }
 

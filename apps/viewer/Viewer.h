@@ -19,7 +19,7 @@ struct ViewerOptions {
     int frames = 0;                     ///< stop after this many frames (0: when closed)
     std::string screenshot;             ///< write the last frame here (PNG or EXR) at the end
     std::int32_t interactiveBudget = 50000; ///< splats per node while the view moves
-    glm::vec3 background{0.02f, 0.02f, 0.025f}; ///< linear RGB behind the scene
+    glm::vec3 background{0.02f, 0.02f, 0.025f}; ///< RGB behind the scene
     render::BackendRequest backend = render::BackendRequest::Auto; ///< what draws the frames
     int threads = 0; ///< CPU backend threads (0: one per hardware thread)
     bool timeReport = false; ///< a line per rendered frame on stderr: stage, splats, phases

@@ -1,7 +1,6 @@
 #include "apps/viewer/ViewerPanel.h"
 
 #include "apps/viewer/TransferFunctionEditor.h"
-#include "nodes/image/detail/Srgb.h"
 
 #ifdef TEXSPLAT_VIEWER_PANEL
 #include <epoxy/gl.h>
@@ -55,10 +54,8 @@ bool drawOpacityCurve(TransferFunctionEditor& editor) {
         const float t = (static_cast<float>(column) + 0.5f) / size.x;
         const glm::vec3 colour = editor.colorAt(t);
         const auto encoded = [&](float dim) {
-            const auto byte = [dim](float linear) {
-                return static_cast<int>(255.0f * image::detail::linearToSrgb(
-                                                     std::clamp(linear * dim, 0.0f, 1.0f)) +
-                                        0.5f);
+            const auto byte = [dim](float value) {
+                return static_cast<int>(255.0f * std::clamp(value * dim, 0.0f, 1.0f) + 0.5f);
             };
             return IM_COL32(byte(colour.r), byte(colour.g), byte(colour.b), 255);
         };

@@ -17,9 +17,10 @@ namespace texsplat::image {
 /// Conventions:
 /// - Color is *premultiplied* by alpha (the splats are blended with the "over" operator on
 ///   premultiplied colors, Crawfis & Max 1993, section 3): over a background color c a pixel
-///   (r, g, b, a) shows (r, g, b) + (1 − a)·c, so over black it shows (r, g, b). Values are
-///   linear (not sRGB-encoded) and may exceed 1 (emission) or be non-finite (a broken render);
-///   the image stores them as they are and the statistics count the non-finite ones.
+///   (r, g, b, a) shows (r, g, b) + (1 − a)·c, so over black it shows (r, g, b). Values are the
+///   display (sRGB) values that colour maps give, composited as they are (as matplotlib,
+///   ParaView and VTK do), and may exceed 1 (emission) or be non-finite (a broken render); the
+///   image stores them as they are and the statistics count the non-finite ones.
 /// - Rows are stored top row first: pixel (x, y) is column x of row y, and y = 0 is the top of
 ///   the picture. OpenGL reads framebuffers bottom row first; call flipVertically() after such a
 ///   read-back.

@@ -1,6 +1,5 @@
 #include "nodes/image/ImageComparison.h"
 
-#include "nodes/image/detail/Srgb.h"
 #include "nodes/image/detail/Viridis.h"
 #include "scenegraph/Assert.h"
 #include "scenegraph/Error.h"
@@ -129,9 +128,7 @@ Image ImageComparison::differenceImage(double scale) const {
         } else if (error >= 0.0f) {
             // All-equal images (scale 0) map every pixel to the bottom of the colormap.
             const double t = scale > 0.0 ? error / scale : 0.0;
-            const glm::vec3 encoded = detail::viridis(static_cast<float>(t));
-            pixel = glm::vec4(detail::srgbToLinear(encoded.r), detail::srgbToLinear(encoded.g),
-                              detail::srgbToLinear(encoded.b), 1.0f);
+            pixel = glm::vec4(detail::viridis(static_cast<float>(t)), 1.0f);
         }
     }
     return image;

@@ -76,8 +76,9 @@ public:
     /// The error e maps linearly onto the viridis colormap, e = 0 to its dark violet end and
     /// e ≥ `scale` to its yellow end; `scale` ≤ 0 means maxPixelError() (the full range is
     /// used). Non-finite pairs are magenta (1, 0, 1); pixels outside the region or mask are
-    /// transparent. The colors are stored linear, so that writing the image as PNG gives
-    /// exactly viridis's sRGB values. Throws DataError for a NaN or infinite `scale`.
+    /// transparent. The colors are viridis's own (display) values, as every image holds colour,
+    /// so that a PNG of it holds exactly viridis's published values. Throws DataError for a NaN
+    /// or infinite `scale`.
     Image differenceImage(double scale = 0.0) const;
 
 private:

@@ -9,7 +9,7 @@ namespace texsplat::image {
 
 /// @brief The image file formats texsplat reads and writes, chosen by file extension.
 enum class ImageFormat {
-    Png, ///< `.png`: 8-bit RGBA, straight alpha, sRGB-encoded, for people to look at
+    Png, ///< `.png`: 8-bit RGBA, straight alpha, colour as it is (display values), for people
     Exr, ///< `.exr`: OpenEXR float32 RGBA (premultiplied) + optional Z, for numbers
 };
 
@@ -45,8 +45,8 @@ std::string pngBytes(const Image& image);
 /// is refused before anything is decoded.
 constexpr std::size_t kMaxReadPixels = std::size_t{1} << 26;
 
-/// @brief Reads the image at `path` (format from its extension): PNG is converted to linear
-/// premultiplied floats, OpenEXR is read as float32. Throws IoError("path: what") for a missing,
+/// @brief Reads the image at `path` (format from its extension): PNG is converted to
+/// premultiplied floats (each value over its largest, times alpha), OpenEXR is read as float32. Throws IoError("path: what") for a missing,
 /// unreadable or malformed file, or one that is not a regular file (a FIFO, a device); DataError
 /// for an EXR without R, G, B channels, and for an image of more than kMaxReadPixels pixels
 /// ("big.png: the image is 16000 x 16000 pixels; texsplat reads images of at most 67108864

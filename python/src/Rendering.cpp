@@ -128,7 +128,7 @@ render::BackendRequest backendRequest(const std::string& backend) {
 }
 
 // The premultiplied clear colour `background` names, as `--background` does: "black" (None),
-// "white", "transparent", or linear (r, g, b) or (r, g, b, a) from 0 to 1.
+// "white", "transparent", or (r, g, b) or (r, g, b, a) from 0 to 1 (as colour maps give colours).
 glm::vec4 backgroundOf(nb::handle background) {
     if (background.is_none()) {
         return {0.0f, 0.0f, 0.0f, 1.0f};
@@ -158,7 +158,7 @@ glm::vec4 backgroundOf(nb::handle background) {
             return {glm::vec3(rgba) * rgba.a, rgba.a};
         }
     }
-    throw DataError("background: expected black, white, transparent or r,g,b (linear, 0 to 1), "
+    throw DataError("background: expected black, white, transparent or r,g,b (0 to 1), "
                     "got " + std::string(nb::repr(background).c_str()));
 }
 
@@ -271,7 +271,8 @@ void bindRendering(nb::module_& module) {
         .def_prop_ro("height", [](const Image& image) { return image.pixels.height(); })
         .def_prop_ro("array", &pixelArray, nb::rv_policy::reference_internal,
                      "The pixels as a (height, width, 4) float32 array (no copy): premultiplied "
-                     "linear RGBA, what an EXR file of the image holds.")
+                     "RGBA (display values, as colour maps give them), what an EXR file of the "
+                     "image holds.")
         .def(
             "__array__",
             [](nb::handle self, nb::handle dtype, nb::handle) {
@@ -356,8 +357,8 @@ void bindRendering(nb::module_& module) {
             return Image{image::readImage(path.string()), nullptr};
         },
         nb::arg("path"),
-        "Reads a .png or .exr image as texsplat compare reads it (PNG to linear premultiplied "
-        "floats).");
+        "Reads a .png or .exr image as texsplat compare reads it (PNG to premultiplied floats, "
+        "each value over 255).");
     module.def(
         "parse_scene",
         [](const std::string& text, const std::string& name) {

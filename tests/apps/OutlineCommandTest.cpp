@@ -114,7 +114,7 @@ TEST_F(OutlineCommandTest, badUsesAreNamed) {
         runTexsplat("render " + scene + " -o " + output + " --outline --outline-color red");
     EXPECT_EQ(color.exitCode, 1);
     EXPECT_EQ(color.standardError, "texsplat: error: --outline-color: expected black, white or "
-                                   "r,g,b (linear, 0 to 1), got 'red'\n");
+                                   "r,g,b (0 to 1), got 'red'\n");
     const auto alone = runTexsplat("render " + scene + " -o " + output + " --outline-color 1,0,0");
     EXPECT_EQ(alone.exitCode, 2); // a usage error, CLI11's
     const std::string expected = "texsplat: error: --outline-color requires --outline\n";

@@ -466,7 +466,7 @@ TEST_F(RenderCommandTest, pngAndExrShareTheBackgroundAndCompareSaysWhenTheyDoNot
               std::string::npos)
         << compared.standardError;
     expectError(scene + " -o " + path("bad.png") + " --background 1.5,0,0",
-                "--background: expected black, white, transparent or r,g,b (linear, 0 to 1), got "
+                "--background: expected black, white, transparent or r,g,b (0 to 1), got "
                 "'1.5,0,0'",
                 path("bad.png"));
 }

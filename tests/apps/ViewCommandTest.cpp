@@ -94,7 +94,9 @@ TEST_F(ViewCommandTest, showsTheSameFramesWithEitherBackend) {
         }
     }
     EXPECT_GT(images[0].pixel(32, 24).r, 0.1f) << "the tornado in the middle";
-    EXPECT_LE(largest, 2.0f / 255.0f) << "the PNGs' 8 bits, but for rounding";
+    // The backends differ by up to 0.016 in the tornado's brightest splats (the CPU backend's
+    // stamps, docs/backends.md): 4 steps of the 8-bit colour values.
+    EXPECT_LE(largest, 4.0f / 255.0f) << "the PNGs' 8 bits, but for the backends' rounding";
 }
 
 TEST_F(ViewCommandTest, startsCoarseRefinesToFullQualityAndReportsEachFrame) {

@@ -1,7 +1,6 @@
 #include "nodes/image/detail/PngCodec.h"
 
 #include "nodes/image/detail/FileBytes.h"
-#include "nodes/image/detail/Srgb.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
 
@@ -57,7 +56,7 @@ void writePng(const Image& image, std::ostream& stream, const std::string& path)
         const float alpha = glm::clamp(rgba.a, 0.0f, 1.0f);
         const glm::vec3 color = alpha > 0.0f ? glm::vec3(rgba) / alpha : glm::vec3(0.0f);
         for (int c = 0; c < 3; ++c)
-            bytes[4 * i + c] = toByte(linearToSrgb(glm::clamp(color[c], 0.0f, 1.0f)));
+            bytes[4 * i + c] = toByte(color[c]);
         bytes[4 * i + 3] = toByte(alpha);
     }
     if (nonFinite > 0)
@@ -91,7 +90,7 @@ Image readPng(const std::string& path) {
         const float alpha = rgba[3] / 65535.0f;
         glm::vec4& pixel = image.data()[i];
         for (int c = 0; c < 3; ++c)
-            pixel[c] = srgbToLinear(rgba[c] / 65535.0f) * alpha;
+            pixel[c] = rgba[c] / 65535.0f * alpha;
         pixel.a = alpha;
     }
     return image;
