@@ -72,6 +72,9 @@ render::ViewChange parseViewChange(const Framing& framing) {
     if (!framing.direction.empty()) {
         change.direction = parseDirection(framing.direction);
     }
+    if (!framing.up.empty()) {
+        change.up = parseDirection(framing.up, "--up");
+    }
     return change;
 }
 
@@ -96,10 +99,10 @@ glm::ivec2 parseSize(const std::string& text, const std::string& option) {
     return size;
 }
 
-glm::vec3 parseDirection(const std::string& text) {
+glm::vec3 parseDirection(const std::string& text, const std::string& option) {
     const std::optional<glm::vec3> direction = parseThreeNumbers(text);
     if (!direction || *direction == glm::vec3(0.0f)) {
-        throw DataError("--direction: expected three numbers x,y,z not all zero, got '" + text +
+        throw DataError(option + ": expected three numbers x,y,z not all zero, got '" + text +
                         "'");
     }
     return *direction;
@@ -247,10 +250,15 @@ sg::Node::Ptr loadScene(const std::string& path) {
 void addViewOptions(CLI::App& command, Framing& framing) {
     command.add_option("--camera", framing.camera,
                        "perspective|orthographic: the camera that frames a scene without one "
-                       "(default perspective)");
+                       "(default perspective, 30 degrees high), or the scene's own camera made "
+                       "that kind, seeing the same at its focal distance");
     command.add_option("--direction", framing.direction,
                        "x,y,z: viewing direction, of the camera that frames a scene without one "
-                       "or of the scene's own camera (turned about its focal point)");
+                       "(default 0,0,-1: from +z) or of the scene's own camera (turned about its "
+                       "focal point)");
+    command.add_option("--up", framing.up,
+                       "x,y,z: the direction that is up in the image (default: +y for a view "
+                       "along -z; for others the smallest turn from that view)");
     command.add_option("--azimuth", framing.azimuth,
                        "Degrees to orbit the camera about its up axis through its focal point")
         ->type_name("DEG");
@@ -264,11 +272,11 @@ void addViewOptions(CLI::App& command, Framing& framing) {
 sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect,
                          const sg::WorkProgress& progress) {
     const render::ViewChange change = parseViewChange(framing);
-    if (nodes::Camera* camera = render::findCamera(*scene)) {
-        if (!framing.camera.empty()) {
-            throw DataError("--camera: the scene has its own camera (" + camera->describe() +
-                            "); --camera chooses the one that frames a scene without one");
-        }
+    nodes::Camera* camera = render::findCamera(*scene);
+    if (camera && !framing.camera.empty()) {
+        // The scene's camera, of the kind asked for, seeing the same at its focal distance.
+        render::replaceCamera(*scene, *camera,
+                              render::cameraOfKind(*camera, parseFramingCamera(framing.camera)));
     }
     render::Framing frame;
     frame.camera = parseFramingCamera(framing.camera);
@@ -276,7 +284,16 @@ sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, flo
                                                 : glm::vec3(0.0f, 0.0f, -1.0f);
     frame.name = framing.sceneName.empty() ? "default scene" : framing.sceneName;
     frame.progress = progress;
-    return render::viewedScene(scene, aspect, frame, change);
+    try {
+        return render::viewedScene(scene, aspect, frame, change);
+    } catch (const DataError& error) {
+        // An up along the view is told in the option's words.
+        const std::string message = error.what();
+        if (camera && message.rfind("up: ", 0) == 0) {
+            throw DataError("--up: " + framing.up + ": " + message.substr(4));
+        }
+        throw;
+    }
 }
 
 } // namespace texsplat::apps

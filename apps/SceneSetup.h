@@ -24,8 +24,8 @@ namespace texsplat::apps {
 /// meet). Throws DataError naming `option` otherwise.
 glm::ivec2 parseSize(const std::string& text, const std::string& option = "--size");
 
-/// @brief "x,y,z", finite and not all zero. Throws DataError naming --direction otherwise.
-glm::vec3 parseDirection(const std::string& text);
+/// @brief "x,y,z", finite and not all zero. Throws DataError naming `option` otherwise.
+glm::vec3 parseDirection(const std::string& text, const std::string& option = "--direction");
 
 /// @brief The premultiplied clear colour `--background` names: "black" (the default), "white",
 /// "transparent" (alpha 0: the layer alone, for compositing) or "r,g,b" (0 to 1, opaque; display values as colour maps give them).
@@ -74,12 +74,14 @@ sg::Node::Ptr loadScene(const SceneSource& source);
 /// is empty.
 sg::Node::Ptr loadScene(const std::string& path);
 
-/// @brief How to frame a scene that has no camera of its own (the --camera and --direction
-/// options of `render` and `view`).
+/// @brief How to frame a scene that has no camera of its own, or change the view of its camera
+/// (the --camera, --direction, --up, --azimuth, --elevation and --zoom options of `render` and
+/// `view`).
 struct Framing {
     std::string sceneName; ///< the scene file ("" for the default scene), for messages
     std::string camera;    ///< "perspective" (default when empty) or "orthographic"
     std::string direction; ///< "x,y,z" viewing direction; empty: the scene's usual one
+    std::string up;        ///< "x,y,z" up in the image; empty: the smallest turn from +y
     std::string azimuth;   ///< degrees about the camera's up axis through its focal point
     std::string elevation; ///< degrees about its right axis through the focal point, after azimuth
     std::string zoom;      ///< magnification > 0 (2: things look twice as large)
@@ -93,17 +95,18 @@ void checkSceneOptions(const Framing& framing, const BudgetOverride& budget);
 /// @throws DataError for anything else.
 render::FramingCamera parseFramingCamera(const std::string& camera);
 
-/// @brief Adds --camera, --direction, --azimuth, --elevation and --zoom to `command`, filling
-/// `framing`.
+/// @brief Adds --camera, --direction, --up, --azimuth, --elevation and --zoom to `command`,
+/// filling `framing`.
 void addViewOptions(CLI::App& command, Framing& framing);
 
-/// @brief The scene as drawn: `scene` itself when it has a camera (then `framing` must not ask
-/// for another kind of camera), else a Separator holding a new camera that frames the scene's
-/// bounding box for a viewport of `aspect`, then the scene. Then, on the scene's own camera or
-/// the new one: `direction` turns it to look along that direction at its focal point (for a
-/// framing camera it is the direction framed from), `azimuth` and `elevation` orbit it about its
-/// focal point (ParaView's and the viewer's orbit), `zoom` magnifies (a narrower opening angle,
-/// or a smaller orthographic height). Framing takes the scene's bounding box, which loads (or
+/// @brief The scene as drawn: `scene` itself when it has a camera (`camera` of the other kind
+/// replaces it by one that sees the same at its focal distance, render::cameraOfKind()), else a
+/// Separator holding a new camera that frames the scene's bounding box for a viewport of
+/// `aspect`, then the scene. Then, on the scene's own camera or the new one: `direction` turns
+/// it to look along that direction at its focal point (for a framing camera it is the direction
+/// framed from), `up` rolls it so that `up` is up in the image, `azimuth` and `elevation` orbit
+/// it about its focal point (ParaView's and the viewer's orbit), `zoom` magnifies (a narrower
+/// opening angle, or a smaller orthographic height). Framing takes the scene's bounding box, which loads (or
 /// generates) its volumes, telling `progress`: callers that time loading count this call in.
 /// @throws DataError for a bad option, or a scene with neither geometry nor camera;
 /// sg::Cancelled when `progress` cancelled a load.

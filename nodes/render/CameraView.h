@@ -31,4 +31,10 @@ struct CameraView {
 /// not be zero.
 sg::Rotation rotationLookingAlong(const glm::vec3& direction);
 
+/// @brief The camera orientation that looks along `direction` with `up` pointing up in the
+/// image as far as it can: the image's up is `up` less its part along `direction`.
+/// @throws DataError when `direction` or `up` is zero or not finite, or `up` is parallel to
+/// `direction` (no up can be seen).
+sg::Rotation rotationLookingAlong(const glm::vec3& direction, const glm::vec3& up);
+
 } // namespace texsplat::render

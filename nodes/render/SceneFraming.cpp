@@ -5,6 +5,7 @@
 #include "nodes/render/CameraView.h"
 #include "scenegraph/Coordinates.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/Group.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 #include "scenegraph/actions/SearchAction.h"
@@ -16,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <utility>
 
 namespace texsplat::render {
 namespace {
@@ -33,13 +35,18 @@ void checkViewChange(const ViewChange& change) {
     if (!(change.zoom > 0.0f) || !std::isfinite(change.zoom)) {
         throw DataError("zoom: expected a magnification > 0, got " + sg::formatFloat(change.zoom));
     }
-    if (change.direction) {
-        const glm::vec3& direction = *change.direction;
-        if (direction == glm::vec3(0.0f) || !std::isfinite(direction.x) ||
-            !std::isfinite(direction.y) || !std::isfinite(direction.z)) {
-            throw DataError("direction: expected three finite numbers x,y,z not all zero, got " +
-                            sg::formatFloat(direction.x) + "," + sg::formatFloat(direction.y) +
-                            "," + sg::formatFloat(direction.z));
+    for (const auto& [vector, name] : {std::pair(&change.direction, "direction"),
+                                       std::pair(&change.up, "up")}) {
+        if (!*vector) {
+            continue;
+        }
+        const glm::vec3& value = **vector;
+        if (value == glm::vec3(0.0f) || !std::isfinite(value.x) || !std::isfinite(value.y) ||
+            !std::isfinite(value.z)) {
+            throw DataError(std::string(name) + ": expected three finite numbers x,y,z not all "
+                                                "zero, got " +
+                            sg::formatFloat(value.x) + "," + sg::formatFloat(value.y) + "," +
+                            sg::formatFloat(value.z));
         }
     }
 }
@@ -52,8 +59,16 @@ void changeView(nodes::Camera& camera, const ViewChange& change) {
     glm::quat orientation = camera.orientation.value().quaternion();
     const glm::vec3 focus =
         camera.position.value() + orientation * glm::vec3(0.0f, 0.0f, -1.0f) * distance;
-    if (change.direction) {
-        orientation = rotationLookingAlong(*change.direction).quaternion();
+    if (change.direction || change.up) {
+        const glm::vec3 direction =
+            change.direction ? *change.direction : orientation * glm::vec3(0.0f, 0.0f, -1.0f);
+        try {
+            orientation = (change.up ? rotationLookingAlong(direction, *change.up)
+                                     : rotationLookingAlong(direction))
+                              .quaternion();
+        } catch (const DataError& error) {
+            throw DataError(std::string("up: ") + error.what());
+        }
     }
     orientation = glm::angleAxis(glm::radians(change.azimuth), orientation * glm::vec3(0, 1, 0)) *
                   orientation;
@@ -91,11 +106,19 @@ sg::Node::Ptr framedScene(const sg::Node::Ptr& scene, float aspect, const Framin
     }
     nodes::Camera::Ptr camera;
     if (framing.camera == FramingCamera::Perspective) {
-        camera = nodes::PerspectiveCamera::create();
+        auto perspective = nodes::PerspectiveCamera::create();
+        perspective->heightAngle.setValue(kFramingHeightAngle);
+        camera = perspective;
     } else {
         camera = nodes::OrthographicCamera::create();
     }
-    camera->orientation.setValue(rotationLookingAlong(framing.direction));
+    try {
+        camera->orientation.setValue(framing.up
+                                         ? rotationLookingAlong(framing.direction, *framing.up)
+                                         : rotationLookingAlong(framing.direction));
+    } catch (const DataError& error) {
+        throw DataError(framing.name + ": cannot frame it: " + error.what());
+    }
     sg::BoundingBoxAction box;
     box.setWorkProgress(framing.progress);
     box.apply(*scene);
@@ -132,11 +155,70 @@ sg::Node::Ptr viewedScene(const sg::Node::Ptr& scene, float aspect, Framing fram
     if (change.direction) {
         framing.direction = *change.direction;
     }
+    if (change.up) {
+        framing.up = change.up;
+    }
     sg::Node::Ptr root = framedScene(scene, aspect, framing);
     ViewChange orbit = change;
     orbit.direction.reset();
+    orbit.up.reset();
     changeView(*findCamera(*root), orbit);
     return root;
+}
+
+nodes::Camera::Ptr cameraOfKind(const nodes::Camera& camera, FramingCamera kind) {
+    const auto* perspective = dynamic_cast<const nodes::PerspectiveCamera*>(&camera);
+    const auto* orthographic = dynamic_cast<const nodes::OrthographicCamera*>(&camera);
+    const float distance = camera.focalDistance.value();
+    nodes::Camera::Ptr result;
+    if (kind == FramingCamera::Perspective) {
+        auto made = nodes::PerspectiveCamera::create();
+        if (perspective) {
+            made->heightAngle.setValue(perspective->heightAngle.value());
+        } else if (orthographic && distance > 0.0f) {
+            made->heightAngle.setValue(
+                2.0f * std::atan(0.5f * orthographic->height.value() / distance));
+        }
+        result = made;
+    } else {
+        auto made = nodes::OrthographicCamera::create();
+        if (orthographic) {
+            made->height.setValue(orthographic->height.value());
+        } else if (perspective) {
+            made->height.setValue(2.0f * distance *
+                                  std::tan(0.5f * perspective->heightAngle.value()));
+        }
+        result = made;
+    }
+    result->viewportMapping.setValue(camera.viewportMapping.value());
+    result->position.setValue(camera.position.value());
+    result->orientation.setValue(camera.orientation.value());
+    result->nearDistance.setValue(camera.nearDistance.value());
+    result->farDistance.setValue(camera.farDistance.value());
+    result->aspectRatio.setValue(camera.aspectRatio.value());
+    result->focalDistance.setValue(distance);
+    return result;
+}
+
+int replaceCamera(sg::Node& scene, const nodes::Camera& camera,
+                  const nodes::Camera::Ptr& replacement) {
+    sg::SearchAction search;
+    search.setType(nodes::Camera::classType());
+    search.setInterest(sg::SearchAction::Interest::All);
+    search.setSearchingAll(true);
+    search.apply(scene);
+    int replaced = 0;
+    for (const sg::Path& path : search.paths()) {
+        if (path.tail().get() != &camera || path.length() < 2) {
+            continue; // another camera, or the scene is the camera itself: nothing holds it
+        }
+        auto& parent = static_cast<sg::Group&>(*path.node(path.length() - 2));
+        if (const auto index = parent.findChild(camera)) {
+            parent.replaceChild(*index, replacement);
+            ++replaced;
+        }
+    }
+    return replaced;
 }
 
 } // namespace texsplat::render

@@ -158,10 +158,16 @@ TEST_F(RenderCommandTest, reportsBadInputsAndWritesNothing) {
                 "--camera: expected 'perspective' or 'orthographic', got 'fisheye'", png);
     expectError("-o " + png + " --direction 0,0,0",
                 "--direction: expected three numbers x,y,z not all zero, got '0,0,0'", png);
+    expectError("-o " + png + " --up 0,0,0",
+                "--up: expected three numbers x,y,z not all zero, got '0,0,0'", png);
+    expectError("-o " + png + " --direction 0,0,-1 --up 0,0,2",
+                "default scene: cannot frame it: the up direction is parallel to the viewing "
+                "direction: no up can be seen; give one across the view",
+                png);
     const std::string withCamera = writeScene("PerspectiveCamera { }\n");
-    expectError(withCamera + " -o " + png + " --camera orthographic",
-                "--camera: the scene has its own camera (PerspectiveCamera); --camera chooses "
-                "the one that frames a scene without one",
+    expectError(withCamera + " -o " + png + " --up 0,0,1",
+                "--up: 0,0,1: the up direction is parallel to the viewing direction: no up can "
+                "be seen; give one across the view",
                 png);
     expectError("-o " + png + " --zoom 0", "--zoom: expected a magnification > 0, got '0'", png);
     expectError("-o " + png + " --azimuth east", "--azimuth: expected degrees, got 'east'", png);
@@ -529,6 +535,51 @@ TEST_F(RenderCommandTest, cameraOptionsOrbitAndZoomAnyScenesCamera) {
     // Zoomed twice: the centre pixel's neighbourhood grows; the image's brightest values stay.
     EXPECT_GT(difference(front, zoomed), 0.01);
     EXPECT_GT(zoomed.statistics().mean.r, front.statistics().mean.r) << "more of the image is blob";
+    // --up rolls the view about its direction: x up turns the picture a quarter
+    // counter-clockwise.
+    const Image rolled = render("rolled.png", " --up 1,0,0");
+    double turned = 0.0;
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 32; ++x) {
+            // Looking along -z with +x up, +y points left and -y right: pixel (x, y) of the
+            // front view (x along +x, y down along -y) is at (y, 31 - x) of the rolled one.
+            const glm::vec4 d = front.pixel(x, y) - rolled.pixel(y, 31 - x);
+            turned += std::abs(d.r) + std::abs(d.g) + std::abs(d.b);
+        }
+    }
+    EXPECT_LT(turned / (32 * 32), 1e-3);
+    EXPECT_GT(difference(front, rolled), 0.01) << "the blob is not round: the roll shows";
+}
+
+TEST_F(RenderCommandTest, cameraOptionTurnsTheScenesCameraIntoTheOtherKind) {
+    // ParaView's parallel projection switch: the same view at the focal distance. A slab of
+    // glow seen from +z looks the same through both cameras at its own depth.
+    const std::string scene = writeScene("PerspectiveCamera { position 0.5 0.5 3 "
+                                         "focalDistance 2.5 heightAngle 0.2 }\n");
+    const auto render = [&](const std::string& name, const std::string& options) {
+        const auto result = runTexsplat("render " + scene + " -o " + path(name) +
+                                        " --size 32x32 --backend cpu" + options);
+        EXPECT_EQ(result.exitCode, 0) << options << ": " << result.standardError;
+        return texsplat::image::readImage(path(name));
+    };
+    const Image perspective = render("perspective.png", "");
+    const Image orthographic = render("orthographic.png", " --camera orthographic");
+    const Image back = render("back.png", " --camera perspective");
+    double sum = 0.0;
+    double unchanged = 0.0;
+    for (int y = 0; y < 32; ++y) {
+        for (int x = 0; x < 32; ++x) {
+            const glm::vec4 d = perspective.pixel(x, y) - orthographic.pixel(x, y);
+            sum += std::abs(d.r) + std::abs(d.g) + std::abs(d.b);
+            const glm::vec4 e = perspective.pixel(x, y) - back.pixel(x, y);
+            unchanged += std::abs(e.r) + std::abs(e.g) + std::abs(e.b);
+        }
+    }
+    EXPECT_GT(sum, 0.0) << "a perspective view of a box differs from a parallel one";
+    // Measured 0.010: the blob's near and far sides are 20 % nearer and farther than the focal
+    // point, so the perspective view shows them 25 % larger and 17 % smaller.
+    EXPECT_LT(sum / (32 * 32 * 3), 0.02) << "a narrow angle from afar is almost parallel";
+    EXPECT_EQ(unchanged, 0.0) << "--camera of the scene's own kind changes nothing";
 }
 
 } // namespace
