@@ -30,8 +30,8 @@ void addAnnotationOptions(CLI::App& command, AnnotationOptions& options) {
         ->needs(colorbar);
     CLI::Option* outline =
         command.add_flag("--outline", options.outline,
-                         "Draw the 12 edges of each splat node's volume box into the image, seen "
-                         "by the scene's camera");
+                         "Draw the 12 edges of each splat node's volume box, seen by the scene's "
+                         "camera: the edges behind the volume under it, the others over it");
     command
         .add_option("--outline-color", options.outlineColor,
                     "Colour of --outline: black, white or r,g,b (0 to 1, as colour maps give "
@@ -44,6 +44,7 @@ annotation::AnnotationRequest annotationRequest(const AnnotationOptions& options
                                                 const glm::vec4& background) {
     annotation::AnnotationRequest request;
     request.background = background;
+    request.layered = true; // rendered over request.renderBackground()
     if (options.outline) {
         request.outline = parseOpaqueColor(options.outlineColor, "--outline-color");
     }

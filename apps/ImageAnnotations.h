@@ -30,7 +30,8 @@ struct AnnotationOptions {
 /// and --outline-color to `command`.
 void addAnnotationOptions(CLI::App& command, AnnotationOptions& options);
 
-/// @brief What `options` ask for, for a picture composited over `background` (premultiplied).
+/// @brief What `options` ask for, for a picture composited over `background` (premultiplied) and
+/// rendered over the request's renderBackground() (layered).
 /// @throws DataError naming the option for a bad position, tick count or colour.
 annotation::AnnotationRequest annotationRequest(const AnnotationOptions& options,
                                                 const glm::vec4& background);

@@ -485,12 +485,16 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const Animation& animation = options.animation;
     setMemoryLimit(options.memoryLimit);
     const ThreadLimit threadLimit(arguments.threads);
+    // What the picture is rendered over: the layer alone when the outline's back edges go
+    // under it (ImageAnnotations composites the background then).
+    const glm::vec4 renderBackground =
+        annotationRequest(arguments.annotations, options.background).renderBackground();
     std::optional<render::SceneRenderer> renderer;
     if (!arguments.rayCast) {
         render::SceneRenderOptions renderOptions;
         renderOptions.width = size.x;
         renderOptions.height = size.y;
-        renderOptions.background = options.background;
+        renderOptions.background = renderBackground;
         renderOptions.backend = options.request;
         renderOptions.threads = arguments.threads;
         renderOptions.advice = kRenderAdvice;
@@ -518,7 +522,7 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
     const annotation::ImageAnnotations annotations =
         imageAnnotations(arguments.annotations, *root, options.background);
     if (arguments.rayCast) {
-        runRayCast(arguments, animation, *root, size, options.background, setup, annotations);
+        runRayCast(arguments, animation, *root, size, renderBackground, setup, annotations);
         return;
     }
     const bool withDepth = options.format == image::ImageFormat::Exr;

@@ -32,8 +32,22 @@ void ImageAnnotations::setBarTitles(const std::vector<std::string>& titles) {
 image::Image ImageAnnotations::annotated(const image::Image& picture) const {
     image::Image figure = picture;
     if (mRequest.outline) {
-        VolumeOutline::ofScene(mRoot, picture.width(), picture.height(), *mRequest.outline)
-            .draw(figure);
+        const VolumeOutline outline =
+            VolumeOutline::ofScene(mRoot, picture.width(), picture.height(), *mRequest.outline);
+        if (mRequest.layered) {
+            // The background with the edges behind the volume, under the rendered layer ("over"
+            // on premultiplied colour), then the edges in front over it.
+            image::Image under(picture.width(), picture.height());
+            under.fill(mRequest.background);
+            outline.draw(under, VolumeOutline::Edges::Behind);
+            for (std::size_t i = 0; i < figure.pixelCount(); ++i) {
+                const glm::vec4& layer = picture.pixels()[i];
+                figure.data()[i] = layer + (1.0f - layer.a) * under.pixels()[i];
+            }
+            outline.draw(figure, VolumeOutline::Edges::InFront);
+        } else {
+            outline.draw(figure);
+        }
     }
     if (!mBars.empty()) {
         const ColorLegend legend(mBars, {mRequest.colorbarPosition, mRequest.colorbarTicks},

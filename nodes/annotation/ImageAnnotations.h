@@ -24,11 +24,23 @@ struct AnnotationRequest {
     /// @brief What the picture is shown over (premultiplied): the colour bars' strip is filled
     /// with it and their ink reads on it.
     glm::vec4 background{0.0f, 0.0f, 0.0f, 1.0f};
+    /// @brief Whether the picture is rendered over renderBackground(), the layer alone when an
+    /// outline is asked for, so that the edges behind the volume go under it and `background`
+    /// is composited here; otherwise (a picture already over its background, as the Python
+    /// module's) every edge is drawn over it.
+    bool layered = false;
+
+    /// @brief What to render the picture over: transparent when `layered` and an outline is
+    /// asked for, else `background`.
+    glm::vec4 renderBackground() const {
+        return layered && outline ? glm::vec4(0.0f) : background;
+    }
 };
 
 /// @brief The annotations of a scene as it is drawn: the volumes' outline (per image, with the
-/// scene's camera as it is then) and the colour bars of the scene's splat nodes
-/// (ColorBar::ofScene(), ColorLegend) in a strip beside the picture.
+/// scene's camera as it is then: the edges where two faces turned away from the camera meet
+/// under a layered picture, the others over it; VolumeOutline) and the colour bars of the
+/// scene's splat nodes (ColorBar::ofScene(), ColorLegend) in a strip beside the picture.
 class ImageAnnotations {
 public:
     /// @brief The annotations `request` asks for on the scene under `root` (which must outlive
@@ -42,9 +54,10 @@ public:
     /// bars.
     void setBarTitles(const std::vector<std::string>& titles);
 
-    /// @brief The figure of `picture` (a copy; `picture` itself when nothing was asked for):
-    /// the outline drawn over it, then the colour bars' strip added beside it. The outline uses
-    /// the scene's camera as it is now: call it after rendering the frame.
+    /// @brief The figure of `picture` (rendered over the request's renderBackground()): the
+    /// outline's back edges under it and the others over it (all over it unless layered), then
+    /// the colour bars' strip added beside it. The outline uses the scene's camera as it is now:
+    /// call it after rendering the frame.
     image::Image annotated(const image::Image& picture) const;
 
     /// @brief Writes annotated(`picture`) to `path` (image::writeImage()).

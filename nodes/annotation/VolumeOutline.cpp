@@ -9,6 +9,7 @@
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
 
 #include <algorithm>
 #include <array>
@@ -37,7 +38,13 @@ class OutlineAction : public sg::Action {
 public:
     explicit OutlineAction(float aspectRatio) : sg::Action(methods()), mAspect(aspectRatio) {}
 
-    std::vector<std::array<glm::vec4, 8>> boxes;
+    // A box's corners in clip space, and which of its faces face the camera: face 2·axis is
+    // the one at the box's minimum along that axis, 2·axis + 1 at its maximum.
+    struct Box {
+        std::array<glm::vec4, 8> corners;
+        std::array<bool, 6> facesCamera;
+    };
+    std::vector<Box> boxes;
 
 private:
     static sg::MethodTable& methods() {
@@ -61,13 +68,24 @@ private:
         }
         const render::CameraView camera =
             render::CameraView::current(action.state(), node, outline.mAspect);
-        const glm::mat4 toClip = camera.projection * camera.view *
-                                 action.state().get<sg::ModelMatrixElement>().matrix;
-        std::array<glm::vec4, 8> corners;
+        const glm::mat4 toCamera =
+            camera.view * action.state().get<sg::ModelMatrixElement>().matrix;
+        const glm::mat4 toClip = camera.projection * toCamera;
+        Box result;
         for (int corner = 0; corner < 8; ++corner) {
-            corners[corner] = toClip * glm::vec4(box.corner(corner), 1.0f);
+            result.corners[corner] = toClip * glm::vec4(box.corner(corner), 1.0f);
         }
-        outline.boxes.push_back(corners);
+        // The eye in the box's space, homogeneous: a point for a perspective camera, the
+        // direction towards the viewer (w = 0) for an orthographic one.
+        const bool isPerspective = camera.projection[3][3] == 0.0f;
+        const glm::vec4 eye = glm::inverse(toCamera) * (isPerspective ? glm::vec4(0, 0, 0, 1)
+                                                                        : glm::vec4(0, 0, 1, 0));
+        for (int axis = 0; axis < 3; ++axis) {
+            // The eye is outside the face's plane, on the side its outward normal points to.
+            result.facesCamera[2 * axis] = box.min()[axis] * eye.w - eye[axis] > 0.0f;
+            result.facesCamera[2 * axis + 1] = eye[axis] - box.max()[axis] * eye.w > 0.0f;
+        }
+        outline.boxes.push_back(result);
     }
 
     float mAspect;
@@ -109,21 +127,31 @@ VolumeOutline VolumeOutline::ofScene(sg::Node& root, int width, int height,
         const glm::vec2 ndc = glm::vec2(clip) / clip.w;
         return glm::vec2(0.5f * (ndc.x + 1.0f), 0.5f * (1.0f - ndc.y)) * size;
     };
-    for (const std::array<glm::vec4, 8>& corners : action.boxes) {
+    for (const OutlineAction::Box& box : action.boxes) {
         for (const auto& [from, to] : kEdges) {
-            const glm::vec4& a = corners[from];
-            const glm::vec4& b = corners[to];
+            const glm::vec4& a = box.corners[from];
+            const glm::vec4& b = box.corners[to];
             const auto [t0, t1] = insideViewVolume(a, b);
-            if (t0 <= t1) {
-                outline.mSegments.push_back(
-                    {toPixels(glm::mix(a, b, t0)), toPixels(glm::mix(a, b, t1))});
+            if (t0 > t1) {
+                continue;
             }
+            // The edge runs along the axis in which its corners differ; its two faces are the
+            // sides of the other two axes that its corners share.
+            bool isBehind = true;
+            for (int axis = 0; axis < 3; ++axis) {
+                const int bit = 1 << axis;
+                if ((from & bit) == (to & bit)) {
+                    isBehind = isBehind && !box.facesCamera[2 * axis + ((from & bit) ? 1 : 0)];
+                }
+            }
+            outline.mSegments.push_back(
+                {toPixels(glm::mix(a, b, t0)), toPixels(glm::mix(a, b, t1)), isBehind});
         }
     }
     return outline;
 }
 
-void VolumeOutline::draw(image::Image& image) const {
+void VolumeOutline::draw(image::Image& image, Edges which) const {
     const int width = std::max(1, std::min(image.width(), image.height()) / 256);
     // The `width` × `width` pixels whose centres lie nearest to points one pixel apart along
     // the line's longer axis.
@@ -138,6 +166,10 @@ void VolumeOutline::draw(image::Image& image) const {
         }
     };
     for (const Segment& segment : mSegments) {
+        if ((which == Edges::InFront && segment.isBehind) ||
+            (which == Edges::Behind && !segment.isBehind)) {
+            continue;
+        }
         const glm::vec2 delta = segment.to - segment.from;
         const int steps =
             static_cast<int>(std::ceil(std::max(std::abs(delta.x), std::abs(delta.y))));

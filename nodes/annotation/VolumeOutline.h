@@ -17,7 +17,11 @@ namespace texsplat::annotation {
 /// The boxes are the splat nodes' bounding boxes (the volume's bounds under the model matrix
 /// where the splat node stands) and the camera is render::CameraView::current() at the node,
 /// what every backend projects the splats with; edges are clipped to the view volume. Lines
-/// are opaque, drawn over the image (not hidden by the volume), `max(1, side / 256)` pixels wide.
+/// are opaque, `max(1, side / 256)` pixels wide.
+///
+/// An edge between two faces that both face away from the camera lies behind the volume: it is
+/// drawn behind it (Edges::Behind, under the rendered layer, so the volume hides it where it is
+/// opaque), the others in front (Edges::InFront), as a box of glass would show them.
 class VolumeOutline {
 public:
     /// @brief An edge in pixel coordinates: x to the right, y down from the top row, pixel
@@ -25,7 +29,11 @@ public:
     struct Segment {
         glm::vec2 from;
         glm::vec2 to;
+        bool isBehind = false; ///< both faces of the edge face away from the camera
     };
+
+    /// @brief Which edges draw() draws.
+    enum class Edges { All, InFront, Behind };
 
     /// @brief The outline of the splat nodes under `root` in an image of `width` × `height`, in
     /// the premultiplied colour `rgba`.
@@ -36,9 +44,9 @@ public:
     /// @brief The visible parts of the edges.
     const std::vector<Segment>& segments() const { return mSegments; }
 
-    /// @brief Draws the edges into `image` (of the size given to ofScene()), replacing the pixels
-    /// they cover.
-    void draw(image::Image& image) const;
+    /// @brief Draws the `which` edges into `image` (of the size given to ofScene()), replacing
+    /// the pixels they cover.
+    void draw(image::Image& image, Edges which = Edges::All) const;
 
 private:
     std::vector<Segment> mSegments;

@@ -1,5 +1,6 @@
 // `texsplat render --outline`: the 12 edges of the volume's box, projected with the scene's
-// camera, drawn into the image by either backend and the reference.
+// camera, drawn into the image by either backend and the reference: the edges that face the
+// camera over the volume, the three behind it under it.
 
 #include "RunCommand.h"
 
@@ -28,8 +29,8 @@ constexpr float kAngle = 0.5f; // of the Transform, about (1, 1, 0)
 class OutlineCommandTest : public test::ScratchDirectoryTest {
 protected:
     // A blob volume turned by a Transform, seen by an orthographic camera on the +z axis whose
-    // view is 1.5 times the box's diagonal high.
-    std::string writeScene() {
+    // view is 1.5 times the box's diagonal high; `opacities` the transfer function's.
+    std::string writeScene(const std::string& opacities = "[ 0, 2 ]") {
         const auto volume = nodes::VolumeData::create();
         volume->resolution.setValue(glm::vec3(12.0f));
         mBox = volume->bounds();
@@ -38,7 +39,7 @@ protected:
                      "#Inventor V2.1 ascii\nSeparator {\n"
                      "OrthographicCamera { position 0 0 50 nearDistance 1 farDistance 100 "
                      "height " + std::to_string(mViewHeight) + " }\n"
-                     "TransferFunction { opacities [ 0, 2 ] }\n"
+                     "TransferFunction { opacities " + opacities + " }\n"
                      "Transform { rotation 0.70710678 0.70710678 0 " + std::to_string(kAngle) +
                          " }\n"
                      "VolumeData { source BLOB resolution 12 12 12 }\n"
@@ -53,16 +54,23 @@ protected:
         const float halfHeight = 0.5f * mViewHeight;
         const float halfWidth = halfHeight * float(kWidth) / float(kHeight);
         std::vector<glm::vec2> corners;
+        float farthest = 0.0f;
         for (int corner = 0; corner < 8; ++corner) {
             const glm::vec3 world(rotation * glm::vec4(mBox.corner(corner), 1.0f));
             corners.emplace_back((world.x / halfWidth + 1.0f) * 0.5f * kWidth,
                                  (1.0f - world.y / halfHeight) * 0.5f * kHeight);
+            // The camera looks along -z: the hidden corner is the lowest one.
+            if (corner == 0 || world.z < farthest) {
+                farthest = world.z;
+                mHiddenCorner = corner;
+            }
         }
         return corners;
     }
 
     sg::Box3 mBox;
     float mViewHeight = 0.0f;
+    mutable std::size_t mHiddenCorner = 0; // set by projectedCorners(): where the three faces turned away from the camera meet
 };
 
 // Whether a pixel within one of `at` is green, the outline colour of the test.
@@ -97,13 +105,47 @@ TEST_F(OutlineCommandTest, theBoxCornersAreDrawnWithTheScenesCameraInEveryBacken
         for (std::size_t corner = 0; corner < corners.size(); ++corner) {
             ASSERT_GT(corners[corner].x, 1.0f);
             ASSERT_LT(corners[corner].x, kWidth - 1.0f);
-            EXPECT_TRUE(greenNear(with, corners[corner]))
+            EXPECT_EQ(greenNear(with, corners[corner]), corner != mHiddenCorner)
                 << how << " corner " << corner << " at " << corners[corner].x << ", "
-                << corners[corner].y;
+                << corners[corner].y << ": green over the volume unless hidden";
             EXPECT_FALSE(greenNear(without, corners[corner])) << how << " corner " << corner;
         }
-        // Between two corners joined by an edge (0 and 1 differ in x only): the line.
-        EXPECT_TRUE(greenNear(with, 0.5f * (corners[0] + corners[1]))) << how;
+        // The hidden corner's edges lie under the volume: green added where it lets light
+        // through, (1 − α) times the line, red and blue as without them.
+        const glm::ivec2 hidden(glm::floor(corners[mHiddenCorner]));
+        const glm::vec4 under = with.pixel(hidden.x, hidden.y);
+        const glm::vec4 alone = without.pixel(hidden.x, hidden.y);
+        EXPECT_NEAR(under.r, alone.r, 1.0f / 255.0f) << how;
+        EXPECT_NEAR(under.b, alone.b, 1.0f / 255.0f) << how;
+        EXPECT_GT(under.g, alone.g + 0.1f) << how << ": the blob is thin at its box's corners";
+    }
+}
+
+TEST_F(OutlineCommandTest, anOpaqueVolumeHidesTheEdgesBehindIt) {
+    // Every voxel opaque: the box is a solid whose silhouette holds the hidden corner.
+    const std::string scene = writeScene("[ 50, 50 ]");
+    const std::vector<glm::vec2> corners = projectedCorners();
+    const std::string output = path("opaque.png");
+    const std::string size =
+        " --size " + std::to_string(kWidth) + "x" + std::to_string(kHeight) + " --backend cpu";
+    ASSERT_EQ(runTexsplat("render " + scene + " -o " + output + size).exitCode, 0);
+    const image::Image without = image::readImage(output);
+    ASSERT_EQ(runTexsplat("render " + scene + " -o " + output + size +
+                          " --outline --outline-color 0,1,0")
+                  .exitCode,
+              0);
+    const image::Image with = image::readImage(output);
+    const glm::ivec2 hidden(glm::floor(corners[mHiddenCorner]));
+    for (int dy = -2; dy <= 2; ++dy)
+        for (int dx = -2; dx <= 2; ++dx) {
+            EXPECT_EQ(with.pixel(hidden.x + dx, hidden.y + dy),
+                      without.pixel(hidden.x + dx, hidden.y + dy))
+                << "the hidden corner's edges do not show through an opaque volume";
+        }
+    for (std::size_t corner = 0; corner < corners.size(); ++corner) {
+        if (corner != mHiddenCorner) {
+            EXPECT_TRUE(greenNear(with, corners[corner])) << "corner " << corner;
+        }
     }
 }
 

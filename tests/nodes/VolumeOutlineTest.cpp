@@ -65,6 +65,43 @@ TEST(VolumeOutline, edgesAreClippedToTheViewFromInsideTheVolume) {
     }
 }
 
+TEST(VolumeOutline, edgesOfFacesTurnedAwayLieBehindTheVolume) {
+    // Seen from a corner's side: three faces face the eye, three do not; the three edges where
+    // two of the far faces meet lie behind the volume.
+    for (const std::string camera :
+         {"PerspectiveCamera { position 3 4 10 orientation -0.8 0.6 0 0.45 nearDistance 1 "
+          "farDistance 100 }",
+          "OrthographicCamera { position 3 4 10 orientation -0.8 0.6 0 0.45 nearDistance 1 "
+          "farDistance 100 height 4 }"}) {
+        const sg::Node::Ptr scene = sceneWith(camera, "TextureSplat { }");
+        const VolumeOutline outline = VolumeOutline::ofScene(*scene, 128, 128, glm::vec4(1.0f));
+        ASSERT_EQ(outline.segments().size(), 12u) << camera;
+        int behind = 0;
+        for (const VolumeOutline::Segment& segment : outline.segments()) {
+            behind += segment.isBehind ? 1 : 0;
+        }
+        EXPECT_EQ(behind, 3) << camera;
+        image::Image front(128, 128);
+        outline.draw(front, VolumeOutline::Edges::InFront);
+        image::Image back(128, 128);
+        outline.draw(back, VolumeOutline::Edges::Behind);
+        image::Image all(128, 128);
+        outline.draw(all);
+        int frontPixels = 0;
+        int backPixels = 0;
+        int allPixels = 0;
+        for (int y = 0; y < 128; ++y)
+            for (int x = 0; x < 128; ++x) {
+                frontPixels += front.pixel(x, y).a > 0.0f ? 1 : 0;
+                backPixels += back.pixel(x, y).a > 0.0f ? 1 : 0;
+                allPixels += all.pixel(x, y).a > 0.0f ? 1 : 0;
+            }
+        EXPECT_GT(backPixels, 20);
+        EXPECT_GT(frontPixels, 2 * backPixels);
+        EXPECT_LE(allPixels, frontPixels + backPixels);
+    }
+}
+
 TEST(VolumeOutline, aSceneWithoutSplatNodesHasNone) {
     const sg::Node::Ptr scene = sceneWith("PerspectiveCamera { position 0 0 10 }", "");
     EXPECT_TRUE(VolumeOutline::ofScene(*scene, 64, 64, glm::vec4(1.0f)).segments().empty());
