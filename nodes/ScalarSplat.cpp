@@ -11,7 +11,9 @@
 #include "nodes/render/FrameAction.h"
 #include "nodes/render/KernelVolumeMedium.h"
 #include "nodes/render/SplatView.h"
+#include "nodes/render/VolumeLighting.h"
 #include "nodes/render/detail/ClassificationCache.h"
+#include "nodes/render/detail/ShadingCache.h"
 #include "octree/Cut.h"
 #include "octree/DepthSort.h"
 #include "octree/Refiner.h"
@@ -53,7 +55,9 @@ auto timed(sg::RenderStatistics& statistics, sg::RenderPhase phase, Step&& step)
 
 } // namespace
 
-ScalarSplat::ScalarSplat() : mCache(std::make_unique<render::detail::ClassificationCache>()) {
+ScalarSplat::ScalarSplat()
+    : mCache(std::make_unique<render::detail::ClassificationCache>()),
+      mShading(std::make_unique<render::detail::ShadingCache>()) {
     addField(size, "size", 1.6f,
              "Extent of each splat: its square reaches this many voxels from the centre (paper: "
              "1.6), > 0");
@@ -112,9 +116,10 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     });
     const bool withMarks = footprint()->hasMarks();
     const bool mayCut = errorThreshold.value() > 0.0f || maxSplats.value() > 0;
+    const bool isShaded = isShadedBy(transfer);
     // Each stage's allocation is estimated and refused before it is made: the classified grid
-    // now (every stored voxel may be visible), the octree and the splats once the classified
-    // grid has counted the voxels that are.
+    // now (every stored voxel may be visible), the octree, the splats and the shading once the
+    // classified grid has counted the voxels that are.
     const detail::SplatMemory classifiedMemory = detail::withNodeContext(*this, [&] {
         const detail::SplatMemory estimate = detail::estimateClassification(volume, withMarks);
         detail::checkClassificationMemory(estimate);
@@ -152,11 +157,30 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         const detail::SplatMemory estimate = detail::estimateSplats(
             classifiedMemory, classified->memoryBytes() + mCache->dataSummaryBytes(),
             classified->nonEmptyVoxelCount(), withMarks, mayCut,
-            static_cast<std::uint64_t>(maxSplats.value()));
+            static_cast<std::uint64_t>(maxSplats.value()),
+            isShaded ? detail::shadingBytesFor(*classified) : 0);
         detail::checkSplatMemory(estimate);
         return estimate;
     });
+    // A shaded medium draws the classified grid lit per voxel (pre-shaded colour), cached while
+    // the grid, its placement and the lighting shade alike; its cuts are the lit grid's.
+    const std::shared_ptr<const octree::ClassifiedGrid> unshaded = classified;
+    if (isShaded) {
+        const render::VolumeLighting lighting = render::VolumeLighting::current(state, camera,
+                                                                                transfer);
+        classified = timed(statistics, sg::RenderPhase::Classify, [&] {
+            return detail::withNodeContext(*this, [&] {
+                return withMemoryStage("shading", memory.shading, detail::kSplatMemoryAdvice,
+                                       [&] { return mShading->shaded(unshaded, model, lighting); });
+            });
+        });
+    } else {
+        mShading->clear();
+    }
     const auto tree = [&]() -> const octree::Octree& {
+        if (isShaded) {
+            return mShading->octree(action.workProgress());
+        }
         return isPreview ? mCache->previewOctree() : mCache->octree();
     };
     // A budget that holds every non-empty voxel draws them all, in slice order: the
@@ -239,6 +263,9 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     const volume::VectorGridPtr vectorGrid = withMarks ? volume.vectorGrid() : nullptr;
     bytes.grids += vectorGrid ? vectorGrid->memoryBytes() : volume.scalarGrid()->memoryBytes();
     bytes.classified += classified->memoryBytes() + mCache->dataSummaryBytes();
+    if (isShaded) {
+        bytes.classified += unshaded->memoryBytes() + mShading->gradientBytes();
+    }
     bytes.octree += fullResolution ? 0 : tree().memoryBytes();
     bytes.splats += splats->memoryBytes() + mDepthSorter.memoryBytes();
     result.splats = splats;
@@ -281,6 +308,7 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
     volume.load(action.workProgress());
     const volume::ScalarGridPtr grid = volume.scalarGrid();
     mCache->setWorkProgress(action.workProgress());
+    const bool isShaded = isShadedBy(transfer);
     const std::shared_ptr<const octree::ClassifiedGrid> classified =
         detail::withNodeContext(*this, [&] {
             const detail::SplatMemory memory = detail::estimateClassification(volume, false);
@@ -289,8 +317,26 @@ void ScalarSplat::rayCast(sg::RayCastAction& action) {
                                    [&] { return mCache->classified(grid, transfer); });
         });
     const glm::mat4& model = action.state().get<sg::ModelMatrixElement>().matrix;
-    auto medium = detail::withNodeContext(
-        *this, [&] { return std::make_shared<render::KernelVolumeMedium>(classified, model); });
+    // A shaded medium is lit per sample, by the gradient interpolated from the voxels' (the
+    // splats light each voxel): the reference of what the splats approximate.
+    std::optional<render::KernelVolumeMedium::Shading> shading;
+    if (isShaded) {
+        shading.emplace();
+        shading->lighting = render::VolumeLighting::current(action.state(), camera, transfer);
+        detail::withNodeContext(*this, [&] {
+            const std::uint64_t bytes = detail::shadingBytesFor(*classified);
+            checkMemory("shading the ray-cast reference's " +
+                            std::to_string(classified->nonEmptyVoxelCount()) + " voxels",
+                        bytes, detail::kSplatMemoryAdvice);
+            withMemoryStage("shading", bytes, detail::kSplatMemoryAdvice,
+                            [&] { mShading->shaded(classified, model, shading->lighting); });
+        });
+        shading->gradients = mShading->gradients();
+    }
+    auto medium = detail::withNodeContext(*this, [&] {
+        return std::make_shared<render::KernelVolumeMedium>(
+            classified, model, kernel::KernelTable::paper(), std::move(shading));
+    });
     action.setCamera(camera.view, camera.projection);
     action.addMedium(std::move(medium));
 }
@@ -300,6 +346,10 @@ ScalarSplat::classify(render::detail::ClassificationCache& cache, sg::State& /*s
                       const VolumeData& volume, const TransferFunction& transfer,
                       const glm::mat4& /*model*/) const {
     return cache.classified(volume.scalarGrid(), transfer);
+}
+
+bool ScalarSplat::isShadedBy(const TransferFunction& transfer) const {
+    return isMedium() && transfer.shade.value();
 }
 
 bool ScalarSplat::isDrawingField(const sg::Field* field) const {

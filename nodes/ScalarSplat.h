@@ -26,6 +26,7 @@ struct FrameSplats;
 struct SplatFootprint;
 namespace detail {
 class ClassificationCache;
+class ShadingCache;
 } // namespace detail
 } // namespace texsplat::render
 
@@ -45,7 +46,10 @@ namespace texsplat::nodes {
 /// (see below), and drawn facing the eye from FrameAction's frame: by the GL backend as instanced
 /// quads (render::GlRenderer), or by the CPU backend (render::cpu::CpuRenderer).
 /// Optical properties are per unit length of the volume's local space; a Transform above the
-/// node places the volume. Anisotropic spacing uses the ellipsoidal kernel h(S⁻¹x).
+/// node places the volume. Anisotropic spacing uses the ellipsoidal kernel h(S⁻¹x). A medium
+/// whose TransferFunction shades (`shade`) draws the classified grid lit per voxel
+/// (render::ShadedGrid, cached while the grid, its placement and the lighting shade alike; its
+/// cuts come from the lit grid's octree); RayCastAction lights it per sample.
 ///
 /// Order and resolution:
 /// - `errorThreshold` 0 and `maxSplats` 0: every non-empty voxel, in octree::SliceOrder (back to
@@ -183,7 +187,12 @@ private:
     /// @brief The footprint for the current fields, made once until a shaping field changes.
     std::shared_ptr<const render::SplatFootprint> footprint();
 
+    /// @brief Whether this node draws a shaded medium through `transfer`: a medium (isMedium())
+    /// whose transfer function shades (TransferFunction::shade). Vector marks are not shaded.
+    bool isShadedBy(const TransferFunction& transfer) const;
+
     std::unique_ptr<render::detail::ClassificationCache> mCache;
+    std::unique_ptr<render::detail::ShadingCache> mShading;
     std::shared_ptr<const render::SplatFootprint> mFootprint;
     std::shared_ptr<octree::SplatList> mSplatList; // the last frame's, refilled when free
     octree::DepthSorter mDepthSorter; // its buffers, kept while octree cuts are drawn

@@ -55,6 +55,32 @@ TransferFunction::TransferFunction() {
              "What the values are (\"Temperature\"): the colour bar's title; not used to classify");
     addField(units, "units", std::string(),
              "The values' unit (\"K\"): the colour bar shows \"title (units)\"");
+    addField(shade, "shade", false,
+             "Light the medium by the gradient of its extinction, as VTK's ShadeOn: surfaces "
+             "inside the volume show their shape");
+    addField(ambient, "ambient", 0.1f, "With shade: the part of the colour shown unlit, >= 0");
+    addField(diffuse, "diffuse", 0.7f,
+             "With shade: the part lit by |n.l| of each light (Lambert), >= 0");
+    addField(specular, "specular", 0.2f,
+             "With shade: the highlight |n.h|^specularPower of each light, in the light's "
+             "colour, >= 0");
+    addField(specularPower, "specularPower", 10.0f,
+             "With shade: the highlight's sharpness (Phong exponent), > 0");
+}
+
+glm::vec4 TransferFunction::shadingCoefficients() const {
+    const std::string context = detail::nodeContext(*this);
+    for (const sg::SFFloat* field : {&ambient, &diffuse, &specular}) {
+        if (!std::isfinite(field->value()) || field->value() < 0.0f) {
+            throw DataError(context + ": " + field->name() + " must be finite and >= 0, got " +
+                            field->valueText());
+        }
+    }
+    if (!std::isfinite(specularPower.value()) || !(specularPower.value() > 0.0f)) {
+        throw DataError(context + ": specularPower must be finite and > 0, got " +
+                        specularPower.valueText());
+    }
+    return {ambient.value(), diffuse.value(), specular.value(), specularPower.value()};
 }
 
 namespace {
@@ -436,7 +462,7 @@ void TransferFunction::doAction(sg::Action& action) {
 }
 
 void TransferFunction::notify(const sg::Field* source) {
-    if (isLabelField(source)) {
+    if (isLabelField(source) || isShadingField(source)) {
         sg::Node::notify(source); // the checked tables stay as they are
         return;
     }

@@ -106,6 +106,13 @@ struct Classification {
 ///   `emission` adds glow that does not absorb, so fully transparent glowing voxels (opacities
 ///   0, emission 1: C = S, τ = 0) are expressible, as the paper's Figure 2 experiment needs.
 ///
+/// `shade` lights the medium as VTK's and ParaView's "Shade" do (render::VolumeLighting): the
+/// gradient of the classified extinction is a surface normal, and the colour becomes
+/// `ambient`·C + `diffuse`·|n·l|·C + `specular`·|n·h|^`specularPower`·τ per light of the scene
+/// (DirectionalLight; none: a headlight), so surfaces inside the volume show their shape; where
+/// the extinction does not change (no gradient) only the ambient part is left. The defaults are
+/// vtkVolumeProperty's. These fields shade the classified grid, they do not classify it again.
+///
 /// `title` and `units` say what the values are ("Temperature", "K"): the colour bar
 /// (annotation::ColorLegend) is titled "Temperature (K)"; they do not change the classification.
 ///
@@ -131,6 +138,11 @@ struct Classification {
 ///     emission       0
 ///     title          ""        # what the values are, for the colour bar
 ///     units          ""        # their unit, for the colour bar
+///     shade          FALSE     # gradient lighting by the scene's lights (VTK's ShadeOn)
+///     ambient        0.1
+///     diffuse        0.7
+///     specular       0.2
+///     specularPower  10
 /// }
 /// @endcode
 class TransferFunction : public sg::Declare<TransferFunction, sg::Node>,
@@ -152,6 +164,11 @@ public:
     sg::SFFloat emission;       ///< emission per unit length not tied to opacity, >= 0
     sg::SFString title;         ///< what the classified values are: the colour bar's title
     sg::SFString units;         ///< the unit of the values, shown after the title
+    sg::SFBool shade;           ///< light the medium by its extinction's gradient
+    sg::SFFloat ambient;        ///< shade: the part of the colour shown unlit, >= 0
+    sg::SFFloat diffuse;        ///< shade: the Lambertian part, >= 0
+    sg::SFFloat specular;       ///< shade: the highlight's strength, >= 0
+    sg::SFFloat specularPower;  ///< shade: the highlight's sharpness (Phong exponent), > 0
 
     /// @brief Checks every field now (and reads `colorMapFile`).
     /// @throws DataError naming the first bad field; what reading `colorMapFile` throws.
@@ -228,6 +245,19 @@ public:
     bool isLabelField(const sg::Field* field) const {
         return field == &title || field == &units;
     }
+
+    /// @brief Whether `field` is one of the shading fields (`shade`, `ambient`, `diffuse`,
+    /// `specular`, `specularPower`): a change of it lights the classified grid again, it does
+    /// not classify it again.
+    bool isShadingField(const sg::Field* field) const {
+        return field == &shade || field == &ambient || field == &diffuse ||
+               field == &specular || field == &specularPower;
+    }
+
+    /// @brief The lighting coefficients of the shading fields, checked.
+    /// @throws DataError naming the first field that is negative or not finite (specularPower:
+    /// not positive).
+    glm::vec4 shadingCoefficients() const;
 
     /// @brief Puts this node into TransferFunctionElement.
     void doAction(sg::Action& action) override;

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <string_view>
 
 namespace texsplat::bench {
 namespace {
@@ -29,21 +30,29 @@ constexpr KindName kKindNames[] = {{"texture", BenchMethod::Kind::TexturePaper},
 [[noreturn]] void unknownMethod(const std::string& name) {
     throw DataError("unknown method '" + name +
                     "' (expected texture, texture-gaussian, polygon, vector or combined, optionally "
-                    "with @FRACTION, e.g. texture@0.1)");
+                    "with +shade and @FRACTION, e.g. texture+shade@0.1)");
 }
 
 } // namespace
 
 BenchMethod BenchMethod::fromName(const std::string& name) {
     const std::size_t at = name.find('@');
-    const std::string kindName = name.substr(0, at);
+    std::string kindName = name.substr(0, at);
+    constexpr std::string_view kShade = "+shade";
+    const bool shaded = kindName.size() > kShade.size() &&
+                        kindName.compare(kindName.size() - kShade.size(), kShade.size(),
+                                         kShade) == 0;
+    if (shaded) {
+        kindName.resize(kindName.size() - kShade.size());
+    }
     const auto entry = std::find_if(std::begin(kKindNames), std::end(kKindNames),
                                     [&](const KindName& k) { return kindName == k.name; });
-    if (entry == std::end(kKindNames)) {
+    if (entry == std::end(kKindNames) || (shaded && entry->kind == Kind::Vector)) {
         unknownMethod(name);
     }
     BenchMethod method;
     method.kind = entry->kind;
+    method.shaded = shaded;
     if (at != std::string::npos) {
         const std::string fraction = name.substr(at + 1);
         char* end = nullptr;
@@ -75,6 +84,9 @@ std::string BenchMethod::name() const {
         if (entry.kind == kind) {
             text = entry.name;
         }
+    }
+    if (shaded) {
+        text += "+shade";
     }
     if (budget > 0.0) {
         char fraction[32];

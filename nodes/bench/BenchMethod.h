@@ -24,24 +24,28 @@ struct BenchMethod {
     /// Fraction of the full-resolution splat count the octree cut may use (ScalarSplat's
     /// maxSplats); 0: every non-empty voxel (no octree).
     double budget = 0.0;
+    /// Whether the volume is shaded (TransferFunction::shade), and lit again every frame as
+    /// an orbiting view makes it (the camera turns by a ten-thousandth of a radian between
+    /// frames, which moves the headlight and the highlight).
+    bool shaded = false;
 
     /// @brief The method called `name`: `texture`, `texture-gaussian`, `polygon`, `vector`,
-    /// `combined`, each optionally followed by `@FRACTION` (an octree budget in (0, 1), e.g.
-    /// `texture@0.1`).
+    /// `combined`, each optionally followed by `+shade` (shaded; not `vector`: marks are not
+    /// shaded) and `@FRACTION` (an octree budget in (0, 1), e.g. `texture+shade@0.1`).
     /// @throws DataError "unknown method 'x' (expected texture, texture-gaussian, polygon,
-    /// vector or combined, optionally with @FRACTION, e.g. texture@0.1)".
+    /// vector or combined, optionally with +shade and @FRACTION, e.g. texture+shade@0.1)".
     static BenchMethod fromName(const std::string& name);
 
     /// @brief Methods from a comma-separated list of names.
     /// @throws DataError as fromName(), or "empty method list".
     static std::vector<BenchMethod> parseList(const std::string& names);
 
-    /// @brief The name fromName() reads (`texture@0.1`).
+    /// @brief The name fromName() reads (`texture+shade@0.1`).
     std::string name() const;
 
     /// @brief Whether this is the full-quality reference among the methods (texture, paper
     /// kernel, full resolution).
-    bool isFullQuality() const { return kind == Kind::TexturePaper && budget == 0.0; }
+    bool isFullQuality() const { return kind == Kind::TexturePaper && budget == 0.0 && !shaded; }
 
     /// @brief Whether the method draws a vector field (vector, combined).
     bool needsVectors() const { return kind == Kind::Vector || kind == Kind::Combined; }

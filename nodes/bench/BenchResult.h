@@ -26,6 +26,7 @@ struct BenchResult {
     std::string method;      ///< BenchMethod::name()
     std::string backend;     ///< "gl" or "cpu"
     bool isFullQuality = false; ///< the texture splat with the paper's kernel at full resolution
+    bool isShaded = false;      ///< the volume shaded (BenchMethod::shaded), lit every frame
     std::size_t splats = 0;  ///< splats drawn per frame
     std::uint64_t fragments = 0;        ///< fragments per frame (GL_SAMPLES_PASSED query)
     std::uint64_t ceilingFragments = 0; ///< fragments of the fill-rate ceiling's quads
@@ -33,9 +34,11 @@ struct BenchResult {
     std::array<double, sg::kRenderPhaseCount> phaseSeconds{}; ///< median per RenderPhase
     /// @brief Median time of the fill-rate ceiling (FillRateCeiling); GL only, NaN on the CPU.
     double ceilingSeconds = std::numeric_limits<double>::quiet_NaN();
-    double referenceRmse = std::numeric_limits<double>::quiet_NaN(); ///< against RayCastAction
+    /// @brief Against RayCastAction (shaded per sample for a shaded method).
+    double referenceRmse = std::numeric_limits<double>::quiet_NaN();
     double referencePsnr = std::numeric_limits<double>::quiet_NaN(); ///< dB
-    double fullRmse = std::numeric_limits<double>::quiet_NaN(); ///< against the full-quality image
+    /// @brief Against the full-quality image (NaN for a shaded method: it shows other colours).
+    double fullRmse = std::numeric_limits<double>::quiet_NaN();
     double fullPsnr = std::numeric_limits<double>::quiet_NaN(); ///< dB
 
     /// @brief Median draw time (RenderPhase::Draw: both passes until glFinish).
@@ -52,7 +55,7 @@ struct BenchResult {
     double drawRatio = std::numeric_limits<double>::quiet_NaN();
     /// Frame time over the full-quality texture splats' frame time in the same run (NaN when
     /// the run has no full-quality method): what a method costs against the paper's texture
-    /// splats, e.g. vector splats (the paper paid +50 %).
+    /// splats, e.g. vector splats (the paper paid +50 %), or shading (`texture+shade`).
     double fullFrameRatio = std::numeric_limits<double>::quiet_NaN();
     /// Frame time over the same method's frame time on GL in the same run (1 for GL itself,
     /// NaN without a GL row): the CPU backend's speed-up is its inverse.

@@ -33,6 +33,8 @@
 #include "scenegraph/gl/Context.h"
 #endif
 
+#include <glm/gtc/quaternion.hpp>
+
 #include <algorithm>
 #include <chrono>
 #include <climits>
@@ -228,8 +230,8 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
     // The reference ray casts the scene with the full-quality node; each method replaces it.
     const sg::Separator::Ptr root =
         dataset.scene(BenchMethod().makeNode(0), aspect, mOptions.camera);
-    const auto& camera = static_cast<const nodes::Camera&>(*root->child(0));
-    const auto& transfer = static_cast<const nodes::TransferFunction&>(*root->child(1));
+    auto& camera = static_cast<nodes::Camera&>(*root->child(0));
+    auto& transfer = static_cast<nodes::TransferFunction&>(*root->child(1));
     const auto& volume = static_cast<const nodes::VolumeData&>(*root->child(2));
 
     SplatSource source;
@@ -242,7 +244,29 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
     report(where + ": load and classify", 1.0);
 
     const std::optional<image::Image> reference = referenceImage(*root, size, where);
-
+    // Shaded methods are compared with the reference shaded per sample, made when one is run.
+    std::optional<image::Image> shadedReference;
+    const bool anyShaded = std::any_of(mOptions.methods.begin(), mOptions.methods.end(),
+                                       [](const BenchMethod& m) { return m.shaded; });
+    if (anyShaded) {
+        transfer.shade.setValue(true);
+        shadedReference = referenceImage(*root, size, where + " shaded");
+        transfer.shade.setValue(false);
+    }
+    // A shaded method's frames turn the view by a ten-thousandth of a radian about its up axis
+    // through the focal point, back and forth, so every frame lights the volume again, as an
+    // orbit in the viewer does: what shading costs while the view moves.
+    const sg::Rotation still = camera.orientation.value();
+    const glm::vec3 position = camera.position.value();
+    const float distance = camera.focalDistance.value();
+    const glm::vec3 focus = position + camera.viewDirection() * distance;
+    const auto orbit = [&](int frame) {
+        const glm::quat turn = glm::angleAxis(frame % 2 == 0 ? 0.0f : 1e-4f,
+                                              still.quaternion() * glm::vec3(0.0f, 1.0f, 0.0f)) *
+                               still.quaternion();
+        camera.orientation.setValue(sg::Rotation(glm::axis(turn), glm::angle(turn)));
+        camera.position.setValue(focus - (turn * glm::vec3(0.0f, 0.0f, -1.0f)) * distance);
+    };
 #ifdef TEXSPLAT_WITH_GL
     const bool withGl = std::find(mOptions.backends.begin(), mOptions.backends.end(),
                                   render::Backend::Gl) != mOptions.backends.end();
@@ -256,6 +280,8 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
     for (const BenchMethod& method : mOptions.methods) {
         const sg::Node::Ptr node = method.makeNode(fullList.size());
         root->replaceChild(3, node);
+        transfer.shade.setValue(method.shaded);
+        const BeforeFrame beforeFrame = method.shaded ? BeforeFrame(orbit) : BeforeFrame();
         for (const render::Backend backend : mOptions.backends) {
             const std::string stage = where + ": " + method.name() +
                                       (mOptions.backends.size() > 1 ? " " + backendName(backend)
@@ -267,6 +293,7 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
             result.method = method.name();
             result.backend = backendName(backend);
             result.isFullQuality = method.isFullQuality();
+            result.isShaded = method.shaded;
 #ifdef TEXSPLAT_WITH_GL
             if (backend == render::Backend::Gl) {
                 auto& splatNode = static_cast<nodes::ScalarSplat&>(*node);
@@ -281,19 +308,24 @@ void BenchRunner::runOne(const BenchDataset& dataset, const glm::ivec2& size,
                 }
                 const octree::SplatList& drawn = method.budget > 0.0 ? cutList : fullList;
                 images.push_back(measureGl(*root, size, *ceiling, source.view, extent, drawn,
-                                           stage, result));
+                                           stage, result, beforeFrame));
             } else
 #endif
             {
-                images.push_back(measureCpu(*root, size, stage, result));
+                images.push_back(measureCpu(*root, size, stage, result, beforeFrame));
             }
             report(stage, 1.0);
-            if (reference) {
-                compare(*reference, images.back(), result.referenceRmse, result.referencePsnr);
+            const std::optional<image::Image>& matching = method.shaded ? shadedReference
+                                                                        : reference;
+            if (matching) {
+                compare(*matching, images.back(), result.referenceRmse, result.referencePsnr);
             }
             results.push_back(std::move(result));
         }
+        camera.orientation.setValue(still);
+        camera.position.setValue(position);
     }
+    transfer.shade.setValue(false);
     compareWithinRun(images, results, first);
 }
 
@@ -362,13 +394,20 @@ std::vector<BenchResult> BenchRunner::runScene(sg::Node& root, const std::string
 image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
                                     FillRateCeiling& ceiling, const render::SplatView& view,
                                     float extent, const octree::SplatList& drawn,
-                                    const std::string& stage, BenchResult& result) const {
+                                    const std::string& stage, BenchResult& result,
+                                    const BeforeFrame& beforeFrame) const {
     ceiling.upload(drawn);
     // Frames and ceiling draws alternate, so that load from other processes on a shared
     // machine hits both alike; each ratio pairs a frame with the ceiling draw after it.
     render::FrameAction action(size.x, size.y);
     render::GlRenderer renderer;
-    const auto renderFrame = [&] { renderer.render(action.collect(root), action.statistics()); };
+    int frame = 0;
+    const auto renderFrame = [&] {
+        if (beforeFrame) {
+            beforeFrame(frame++);
+        }
+        renderer.render(action.collect(root), action.statistics());
+    };
     const int frames = mOptions.warmup + mOptions.repeat;
     for (int i = 0; i < mOptions.warmup; ++i) {
         report(stage, static_cast<double>(i) / frames);
@@ -415,7 +454,8 @@ image::Image BenchRunner::measureGl(sg::Node& root, const glm::ivec2& size,
 #endif
 
 image::Image BenchRunner::measureCpu(sg::Node& root, const glm::ivec2& size,
-                                     const std::string& stage, BenchResult& result) const {
+                                     const std::string& stage, BenchResult& result,
+                                     const BeforeFrame& beforeFrame) const {
     render::FrameAction action(size.x, size.y);
     const render::cpu::CpuRenderer renderer(mOptions.cpuThreads);
     const int frames = mOptions.warmup + mOptions.repeat;
@@ -424,6 +464,9 @@ image::Image BenchRunner::measureCpu(sg::Node& root, const glm::ivec2& size,
     std::vector<std::vector<double>> phaseTimes(sg::kRenderPhaseCount);
     for (int i = 0; i < frames; ++i) {
         report(stage, static_cast<double>(i) / frames);
+        if (beforeFrame) {
+            beforeFrame(i);
+        }
         const Clock::time_point start = Clock::now();
         image = renderer.draw(action.collect(root), action.statistics());
         if (i < mOptions.warmup) {
@@ -452,7 +495,9 @@ void BenchRunner::compareWithinRun(const std::vector<image::Image>& images,
         for (std::size_t j = 0; j < count; ++j) {
             const BenchResult& other = results[first + j];
             if (other.backend == result.backend && other.isFullQuality) {
-                compare(images[j], images[i], result.fullRmse, result.fullPsnr);
+                if (!result.isShaded) { // a shaded image shows other colours
+                    compare(images[j], images[i], result.fullRmse, result.fullPsnr);
+                }
                 result.fullFrameRatio = result.frameSeconds / other.frameSeconds;
             }
             if (other.method == result.method && other.backend == backendName(render::Backend::Gl)) {

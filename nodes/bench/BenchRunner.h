@@ -82,14 +82,16 @@ private:
     void report(const std::string& stage, double fractionDone) const;
     std::optional<image::Image> referenceImage(sg::Node& root, const glm::ivec2& size,
                                                const std::string& where) const;
+    // Called before each frame a measurement draws, with the frame's number.
+    using BeforeFrame = std::function<void(int frame)>;
 #ifdef TEXSPLAT_WITH_GL
     image::Image measureGl(sg::Node& root, const glm::ivec2& size, FillRateCeiling& ceiling,
                            const render::SplatView& view, float extent,
                            const octree::SplatList& drawn, const std::string& stage,
-                           BenchResult& result) const;
+                           BenchResult& result, const BeforeFrame& beforeFrame = {}) const;
 #endif
     image::Image measureCpu(sg::Node& root, const glm::ivec2& size, const std::string& stage,
-                            BenchResult& result) const;
+                            BenchResult& result, const BeforeFrame& beforeFrame = {}) const;
     void compareWithinRun(const std::vector<image::Image>& images,
                           std::vector<BenchResult>& results, std::size_t first) const;
 

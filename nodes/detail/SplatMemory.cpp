@@ -73,8 +73,9 @@ void checkClassificationMemory(const SplatMemory& memory, const std::string& pur
 
 SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
                            std::uint64_t nonEmptyVoxels, bool withVectors, bool withOctree,
-                           std::uint64_t maxSplats) {
+                           std::uint64_t maxSplats, std::uint64_t shadingBytes) {
     memory.classified = classifiedBytes;
+    memory.shading = shadingBytes;
     // Records exist for non-empty nodes of level >= 1: at most one per 7 non-empty voxels
     // (1/8 + 1/64 + ...).
     memory.octree =
@@ -86,11 +87,19 @@ SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
     return memory;
 }
 
+std::uint64_t shadingBytesFor(const octree::ClassifiedGrid& classified) {
+    return byteSum(byteProduct(byteProduct(classified.blockCount(),
+                                           octree::ClassifiedGrid::kBlockVoxels),
+                               sizeof(glm::vec3)),
+                   classified.memoryBytes());
+}
+
 void checkSplatMemory(const SplatMemory& memory) {
     checkMemory("classifying and splatting " + dimsText(memory.dims) + " voxels", memory.total(),
                 "the classified grid takes " + sizeText(memory.classified) + ", the octree " +
-                    sizeText(memory.octree) + ", the splats " + sizeText(memory.splats) + "; " +
-                    kSplatMemoryAdvice);
+                    sizeText(memory.octree) + ", the splats " + sizeText(memory.splats) +
+                    (memory.shading > 0 ? ", the shading " + sizeText(memory.shading) : "") +
+                    "; " + kSplatMemoryAdvice);
 }
 
 } // namespace texsplat::nodes::detail

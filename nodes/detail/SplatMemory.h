@@ -11,6 +11,10 @@ namespace texsplat::nodes {
 class VolumeData;
 } // namespace texsplat::nodes
 
+namespace texsplat::octree {
+class ClassifiedGrid;
+} // namespace texsplat::octree
+
 namespace texsplat::nodes::detail {
 
 /// @brief What a splat node's frame allocates once its volume is loaded, estimated in two steps
@@ -27,10 +31,11 @@ struct SplatMemory {
                                   ///< for scalar splats also the grid's value ranges
     std::uint64_t octree = 0;     ///< the octree's records, when a cut is asked for
     std::uint64_t splats = 0;     ///< the splat list and its depth ordering
+    std::uint64_t shading = 0;    ///< a shaded volume's gradients and lit copy of the grid
 
     /// @brief Everything together.
     [[nodiscard]] std::uint64_t total() const {
-        return byteSum(byteSum(classified, octree), splats);
+        return byteSum(byteSum(byteSum(classified, octree), splats), shading);
     }
 };
 
@@ -46,15 +51,20 @@ void checkClassificationMemory(const SplatMemory& memory, const std::string& pur
 
 /// @brief `memory` with the octree and the splats of the classified grid, which holds
 /// `nonEmptyVoxels` (what can become a splat) in `classifiedBytes`: `withOctree`, a cut is asked
-/// for (an error threshold or a budget); `maxSplats` > 0 bounds the splats.
+/// for (an error threshold or a budget); `maxSplats` > 0 bounds the splats; `shadingBytes`, what
+/// shading the grid takes (shadingBytesFor(), 0 unshaded).
 SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
                            std::uint64_t nonEmptyVoxels, bool withVectors, bool withOctree,
-                           std::uint64_t maxSplats);
+                           std::uint64_t maxSplats, std::uint64_t shadingBytes = 0);
+
+/// @brief What shading `classified` takes (TransferFunction::shade): a gradient per voxel of its
+/// allocated blocks and the lit copy of the grid.
+std::uint64_t shadingBytesFor(const octree::ClassifiedGrid& classified);
 
 /// @brief Refuses a frame whose estimate exceeds the memory limit, before the octree and the
 /// splats are made: throws ResourceError "classifying and splatting 1200x1200x1200 voxels would
 /// need <total>, more than the memory limit of …; the classified grid takes …, the octree …, the
-/// splats …; <kSplatMemoryAdvice>".
+/// splats … (, the shading …); <kSplatMemoryAdvice>".
 void checkSplatMemory(const SplatMemory& memory);
 
 /// @brief What to do when a splat node's stages run out of memory.

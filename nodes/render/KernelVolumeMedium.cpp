@@ -24,9 +24,12 @@ float finiteOrMax(float value) {
 } // namespace
 
 KernelVolumeMedium::KernelVolumeMedium(std::shared_ptr<const octree::ClassifiedGrid> grid,
-                                       const glm::mat4& model, const kernel::KernelTable& kernel)
-    : mGrid(std::move(grid)), mKernel(&kernel) {
+                                       const glm::mat4& model, const kernel::KernelTable& kernel,
+                                       std::optional<Shading> shading)
+    : mGrid(std::move(grid)), mKernel(&kernel), mShading(std::move(shading)) {
     TEXSPLAT_ASSERT(mGrid, "KernelVolumeMedium: no grid");
+    TEXSPLAT_ASSERT(!mShading || (mShading->gradients && &mShading->gradients->grid() == mGrid.get()),
+                    "KernelVolumeMedium: the shading's gradients are not the grid's");
     if (!(kernel.support() < 2.0f)) {
         throw DataError("KernelVolumeMedium: the kernel's support must be below 2 voxels, got " +
                         std::to_string(kernel.support()));
@@ -219,6 +222,7 @@ sg::RayCastMedium::Sample KernelVolumeMedium::sample(const sg::RayCastRay& ray, 
     }
     const float support2 = mKernel->supportSquared();
     glm::vec4 sum(0.0f);
+    glm::vec3 gradient(0.0f);
     for (int k = 0; k < taps[2]; ++k) {
         for (int j = 0; j < taps[1]; ++j) {
             const float yz = distance2[1][j] + distance2[2][k];
@@ -228,10 +232,18 @@ sg::RayCastMedium::Sample KernelVolumeMedium::sample(const sg::RayCastRay& ray, 
             for (int i = 0; i < taps[0]; ++i) {
                 const float r2 = yz + distance2[0][i];
                 if (r2 < support2) {
-                    sum += (*mKernel)(r2) * mGrid->voxel(glm::u64vec3(low + glm::i64vec3(i, j, k)));
+                    const glm::u64vec3 voxel(low + glm::i64vec3(i, j, k));
+                    const float weight = (*mKernel)(r2);
+                    sum += weight * mGrid->voxel(voxel);
+                    if (mShading) {
+                        gradient += weight * mShading->gradients->at(voxel);
+                    }
                 }
             }
         }
+    }
+    if (mShading) {
+        sum = glm::vec4(mShading->lighting.shade(glm::vec3(sum), sum.w, gradient), sum.w);
     }
     // Per unit local length → per unit root length along this ray.
     const auto localPerRoot =

@@ -1,6 +1,8 @@
 #pragma once
 
 #include "nodes/kernel/KernelTable.h"
+#include "nodes/render/VolumeLighting.h"
+#include "nodes/render/VoxelGradients.h"
 #include "octree/ClassifiedGrid.h"
 #include "scenegraph/actions/RayCastAction.h"
 
@@ -12,6 +14,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace texsplat::render {
@@ -33,17 +36,30 @@ namespace texsplat::render {
 /// length along the ray, so a Transform that scales the volume changes its size on screen, not
 /// its optical depth (as for the splats). The step for `stepVoxels` is that many voxels of
 /// index space along the ray.
+///
+/// Shading (TransferFunction::shade): each sample's emission is lit by VolumeLighting::shade()
+/// with the gradient reconstructed like c and τ, g(x) = Σ gᵢ h(S⁻¹(x − xᵢ)) from the voxels'
+/// gradients gᵢ (VoxelGradients): per-sample shading, where the splats light each voxel
+/// (ShadedGrid).
 class KernelVolumeMedium final : public sg::RayCastMedium {
 public:
     /// @brief Edge of an empty-space brick, in voxels.
     static constexpr std::int64_t kBrickSize = 8;
 
+    /// @brief How a shaded medium is lit: the lighting, and the gradients of the medium's grid.
+    struct Shading {
+        VolumeLighting lighting;
+        std::shared_ptr<const VoxelGradients> gradients;
+    };
+
     /// @brief The medium of `grid` placed by `model` (local to root), reconstructed with `kernel`
-    /// (which must outlive the medium; support below 2 voxels).
+    /// (which must outlive the medium; support below 2 voxels), lit by `shading` when given
+    /// (its gradients must be `grid`'s).
     /// @throws DataError when `model` is singular or not finite, or the kernel's support is 2
     /// voxels or more.
     KernelVolumeMedium(std::shared_ptr<const octree::ClassifiedGrid> grid, const glm::mat4& model,
-                       const kernel::KernelTable& kernel = kernel::KernelTable::paper());
+                       const kernel::KernelTable& kernel = kernel::KernelTable::paper(),
+                       std::optional<Shading> shading = std::nullopt);
 
     void intervals(const sg::RayCastRay& ray, float tMin, float tMax, float stepVoxels,
                    std::vector<Interval>& out) const override;
@@ -61,6 +77,7 @@ private:
 
     std::shared_ptr<const octree::ClassifiedGrid> mGrid;
     const kernel::KernelTable* mKernel;
+    std::optional<Shading> mShading;
     glm::dmat3 mRootToIndex{1.0};   // linear part: root space to voxel index space
     glm::dvec3 mRootToIndexOffset{0.0};
     glm::dmat3 mRootToLocal{1.0};   // linear part of the inverse model matrix

@@ -112,6 +112,28 @@ TEST_F(BenchCommandTest, timesVectorAndCombinedSplatsAgainstTextureSplatsInTheSa
     }
 }
 
+TEST_F(BenchCommandTest, timesShadingAgainstTheUnshadedSplatsInTheSameRun) {
+    const auto output = runTexsplat("bench --dataset ml16 --size 32x32 --repeat 2 "
+                                    "--backend cpu,gl --method texture,texture+shade,"
+                                    "texture+shade@0.5 --csv " +
+                                    path("bench.csv"));
+    ASSERT_EQ(output.exitCode, 0) << output.standardError;
+    const std::vector<std::string> lines = split(read(path("bench.csv")), '\n');
+    ASSERT_EQ(lines.size(), 7u);
+    for (std::size_t row = 1; row < lines.size(); ++row) {
+        const std::vector<std::string> fields = split(lines[row], ',');
+        const bool shaded = fields[3] != "texture";
+        EXPECT_EQ(fields[3], row <= 2 ? "texture" : row <= 4 ? "texture+shade"
+                                                               : "texture+shade@0.5");
+        // The cost: frame time over the unshaded texture splats' in the same run.
+        const double ratio = std::stod(fields[22]);
+        EXPECT_TRUE(std::isfinite(ratio) && ratio > 0.0) << lines[row];
+        // Shaded splats against the reference shaded per sample: close.
+        EXPECT_GT(std::stod(fields[19]), 25.0) << lines[row];
+        EXPECT_EQ(fields[20].empty(), shaded) << "no image comparison across shading";
+    }
+}
+
 TEST_F(BenchCommandTest, skipsTheReferenceWhenAsked) {
     const auto output = runTexsplat("bench --dataset blob6 --size 16x16 --repeat 1 "
                                     "--backend gl --method texture,polygon --no-reference --csv " +
@@ -169,8 +191,12 @@ TEST_F(BenchCommandTest, reportsBadOptionsByTheirExactMessage) {
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError,
               "texsplat: error: --method: unknown method 'texture@1.5' (expected texture, "
-              "texture-gaussian, polygon, vector or combined, optionally with @FRACTION, e.g. "
-              "texture@0.1)\n");
+              "texture-gaussian, polygon, vector or combined, optionally with +shade and "
+              "@FRACTION, e.g. texture+shade@0.1)\n");
+    output = runTexsplat("bench --dataset tornado8 --method vector+shade");
+    EXPECT_EQ(output.exitCode, 1);
+    EXPECT_NE(output.standardError.find("unknown method 'vector+shade'"), std::string::npos)
+        << "marks are not shaded: " << output.standardError;
     output = runTexsplat("bench --dataset ml8 --backend cpu,metal");
     EXPECT_EQ(output.exitCode, 1);
     EXPECT_EQ(output.standardError,

@@ -5,6 +5,7 @@
 #include "SplatTestSupport.h"
 #include "nodes/Coordinate3.h"
 #include "nodes/DefaultScene.h"
+#include "nodes/DirectionalLight.h"
 #include "nodes/GaussianSplat.h"
 #include "nodes/IndexedFaceSet.h"
 #include "nodes/Material.h"
@@ -147,6 +148,15 @@ std::vector<Scene> scenes() {
     result.push_back({"two volumes in one space",
                       test::framedScene(camera(true, skew), {warmTransfer(6.0f), marschnerLobb,
                                                              TextureSplat::create(), second})});
+    // Shaded (TransferFunction::shade): the grid lit per voxel, by a light of the scene and
+    // with a highlight, before either backend draws it.
+    TransferFunction::Ptr lit = warmTransfer(8.0f);
+    lit->shade.setValue(true);
+    DirectionalLight::Ptr light = DirectionalLight::create();
+    light->direction.setValue(glm::vec3(-1.0f, -1.0f, -0.5f));
+    result.push_back({"shaded by a light of the scene",
+                      test::framedScene(camera(true, skew), {light, lit, marschnerLobb,
+                                                             TextureSplat::create()})});
     // The default scene: the tornado with opaque fibres in it.
     sg::Separator::Ptr tornado = makeDefaultScene(24);
     result.push_back({"tornado with fibres", test::framedScene(camera(true, skew), {tornado})});

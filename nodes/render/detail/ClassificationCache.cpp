@@ -113,8 +113,8 @@ const octree::Octree& ClassificationCache::octree() {
 }
 
 void ClassificationCache::changed(sg::Notifier& /*subject*/, const sg::Field* source) {
-    if (mTransfer && mTransfer->isLabelField(source)) {
-        return; // a new title classifies nothing differently
+    if (mTransfer && (mTransfer->isLabelField(source) || mTransfer->isShadingField(source))) {
+        return; // a new title or lighting classifies nothing differently
     }
     mTransferChanged = true;
     mPreviewStale = true;
