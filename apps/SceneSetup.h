@@ -28,7 +28,8 @@ glm::ivec2 parseSize(const std::string& text, const std::string& option = "--siz
 glm::vec3 parseDirection(const std::string& text, const std::string& option = "--direction");
 
 /// @brief The premultiplied clear colour `--background` names: "black" (the default), "white",
-/// "transparent" (alpha 0: the layer alone, for compositing) or "r,g,b" (0 to 1, opaque; display values as colour maps give them).
+/// "transparent" (alpha 0: the layer alone, for compositing) or "r,g,b" (0 to 1, opaque; display
+/// values, as colour maps give them).
 /// Throws DataError naming --background otherwise.
 glm::vec4 parseBackground(const std::string& text);
 
@@ -106,8 +107,9 @@ void addViewOptions(CLI::App& command, Framing& framing);
 /// it to look along that direction at its focal point (for a framing camera it is the direction
 /// framed from), `up` rolls it so that `up` is up in the image, `azimuth` and `elevation` orbit
 /// it about its focal point (ParaView's and the viewer's orbit), `zoom` magnifies (a narrower
-/// opening angle, or a smaller orthographic height). Framing takes the scene's bounding box, which loads (or
-/// generates) its volumes, telling `progress`: callers that time loading count this call in.
+/// opening angle, or a smaller orthographic height). Framing takes the scene's bounding box,
+/// which loads (or generates) its volumes, telling `progress`: callers that time loading count
+/// this call in.
 /// @throws DataError for a bad option, or a scene with neither geometry nor camera;
 /// sg::Cancelled when `progress` cancelled a load.
 sg::Node::Ptr withCamera(const sg::Node::Ptr& scene, const Framing& framing, float aspect,

@@ -79,7 +79,8 @@ image::Image FramePresenter::readBack(const glm::ivec2& windowSize) {
             bytes.data() + 4 * width * static_cast<std::size_t>(windowSize.y - 1 - y);
         for (int x = 0; x < windowSize.x; ++x) {
             const std::uint8_t* pixel = row + 4 * static_cast<std::size_t>(x);
-            result.setPixel(x, y, glm::vec4(glm::vec3(pixel[0], pixel[1], pixel[2]) / 255.0f, 1.0f));
+            const glm::vec3 color(pixel[0], pixel[1], pixel[2]);
+            result.setPixel(x, y, glm::vec4(color / 255.0f, 1.0f));
         }
     }
     return result;

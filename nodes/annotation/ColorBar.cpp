@@ -74,7 +74,8 @@ std::optional<Scale> scaleOf(const nodes::SplatInput& input) {
         scale.title = either(titled, "magnitude");
         return scale;
     case nodes::VectorColorMode::Scalar: {
-        const auto* colors = dynamic_cast<const nodes::VolumeData*>(vectors->colorData.value().get());
+        const auto* colors =
+            dynamic_cast<const nodes::VolumeData*>(vectors->colorData.value().get());
         if (!colors) {
             return std::nullopt; // the node refuses to draw without it
         }

@@ -102,7 +102,8 @@ std::vector<double> ColorLegend::ticks(glm::vec2 range, int count) {
     const int base = static_cast<int>(std::floor(std::log10(span / std::max(count, 1))));
     std::vector<double> best;
     for (int exponent = base - 1; exponent <= base + 1; ++exponent) {
-        for (const double mantissa : {5.0, 2.5, 2.0, 1.0}) { // larger steps first: fewer ticks win ties
+        // Larger steps first: on a tie, the fewer ticks win.
+        for (const double mantissa : {5.0, 2.5, 2.0, 1.0}) {
             const std::vector<double> values = multiples(low, high, Step{mantissa, exponent});
             const auto distance = [count](const std::vector<double>& v) {
                 return std::abs(static_cast<int>(v.size()) - count);

@@ -28,7 +28,8 @@ KernelVolumeMedium::KernelVolumeMedium(std::shared_ptr<const octree::ClassifiedG
                                        std::optional<Shading> shading)
     : mGrid(std::move(grid)), mKernel(&kernel), mShading(std::move(shading)) {
     TEXSPLAT_ASSERT(mGrid, "KernelVolumeMedium: no grid");
-    TEXSPLAT_ASSERT(!mShading || (mShading->gradients && &mShading->gradients->grid() == mGrid.get()),
+    TEXSPLAT_ASSERT(!mShading ||
+                        (mShading->gradients && &mShading->gradients->grid() == mGrid.get()),
                     "KernelVolumeMedium: the shading's gradients are not the grid's");
     if (!(kernel.support() < 2.0f)) {
         throw DataError("KernelVolumeMedium: the kernel's support must be below 2 voxels, got " +

@@ -93,7 +93,8 @@ TEST_F(ColorbarCommandTest, theTitleComesFromTheTransferFunctionOrTheCommandLine
     const image::Image untitled = render("--colorbar-title ''");
     const image::Image retitled = render("--colorbar-title 'Cloud water'");
     EXPECT_GT(fromScene.width(), untitled.width()) << "the scene's title takes room beside the bar";
-    ASSERT_EQ(retitled.width(), fromScene.width()) << "a title runs along the bar, whatever its length";
+    ASSERT_EQ(retitled.width(), fromScene.width())
+        << "a title runs along the bar, whatever its length";
     int differing = 0;
     for (int y = 0; y < fromScene.height(); ++y)
         for (int x = 0; x < fromScene.width(); ++x) {

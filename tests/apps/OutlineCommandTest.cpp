@@ -70,7 +70,8 @@ protected:
 
     sg::Box3 mBox;
     float mViewHeight = 0.0f;
-    mutable std::size_t mHiddenCorner = 0; // set by projectedCorners(): where the three faces turned away from the camera meet
+    // Set by projectedCorners(): where the three faces turned away from the camera meet.
+    mutable std::size_t mHiddenCorner = 0;
 };
 
 // Whether a pixel within one of `at` is green, the outline colour of the test.

@@ -32,7 +32,8 @@ void expectNear(const glm::vec3& actual, const glm::vec3& expected, const char* 
 
 TEST(SceneFraming, anUpDirectionIsUpInTheImage) {
     const glm::vec3 direction(1.0f, -2.0f, 0.5f);
-    const glm::quat turn = rotationLookingAlong(direction, glm::vec3(0.0f, 0.0f, 3.0f)).quaternion();
+    const glm::quat turn =
+        rotationLookingAlong(direction, glm::vec3(0.0f, 0.0f, 3.0f)).quaternion();
     expectNear(turn * glm::vec3(0.0f, 0.0f, -1.0f), glm::normalize(direction), "view");
     // The image's up is z less its part along the view.
     const glm::vec3 view = glm::normalize(direction);

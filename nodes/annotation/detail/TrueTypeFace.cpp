@@ -21,7 +21,11 @@ std::vector<int> codePoints(std::string_view text) {
     std::vector<int> points;
     for (std::size_t i = 0; i < text.size();) {
         const auto lead = static_cast<unsigned char>(text[i]);
-        const int length = lead < 0xC2 ? 1 : lead < 0xE0 ? 2 : lead < 0xF0 ? 3 : lead < 0xF5 ? 4 : 1;
+        const int length = lead < 0xC2   ? 1
+                           : lead < 0xE0 ? 2
+                           : lead < 0xF0 ? 3
+                           : lead < 0xF5 ? 4
+                                         : 1;
         int point = length == 1 ? lead : lead & (0x7F >> length);
         bool valid = length > 1 && i + std::size_t(length) <= text.size();
         for (int k = 1; valid && k < length; ++k) {
