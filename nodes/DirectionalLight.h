@@ -8,7 +8,8 @@ namespace texsplat::nodes {
 
 /// @brief A light from infinitely far away (Inventor's DirectionalLight) that lights the polygon
 /// geometry after it within its Separator: when `on`, adds itself to LightElement with its
-/// direction mapped by the current model matrix. Splats are not lit: they emit (paper, section 2).
+/// direction mapped by the current model matrix. Splats emit (paper, section 2) and are lit only
+/// where their TransferFunction shades (`shade`: render::VolumeLighting); vector marks never are.
 ///
 /// File format:
 /// @code
