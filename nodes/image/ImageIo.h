@@ -36,7 +36,7 @@ ImageFormat supportedImageFormatOf(const std::string& path);
 void writeImage(const Image& image, const std::string& path);
 
 /// @brief The bytes of the PNG file writeImage() writes for `image` (8-bit RGBA, straight alpha,
-/// sRGB-encoded), for a program that shows it without a file (a notebook).
+/// the colour values as they are), for a program that shows it without a file (a notebook).
 std::string pngBytes(const Image& image);
 
 /// @brief The most pixels readImage() decodes: 8192 × 8192. Decoding takes about 24 bytes a

@@ -283,11 +283,11 @@ void bindRendering(nb::module_& module) {
             nb::arg("dtype").none() = nb::none(), nb::arg("copy").none() = nb::none())
         .def("save", &saveImage, nb::arg("path"), nb::arg("colorbar") = false,
              nb::arg("colorbar_position") = "right", nb::arg("outline") = false,
-             "Writes the image as `texsplat render -o PATH` writes it: .png (8-bit, sRGB) or "
-             ".exr (float RGBA), by the extension; `colorbar` draws the transfer function's "
-             "legend (--colorbar), at `colorbar_position` (right, left, top, bottom); "
-             "`outline` the volumes' edges in white (--outline). The file appears whole or not "
-             "at all.")
+             "Writes the image as `texsplat render -o PATH` writes it: .png (8-bit, the colour "
+             "values as they are) or .exr (float RGBA), by the extension; `colorbar` adds the "
+             "colour bars beside it (--colorbar), at `colorbar_position` (right, left, top, "
+             "bottom); `outline` the volumes' edges in white, all over the picture (--outline "
+             "draws those behind the volume under it). The file appears whole or not at all.")
         .def(
             "_repr_png_",
             [](const Image& image) {
@@ -328,7 +328,7 @@ void bindRendering(nb::module_& module) {
              "-z), turned by `azimuth` and `elevation` (degrees) and magnified by `zoom`, at "
              "animation `time` (seconds; None: the scene's current time, 0 at first), drawn by "
              "`backend` ('auto', 'cpu', 'gl') over `background` ('black', 'white', "
-             "'transparent' or linear (r, g, b[, a])), the CPU backend on `threads` threads (0: "
+             "'transparent' or (r, g, b[, a]) from 0 to 1), the CPU backend on `threads` threads (0: "
              "all). `memory_limit` is --memory-limit (bytes, or '512M', '8G'; None: the memory "
              "available). `progress` gets (step, fraction) during long steps (True: tqdm bars) "
              "and cancels by returning False. Ctrl-C cancels (KeyboardInterrupt).");

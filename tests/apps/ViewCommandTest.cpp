@@ -54,7 +54,7 @@ TEST_F(ViewCommandTest, showsTheDefaultSceneInAWindowAndWritesItsLastFrame) {
     EXPECT_FLOAT_EQ(centre.a, 1.0f);
 
     // The window shows what `render` draws (same framing, upright), over the viewer's dark
-    // background (linear 0.02) instead of black.
+    // background (0.02) instead of black.
     const std::string rendered = path("render.png");
     const auto renderOutput = runTexsplat("render --size 96x80 -o " + rendered);
     ASSERT_EQ(renderOutput.exitCode, 0) << renderOutput.standardError;
