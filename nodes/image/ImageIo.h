@@ -46,8 +46,9 @@ std::string pngBytes(const Image& image);
 constexpr std::size_t kMaxReadPixels = std::size_t{1} << 26;
 
 /// @brief Reads the image at `path` (format from its extension): PNG is converted to
-/// premultiplied floats (each value over its largest, times alpha), OpenEXR is read as float32. Throws IoError("path: what") for a missing,
-/// unreadable or malformed file, or one that is not a regular file (a FIFO, a device); DataError
+/// premultiplied floats (each value over its largest, times alpha), OpenEXR is read as float32.
+/// Throws IoError("path: what") for a missing, unreadable or malformed file, or one that is not
+/// a regular file (a FIFO, a device); DataError
 /// for an EXR without R, G, B channels, and for an image of more than kMaxReadPixels pixels
 /// ("big.png: the image is 16000 x 16000 pixels; texsplat reads images of at most 67108864
 /// pixels (8192 x 8192)"); ResourceError, before decoding, when decoding would need more than

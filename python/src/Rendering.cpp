@@ -328,8 +328,8 @@ void bindRendering(nb::module_& module) {
              "-z), turned by `azimuth` and `elevation` (degrees) and magnified by `zoom`, at "
              "animation `time` (seconds; None: the scene's current time, 0 at first), drawn by "
              "`backend` ('auto', 'cpu', 'gl') over `background` ('black', 'white', "
-             "'transparent' or (r, g, b[, a]) from 0 to 1), the CPU backend on `threads` threads (0: "
-             "all). `memory_limit` is --memory-limit (bytes, or '512M', '8G'; None: the memory "
+             "'transparent' or (r, g, b[, a]) from 0 to 1), the CPU backend on `threads` "
+             "threads (0: all). `memory_limit` is --memory-limit (bytes, or '512M', '8G'; None: the memory "
              "available). `progress` gets (step, fraction) during long steps (True: tqdm bars) "
              "and cancels by returning False. Ctrl-C cancels (KeyboardInterrupt).");
 
