@@ -8,9 +8,10 @@ namespace texsplat::nodes {
 /// @brief Combined scalar and vector splats (Crawfis & Max 1993, "Combined Vector and Scalar
 /// Textures", figure 7): the scalar reconstruction of a TextureSplat — the same kernel
 /// footprint and the same TransferFunction on the VolumeData's scalar field (its `component`
-/// of the vectors: the magnitude, or a scalar grid of the source) — with each splat's marks
-/// (VectorMarkSplat) drawn over it before the next splat, so that the marks lie in the volume
-/// at their depth.
+/// of the vectors: the magnitude, or a scalar grid of the source) — with the marks
+/// (VectorMarkSplat) drawn among the splats by depth, each after the splats behind it, so that
+/// the marks lie in the volume at their depth. `maxSplats` and `errorThreshold` cut the scalar
+/// part; the marks stay those of the full-resolution grid.
 ///
 /// The marks' opacity is the medium's, as a VectorSplat's (a dense region draws clear marks, a
 /// thin one faint marks), times `markContrast` c; their colour is `blendColor` with BLEND

@@ -16,6 +16,7 @@
 #include "nodes/render/detail/ShadingCache.h"
 #include "octree/Cut.h"
 #include "octree/DepthSort.h"
+#include "octree/MarkSource.h"
 #include "octree/Refiner.h"
 #include "octree/Splat.h"
 #include "octree/SplatEmission.h"
@@ -115,7 +116,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
                         detail::kSplatMemoryAdvice, [&] { volume.load(action.workProgress()); });
     });
     const bool withMarks = footprint()->hasMarks();
-    const bool mayCut = errorThreshold.value() > 0.0f || maxSplats.value() > 0;
+    // Vector splats draw marks, which follow the image, not a cut (octree::MarkSource).
+    const bool mayCut = isMedium() && (errorThreshold.value() > 0.0f || maxSplats.value() > 0);
     const bool isShaded = isShadedBy(transfer);
     // Each stage's allocation is estimated and refused before it is made: the classified grid
     // now (every stored voxel may be visible), the octree, the splats and the shading once the
@@ -186,28 +188,25 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     // A budget that holds every non-empty voxel draws them all, in slice order: the
     // full-resolution image is within the budget, and its order costs about a quarter of an
     // octree cut's as fine (the viewer's last refinement steps of a big volume).
-    const bool fullResolution =
-        errorThreshold.value() == 0.0f &&
-        (maxSplats.value() == 0 ||
-         static_cast<std::uint64_t>(maxSplats.value()) >= classified->nonEmptyVoxelCount());
+    const bool fullResolution = !mayCut || (errorThreshold.value() == 0.0f &&
+                                            static_cast<std::uint64_t>(maxSplats.value()) >=
+                                                classified->nonEmptyVoxelCount());
     mDrewEveryVoxel = fullResolution && !isPreview;
     render::FrameSplats result;
     result.view = render::SplatView::fromMatrices(model, camera.view, camera.projection,
                                                   glm::vec3(classified->spacing()));
     result.localToCamera = camera.view * model;
     result.marks = markDrawing();
-    const std::optional<octree::MarkEmission> marks =
+    const std::vector<octree::SplatMark>* const marks =
         timed(statistics, sg::RenderPhase::Order,
-              [&] { return markEmission(classified, result, width, height); });
+              [&] { return frameMarks(classified, result, width, height); });
     if (marks) {
-        result.marks.marksPerVoxel = marks->marksPerVoxel;
         // The corners in either order: a flipped axis has a negative spacing.
         const glm::vec3 first(classified->toWorld(glm::dvec3(-0.5)));
         const glm::vec3 last(classified->toWorld(glm::dvec3(classified->dims()) - 0.5));
         result.marks.dataLow = glm::min(first, last);
         result.marks.dataHigh = glm::max(first, last);
     }
-    const octree::MarkEmission* emission = marks ? &*marks : nullptr;
     result.footprint = timed(statistics, sg::RenderPhase::Classify, [this] { return footprint(); });
     // The list of the last frame, refilled when the frame that drew it is gone: the same pages,
     // no allocation or zeroing per frame (about a twentieth of a Marschner-Lobb 128^3 CPU frame).
@@ -228,9 +227,14 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         // The view with its sides: splats go where they show (blocks out of sight make none,
         // and a cut is not refined there); the order is octreeView()'s.
         const octree::View order = result.view.refinementView(result.footprint->reach());
+        if (marks && !isMedium()) {
+            mDepthSorter = {};
+            octree::emitMarkSplats(*marks, order, *splats);
+            return;
+        }
         if (fullResolution) {
             mDepthSorter = {}; // slice order needs no sort
-            octree::emitVoxelSplats(*classified, order, *splats, emission);
+            octree::emitVoxelSplats(*classified, order, *splats, marks);
             return;
         }
         octree::Cut cut = errorThreshold.value() > 0.0f
@@ -240,11 +244,14 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
             cut = octree::Refiner::cutOfBudget(std::move(cut), order,
                                                static_cast<std::uint64_t>(maxSplats.value()));
         }
-        octree::emitSplats(cut, order, *splats, emission);
+        octree::emitSplats(cut, order, *splats);
         // The traversal keeps subtrees contiguous: where the eye lies on a split plane the two
         // sides' splats overlap on screen at every depth, and drawing one side wholly before the
         // other leaves a bright seam down the plane. Centre depth interleaves them.
         mDepthSorter.sort(*splats, order);
+        if (marks) {
+            octree::attachMarksByDepth(*marks, order, *splats);
+        }
     };
     timed(statistics, sg::RenderPhase::Order, [&] {
         detail::withNodeContext(*this, [&] {

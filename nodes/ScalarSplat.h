@@ -3,7 +3,7 @@
 #include "nodes/Fwd.h"
 #include "nodes/render/MarkDrawing.h"
 #include "octree/DepthSort.h"
-#include "octree/SplatEmission.h"
+#include "octree/Splat.h"
 #include "scenegraph/Declare.h"
 #include "scenegraph/Node.h"
 #include "scenegraph/fields/Fields.h"
@@ -11,8 +11,8 @@
 #include <glm/mat4x4.hpp>
 
 #include <memory>
-#include <optional>
 #include <utility>
+#include <vector>
 
 namespace texsplat::sg {
 class RayCastAction;
@@ -134,13 +134,14 @@ protected:
              const VolumeData& volume, const TransferFunction& transfer,
              const glm::mat4& model) const;
 
-    /// @brief For splats that carry marks: how their emission places them for `batch` (its view
-    /// set) of `classified` in an image of `width` x `height` pixels; nothing (the default) for
-    /// scalar splats.
-    virtual std::optional<octree::MarkEmission>
-    markEmission(const std::shared_ptr<const octree::ClassifiedGrid>& /*classified*/,
-                 const render::FrameSplats& /*batch*/, int /*width*/, int /*height*/) const {
-        return std::nullopt;
+    /// @brief For splats that draw marks (the footprint's hasMarks()): the marks of `classified`
+    /// this frame draws for `batch` (its view set) in an image of `width` x `height` pixels,
+    /// valid until the next call, with their expected number per voxel set in `batch.marks`;
+    /// nothing (the default) for scalar splats.
+    virtual const std::vector<octree::SplatMark>*
+    frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>& /*classified*/,
+               render::FrameSplats& /*batch*/, int /*width*/, int /*height*/) {
+        return nullptr;
     }
 
     /// @brief Whether an interactive frame may preview a transfer-function edit from the grid's

@@ -5,9 +5,10 @@
 #include "nodes/render/Frame.h"
 #include "nodes/render/ScreenMarks.h"
 #include "octree/ClassifiedGrid.h"
-#include "octree/SplatEmission.h"
+#include "octree/MarkSource.h"
 #include "octree/VoxelShadows.h"
 #include "scenegraph/Error.h"
+#include "scenegraph/MemoryLimit.h"
 #include "scenegraph/fields/ValueFormat.h"
 
 #include <cmath>
@@ -122,12 +123,19 @@ bool VectorMarkSplat::isInMask(float value) const {
     return value >= range.x && value <= range.y;
 }
 
-std::optional<octree::MarkEmission>
-VectorMarkSplat::markEmission(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
-                              const render::FrameSplats& batch, int width, int height) const {
-    if (mShadowsOf.lock() != classified) {
-        mShadows = std::make_shared<const octree::VoxelShadows>(*classified);
-        mShadowsOf = classified;
+const std::vector<octree::SplatMark>*
+VectorMarkSplat::frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
+                            render::FrameSplats& batch, int width, int height) {
+    const auto seedValue = static_cast<std::uint32_t>(seed.value());
+    if (mMarks.of.lock() != classified) {
+        mMarks.shadows = std::make_shared<const octree::VoxelShadows>(*classified);
+        mMarks.source = std::make_shared<const octree::MarkSource>(classified);
+        mMarks.of = classified;
+        mMarks.marks.clear();
+    }
+    if (mMarks.seed != seedValue) {
+        mMarks.seed = seedValue;
+        mMarks.marks.clear();
     }
     // How deep the data is behind a pixel, seen from here towards the grid's centre, and how
     // large a voxel's mark is on screen there: marks per voxel = coverage / (area · depth).
@@ -135,15 +143,35 @@ VectorMarkSplat::markEmission(const std::shared_ptr<const octree::ClassifiedGrid
     const render::SplatView& view = batch.view;
     const glm::dvec3 sight =
         view.isPerspective ? centre - glm::dvec3(view.eye) : glm::dvec3(view.direction);
-    const double depth = mShadows->meanDepth(sight);
+    const double depth = mMarks.shadows->meanDepth(sight);
     const float pixels = render::pixelsPerVoxel(batch, width, height, glm::vec3(centre));
-    octree::MarkEmission emission;
-    emission.seed = static_cast<std::uint32_t>(seed.value());
+    batch.marks.marksPerVoxel = 0.0;
     if (depth > 0.0 && pixels > 0.0f && std::isfinite(pixels)) {
-        const double area = render::markArea(markDrawing(), pixels);
-        emission.marksPerVoxel = double(markDensity.value()) / (area * depth);
+        const double area = render::markArea(batch.marks, pixels);
+        batch.marks.marksPerVoxel = double(markDensity.value()) / (area * depth);
     }
-    return emission;
+    const double count =
+        std::round(batch.marks.marksPerVoxel * static_cast<double>(mMarks.source->voxels()));
+    if (count > static_cast<double>(octree::SplatList::kMaxMarks)) {
+        throw DataError(detail::nodeContext(*this) + ": " + sg::formatFloat(float(count)) +
+                        " marks are more than a splat list holds (" +
+                        std::to_string(octree::SplatList::kMaxMarks) + "); lower markDensity");
+    }
+    // Each mark is held here, in the frame's list (with a splat of its own in a VectorSplat's)
+    // and as the renderer places it on screen.
+    constexpr std::uint64_t kBytesPerMark = 2 * sizeof(octree::SplatMark) + sizeof(octree::Splat) +
+                                            sizeof(std::uint32_t) + sizeof(render::ScreenMark);
+    const auto marks = static_cast<std::uint64_t>(count);
+    if (marks > mMarks.marks.size()) {
+        checkMemory(detail::nodeContext(*this) + ": drawing " + std::to_string(marks) +
+                        " vector marks",
+                    byteProduct(marks, kBytesPerMark),
+                    "lower markDensity, render a smaller image, or give a larger --memory-limit");
+    }
+    withMemoryStage("drawing vector marks", byteProduct(marks, kBytesPerMark),
+                    "lower markDensity or render a smaller image",
+                    [&] { mMarks.source->drawMarks(seedValue, marks, mMarks.marks); });
+    return &mMarks.marks;
 }
 
 render::MarkDrawing VectorMarkSplat::markDrawing() const {

@@ -7,7 +7,9 @@
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/fields/SFNode.h"
 
+#include <cstdint>
 #include <memory>
+#include <vector>
 
 namespace texsplat::octree {
 class VoxelShadows;
@@ -25,8 +27,8 @@ inline const sg::EnumNames kMarkTypeNames{{"PARTICLES", render::MarkType::Partic
 
 /// @brief Base of the splats that draw a vector field as marks (VectorSplat, CombinedSplat;
 /// Crawfis & Max 1993, "Combined Vector and Scalar Textures": "tiny vector particles, or
-/// scratch marks"): each splat carries a few marks, each at a random point of a non-empty
-/// voxel's cell with that voxel's vector, drawn as a streak along the vector's projection with a
+/// scratch marks"): marks drawn at random among the non-empty voxels (octree::MarkSource), each
+/// at a random point of its voxel's cell with that voxel's vector, drawn as a streak along the vector's projection with a
 /// sharp head downstream and a tail that fades upstream (docs/vector-splats.md).
 ///
 /// How many marks: `markDensity` is how much of the image the marks cover (their area over the
@@ -108,9 +110,9 @@ protected:
     /// @brief Whether `value` of the mask lets a voxel draw.
     bool isInMask(float value) const;
 
-    std::optional<octree::MarkEmission>
-    markEmission(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
-                 const render::FrameSplats& batch, int width, int height) const override;
+    const std::vector<octree::SplatMark>*
+    frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
+               render::FrameSplats& batch, int width, int height) override;
     /// @brief False: the vector and combined grids are classified here, with their vectors.
     bool previewsEdits() const override { return false; }
     render::MarkDrawing markDrawing() const override;
@@ -119,9 +121,16 @@ protected:
     void checkFields() const override;
 
 private:
-    // The shadows of the last classified grid, kept while it is the one drawn.
-    mutable std::shared_ptr<const octree::VoxelShadows> mShadows;
-    mutable std::weak_ptr<const octree::ClassifiedGrid> mShadowsOf;
+    // What the marks of the last classified grid come from, kept while it is the one drawn, and
+    // the marks drawn last: a prefix of the seed's sequence, which a closer view extends.
+    struct MarkCache {
+        std::weak_ptr<const octree::ClassifiedGrid> of;
+        std::shared_ptr<const octree::VoxelShadows> shadows;
+        std::shared_ptr<const octree::MarkSource> source;
+        std::uint32_t seed = 0;
+        std::vector<octree::SplatMark> marks;
+    };
+    MarkCache mMarks;
 };
 
 } // namespace texsplat::nodes

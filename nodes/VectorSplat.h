@@ -26,9 +26,10 @@ enum class Axis { X, Y, Z };
 inline const sg::EnumNames kAxisNames{{"X", Axis::X}, {"Y", Axis::Y}, {"Z", Axis::Z}};
 
 /// @brief Vector splats (Crawfis & Max 1993, "Combined Vector and Scalar Textures", figures 5,
-/// 6, 8): the vector field of the current VolumeData drawn as marks (VectorMarkSplat), a few for
-/// each non-empty voxel (or octree node), each a streak along the projected vector with a sharp
-/// head downstream.
+/// 6, 8): the vector field of the current VolumeData drawn as marks (VectorMarkSplat) scattered
+/// over its non-empty voxels, each a streak along the projected vector with a sharp head
+/// downstream. The marks follow the image, not an octree cut: `maxSplats` and `errorThreshold`
+/// change nothing here.
 ///
 /// Each mark has a colour (`colorMode`) and an opacity from the medium it stands for: the vector
 /// magnitude |v| goes through the current TransferFunction to an extinction τ, and the opacity

@@ -7,6 +7,7 @@ namespace texsplat::octree {
 
 class ClassifiedGrid;
 class Cut;
+class MarkSource;
 class Octree;
 class Refiner;
 class SliceOrder;

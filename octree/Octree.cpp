@@ -22,10 +22,6 @@ struct Octree::Statistics {
     glm::vec4 maximum{0.0f};
     std::uint64_t count = 0;
     OctreeNode record;
-    // Vector grids only: the sum of the non-empty voxels' unit directions, and how many of them
-    // have a direction (a zero vector has none).
-    glm::dvec3 directionSum{0.0};
-    std::uint64_t directionCount = 0;
 
     void merge(const Statistics& other) {
         minimum = count == 0 ? other.minimum : glm::min(minimum, other.minimum);
@@ -33,8 +29,6 @@ struct Octree::Statistics {
         sum += other.sum;
         count += other.count;
         record.nonEmptyCount += other.record.nonEmptyCount;
-        directionSum += other.directionSum;
-        directionCount += other.directionCount;
     }
 
     void finish() {
@@ -45,14 +39,6 @@ struct Octree::Statistics {
         for (int channel = 0; channel < 4; ++channel) {
             error = std::max({error, static_cast<double>(maximum[channel]) - mean[channel],
                               mean[channel] - static_cast<double>(minimum[channel])});
-        }
-        if (directionCount > 0) {
-            // 1 - |mean of the unit directions| is 0 when all voxels point the same way and 1
-            // when they cancel; scaled by the largest extinction it is in the units of the other
-            // channels, so one threshold weighs a turning flow like a changing opacity.
-            const double spread =
-                1.0 - glm::length(directionSum) / static_cast<double>(directionCount);
-            error = std::max(error, static_cast<double>(maximum.w) * std::max(spread, 0.0));
         }
         record.error = static_cast<float>(error);
     }
@@ -94,8 +80,8 @@ namespace {
 
 constexpr const char* kBuildStep = "building the octree";
 // Blocks built in parallel between two progress reports (2^19 voxels, as classification's
-// batches): few enough that a cancel is prompt and the slots of two batches stay small (6 MiB, 8
-// with vectors), enough that the threads share the work evenly.
+// batches): few enough that a cancel is prompt and the slots of two batches stay small (6 MiB),
+// enough that the threads share the work evenly.
 constexpr std::size_t kBlocksPerBatch = 1024;
 // Records of a block's subtree at most: 8 of level 2 and 64 of level 1.
 constexpr std::size_t kBlockRecords = 8 + 64;
@@ -270,14 +256,6 @@ Octree::Statistics Octree::voxelStatistics(glm::u64vec3 voxel) const {
     statistics.record.meanColor = glm::vec3(value);
     statistics.record.meanExtinction = value.w;
     statistics.record.nonEmptyCount = value == glm::vec4(0.0f) ? 0 : 1;
-    if (mGrid->hasVectors() && statistics.record.nonEmptyCount > 0) {
-        const glm::vec3 vector = mGrid->vector(voxel);
-        const double length = glm::length(glm::dvec3(vector));
-        if (length > 0.0) {
-            statistics.directionSum = glm::dvec3(vector) / length;
-            statistics.directionCount = 1;
-        }
-    }
     return statistics;
 }
 
@@ -367,7 +345,7 @@ Octree::Statistics Octree::buildSubtree(int level, glm::u64vec3 coord, Records& 
     if (level == 0) {
         return voxelStatistics(coord);
     }
-    if (level == ClassifiedGrid::kBlockLevel && !mGrid->hasVectors()) {
+    if (level == ClassifiedGrid::kBlockLevel) {
         return buildBlock(coord, records);
     }
     Statistics statistics;
@@ -382,7 +360,7 @@ Octree::Statistics Octree::buildSubtree(int level, glm::u64vec3 coord, Records& 
     return statistics;
 }
 
-// The subtree of an allocated block of a scalar grid, as buildSubtree() makes it (the same
+// The subtree of an allocated block, as buildSubtree() makes it (the same
 // records in the same order, the same sums in the same order, so the same bits) but read straight
 // from the block's storage, with no per-voxel Statistics: most of the build's time is spent here.
 Octree::Statistics Octree::buildBlock(glm::u64vec3 block, Records& records) const {

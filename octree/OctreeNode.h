@@ -14,9 +14,7 @@ struct OctreeNode {
     /// @brief Mean extinction of the node's voxels (empty voxels count as zero).
     float meanExtinction = 0.0f;
     /// @brief Largest absolute deviation of any voxel's colour channel or extinction from the
-    /// node's mean: every voxel the splat replaces is within `error` of it (docs/octree.md). For a
-    /// grid with vectors, at least the directions' spread (1 − |mean of the unit vectors|) times
-    /// the largest extinction, so a cut refines where the flow turns, not only where it fades.
+    /// node's mean: every voxel the splat replaces is within `error` of it (docs/octree.md).
     float error = 0.0f;
     /// @brief Bit o set when child octant o (bit 0: upper x, bit 1: upper y, bit 2: upper z)
     /// exists and holds a non-empty voxel. Empty children have no record (pruned).

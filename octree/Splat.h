@@ -25,15 +25,15 @@ struct Splat {
     float extinction = 0.0f;
 };
 
-/// @brief One mark of a vector splat (Crawfis & Max 1993, "Combined Vector and Scalar
-/// Textures": "tiny vector particles, or scratch marks"), as emitted: where it sits, which way
+/// @brief One vector mark (Crawfis & Max 1993, "Combined Vector and Scalar Textures": "tiny
+/// vector particles, or scratch marks"), as drawn by MarkSource: where it sits, which way
 /// the field goes there and the medium of the voxel it stands for, in the splat node's local
 /// space. The backends draw it for the view (render::ScreenMarks): oriented along the projected
 /// vector, a head and a fading tail.
 struct SplatMark {
-    /// @brief Centre at animation phase 0: a random point in the cell of a non-empty voxel of
-    /// the splat's voxel or node, so that the marks of all splats together fall at random, with
-    /// no trace of the grid.
+    /// @brief Centre at animation phase 0: a random point in the cell of a non-empty voxel
+    /// picked at random (MarkSource), so that the marks together fall at random, with no trace
+    /// of the grid.
     glm::vec3 position{0.0f};
     /// @brief Where the mark is in its life cycle at animation phase 0, in [0, 1).
     float phase = 0.0f;

@@ -69,6 +69,12 @@ ParaViewColorMap parseParaViewColorMap(const std::string& source, const std::str
         document = nlohmann::json::parse(source);
     } catch (const nlohmann::json::parse_error& error) {
         throw ParseError(syntaxError(source, path, error));
+    } catch (const nlohmann::json::out_of_range& error) {
+        // A number beyond double's range ("1e999"): nlohmann names the literal, not its place.
+        const std::string what = error.what();
+        const std::size_t bracket = what.find("] ");
+        throw ParseError(path + ": not valid JSON: " +
+                         (bracket == std::string::npos ? what : what.substr(bracket + 2)));
     }
     if (document.is_array() && !document.empty()) {
         document = document.front();

@@ -31,8 +31,8 @@ struct MarkDrawing {
     float phase = 0.0f;
     float length = 2.5f; ///< a voxel's mark length, in voxels along the vector
     float width = 0.08f; ///< a voxel's mark width, in voxels
-    /// @brief The emission's expected marks per voxel (octree::MarkEmission::marksPerVoxel): a
-    /// mark's opacity is that of the medium it stands for, spread over the marks.
+    /// @brief The marks per voxel this frame draws (VectorMarkSplat::frameMarks): a mark's
+    /// opacity is that of the medium it stands for, spread over the marks.
     double marksPerVoxel = 0.0;
     /// @brief The box of the grid's cells in the batch's local space: marks are cut to it.
     glm::vec3 dataLow{-std::numeric_limits<float>::infinity()};

@@ -118,6 +118,13 @@ TEST(ColorMap, badJsonIsLocated) {
                               "unexpected end of input; expected '[', '{', or a literal");
 }
 
+TEST(ColorMap, aNumberBeyondDoubleIsNamed) {
+    // nlohmann throws out_of_range, not parse_error, here: it escaped the reader (found by
+    // fuzz_colormap_reader).
+    EXPECT_EQ(parseError("[{\"RGBPoints\": [0, 1e999, 0, 0]}]"),
+              "map.json: not valid JSON: number overflow parsing '1e999'");
+}
+
 TEST(ColorMap, jsonNestedAMillionDeepIsRefusedBeforeItIsParsed) {
     // Copying the parsed document recursed once a level: a stack overflow (100 000 levels
     // with a 4 MB stack). The depth is counted before nlohmann sees the text.

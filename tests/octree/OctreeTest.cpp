@@ -246,38 +246,6 @@ TEST(Octree, summarizesEveryNodeLikeABruteForceComputation) {
     }
 }
 
-// The build reads a scalar grid's blocks straight from their storage; a grid with vectors takes
-// the general path. With every vector zero the two must give the same records, bit for bit.
-TEST(Octree, readsScalarBlocksLikeTheGeneralBuild) {
-    for (const glm::u64vec3& dims : {glm::u64vec3(37, 29, 21), glm::u64vec3(24, 8, 17)}) {
-        SCOPED_TRACE(::testing::Message() << dims.x << "x" << dims.y << "x" << dims.z);
-        const auto scalar = randomGrid(dims, 11, 0.5f);
-        auto withVectors =
-            std::make_shared<ClassifiedGrid>(dims, scalar->spacing(), scalar->origin());
-        withVectors->enableVectors();
-        for (std::uint64_t k = 0; k < dims.z; ++k)
-            for (std::uint64_t j = 0; j < dims.y; ++j)
-                for (std::uint64_t i = 0; i < dims.x; ++i) {
-                    const glm::vec4 value = scalar->voxel({i, j, k});
-                    withVectors->setVoxel({i, j, k}, glm::vec3(value), value.w);
-                }
-        const Octree fast(scalar);
-        const Octree general(withVectors);
-        ASSERT_EQ(fast.nodes().size(), general.nodes().size());
-        ASSERT_GT(fast.nodes().size(), 100u);
-        for (std::size_t i = 0; i < fast.nodes().size(); ++i) {
-            const OctreeNode& a = fast.nodes()[i];
-            const OctreeNode& b = general.nodes()[i];
-            ASSERT_EQ(a.meanColor, b.meanColor) << i;
-            ASSERT_EQ(a.meanExtinction, b.meanExtinction) << i;
-            ASSERT_EQ(a.error, b.error) << i;
-            ASSERT_EQ(a.childMask, b.childMask) << i;
-            ASSERT_EQ(a.firstChild, b.firstChild) << i;
-            ASSERT_EQ(a.nonEmptyCount, b.nonEmptyCount) << i;
-        }
-    }
-}
-
 TEST(Octree, reportsItsBuildAndStopsWhenCancelled) {
     const auto grid = randomGrid({40, 40, 40}, 3);
     std::vector<double> fractions;
