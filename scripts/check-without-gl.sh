@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# Checks a texsplat built with -DTEXSPLAT_WITH_GL=OFF (the `nogl` preset): it links no GL, EGL or
-# libepoxy, renders and benchmarks on the CPU backend, and refuses --backend gl with a message.
+# Checks a texsplat built with -DTEXSPLAT_WITH_GL=OFF (the `nogl` preset; CI checks the `fuzz`
+# preset's, which leaves GL out too): it links no GL, EGL or libepoxy, renders and benchmarks on
+# the CPU backend, and refuses --backend gl with a message.
 # Usage: scripts/check-without-gl.sh build/nogl/apps/texsplat
 set -euo pipefail
 texsplat=${1:?usage: $0 path/to/texsplat}
