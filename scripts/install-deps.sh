@@ -25,6 +25,9 @@ tests=(
     # ncgen and unu write the NetCDF and NRRD files of the readers' tests; pyopenvdb and netCDF4
     # the .vdb and .nc of docs/getting-started.md, whose commands a test runs.
     netcdf-bin teem-apps python3-openvdb python3-netcdf4
+    # Pillow grabs the viewer's window for the docs (scripts/viewer-screenshot.sh) and compresses
+    # the docs' pictures again without changing a pixel.
+    python3-pil
 )
 case "${1:-}" in
     --build) packages=("${build[@]}") ;;
