@@ -15,12 +15,8 @@
 #                                               apps/texsplat; default build/release]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-texsplat=${1:-$root/build/release}
-[ -d "$texsplat" ] && texsplat="$texsplat/apps/texsplat"
-[ -x "$texsplat" ] && [ -f "$texsplat" ] || {
-    echo "$0: missing $texsplat: build it first or name the executable" >&2
-    exit 1
-}
+source "$root/scripts/texsplat-executable.sh"
+texsplat=$(texsplat_executable "${1:-}")
 page="$root/docs/transfer-functions.md"
 pictures="$root/docs/transfer-functions"
 mkdir -p "$pictures"

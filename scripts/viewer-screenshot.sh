@@ -10,12 +10,8 @@
 #                                      default build/release]
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
-texsplat=${1:-$root/build/release}
-[ -d "$texsplat" ] && texsplat="$texsplat/apps/texsplat"
-[ -x "$texsplat" ] && [ -f "$texsplat" ] || {
-    echo "$0: missing $texsplat: build it first or name the executable" >&2
-    exit 1
-}
+source "$root/scripts/texsplat-executable.sh"
+texsplat=$(texsplat_executable "${1:-}")
 size=900x560
 if [ -z "${VIEWER_SCREENSHOT_XVFB:-}" ]; then
     # A screen as large as the window, so that the grab is the window.
