@@ -1,6 +1,5 @@
 """The GIL is released while texsplat works; progress callbacks, tqdm and Ctrl-C."""
 
-import os
 import signal
 import threading
 import time
@@ -65,14 +64,19 @@ def test_tqdm_shows_the_steps(capsys):
 
 def test_ctrl_c_cancels_a_long_render():
     volume = blob(160)
-    timer = threading.Timer(0.2, os.kill, (os.getpid(), signal.SIGINT))
+    # A kernel timer raises the signal 0.2 s into the render, with Ctrl-C's handler (a thread
+    # calling os.kill needs the GIL first, and on a loaded machine it got it only after the
+    # render: the signal then came too late). Python runs the handler at the next progress
+    # report, as it would SIGINT's.
+    previous = signal.signal(signal.SIGALRM, signal.default_int_handler)
     start = time.perf_counter()
-    timer.start()
+    signal.setitimer(signal.ITIMER_REAL, 0.2)
     try:
         with pytest.raises(KeyboardInterrupt):
             texsplat.render(volume, size=(1024, 1024), max_splats=0)
     finally:
-        timer.cancel()
+        signal.setitimer(signal.ITIMER_REAL, 0)
+        signal.signal(signal.SIGALRM, previous)
     # Cancelled at the next report, not at the end of the render.
     assert time.perf_counter() - start < 3.0
     # The next render starts afresh.
