@@ -231,7 +231,8 @@ DataScale scaleOf(const detail::TransferTable& checked, const volume::Grid<T>& g
     DataScale scale = fixedScale(checked);
     switch (static_cast<RangeMode>(checked.rangeMode)) {
     case RangeMode::Data:
-        if (!ranges) {
+        // A brick's block ranges are its own: its range is the whole grid's.
+        if (!ranges || grid.whole()) {
             scale.range = glm::vec2(detail::valueRange(grid));
         } else if (ranges->blockCount() == 0) {
             scale.range = glm::vec2(0.0f, 1.0f);

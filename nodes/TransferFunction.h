@@ -86,7 +86,8 @@ struct Classification {
 /// [0, 1], so values outside the range classify like its ends (±infinity too); NaN classifies as
 /// fully transparent (no emission, no extinction). The range comes from `rangeMode`: FIXED uses
 /// `range`; DATA the smallest and largest finite value of the data the splat node draws (for
-/// vectors: of their magnitudes); PERCENTILE the `percentiles` (in percent) of those values;
+/// vectors: of their magnitudes; for a brick of data split over processes, of the whole data);
+/// PERCENTILE the `percentiles` (in percent) of those values;
 /// AUTO, the default, is FIXED when `range` has been written (or connected) and DATA when it has
 /// not, so scenes that give a range keep it and new ones fit their data. Data of one value v gets
 /// [v - 0.5, v + 0.5]. Then

@@ -4,23 +4,28 @@
 #include "nodes/detail/SharedLoads.h"
 #include "nodes/elements/VolumeElement.h"
 #include "nodes/volume/Blob.h"
+#include "nodes/volume/BrickGrid.h"
+#include "nodes/volume/DenseGrid.h"
 #include "nodes/volume/JetStream.h"
 #include "nodes/volume/Magnitude.h"
 #include "nodes/volume/MarschnerLobb.h"
 #include "nodes/volume/NetCdfVolume.h"
-#include "nodes/volume/NpyVolume.h"
-#include "nodes/volume/NrrdVolume.h"
+#include "nodes/volume/NrrdHeader.h"
 #include "nodes/volume/PlacedGrid.h"
-#include "nodes/volume/RawVolume.h"
 #include "nodes/volume/Tornado.h"
 #include "nodes/volume/VdbVolume.h"
+#include "nodes/volume/detail/RawData.h"
+#include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/actions/Action.h"
 #include "scenegraph/actions/BoundingBoxAction.h"
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <string>
 #include <string_view>
@@ -70,6 +75,12 @@ struct VolumeData::Loaded {
     // Further scalar grids a generator makes along with the main one, by name.
     std::map<std::string, volume::ScalarGridPtr> scalars;
     std::vector<volume::Fiber> fibers;
+    // A brick's (setBrick()): whether it is one, and once setWholeGrids() gave them, the whole
+    // grid's figures of `grid` (which its magnitudes share).
+    bool isBrick = false;
+    std::shared_ptr<const volume::WholeGrid> gridWhole;
+    // Where the grids' first voxel is in the whole grid (a brick's region; 0 for a whole load).
+    glm::i64vec3 offset{0};
 };
 
 VolumeData::VolumeData() {
@@ -130,12 +141,8 @@ glm::i64vec3 wholeNumbers(const sg::SFVec3f& field, const std::string& name) {
 
 glm::i64vec3 VolumeData::dims() const { return wholeNumbers(resolution, "resolution"); }
 
-template <typename T>
-std::shared_ptr<const volume::Grid<T>>
-VolumeData::placed(std::shared_ptr<const volume::Grid<T>> grid) const {
-    if (origin.size() == 0 && spacing.size() == 0) {
-        return grid;
-    }
+volume::GridGeometry VolumeData::placedGeometry(const volume::GridGeometry& own,
+                                                const glm::i64vec3& offset) const {
     const auto one = [](const sg::MFVec3f& field, const glm::dvec3& fallback) {
         if (field.size() > 1) {
             throw DataError(field.name() +
@@ -144,15 +151,25 @@ VolumeData::placed(std::shared_ptr<const volume::Grid<T>> grid) const {
         }
         return field.size() == 1 ? glm::dvec3(field[0]) : fallback;
     };
-    const volume::GridGeometry& own = grid->geometry();
-    const glm::dvec3 where = one(origin, own.origin());
     const glm::dvec3 step = one(spacing, own.spacing());
+    // A brick's first voxel is voxel `offset` of the whole grid, which the fields place.
+    const glm::dvec3 first = glm::dvec3(offset);
+    const glm::dvec3 where = one(origin, own.origin() - first * own.spacing()) + first * step;
     try {
-        const volume::GridGeometry geometry(own.dims(), where, step);
-        return std::make_shared<volume::PlacedGrid<T>>(std::move(grid), geometry);
+        return volume::GridGeometry(own.dims(), where, step);
     } catch (const DataError& error) {
         throw DataError(std::string("origin and spacing: ") + error.what());
     }
+}
+
+template <typename T>
+std::shared_ptr<const volume::Grid<T>>
+VolumeData::placed(std::shared_ptr<const volume::Grid<T>> grid, const glm::i64vec3& offset) const {
+    if (origin.size() == 0 && spacing.size() == 0) {
+        return grid;
+    }
+    const volume::GridGeometry geometry = placedGeometry(grid->geometry(), offset);
+    return std::make_shared<volume::PlacedGrid<T>>(std::move(grid), geometry);
 }
 
 volume::RawHeader VolumeData::headerlessLayout() const {
@@ -194,7 +211,8 @@ VolumeData::loadShared(const sg::WorkProgress& progress) const {
 }
 
 std::shared_ptr<const VolumeData::Loaded>
-VolumeData::read(const sg::WorkProgress& progress) const {
+VolumeData::read(const sg::WorkProgress& progress,
+                 const std::optional<volume::IndexBox>& region) const {
     auto result = std::make_shared<Loaded>();
     const auto kind = source.as<VolumeSource>();
     const auto requireFile = [this]() -> std::string {
@@ -205,77 +223,50 @@ VolumeData::read(const sg::WorkProgress& progress) const {
         return readablePath(fileName.value(), "file");
     };
     switch (kind) {
-    case VolumeSource::FileRaw: {
-        const std::string path = requireFile();
-        result->grid = volume::readRawVolume(path, loadProgress(*this, path, progress));
-        break;
-    }
-    case VolumeSource::FileRawHeaderless: {
-        const std::string path = requireFile();
-        result->grid = volume::readHeaderlessRawVolume(path, headerlessLayout(),
-                                                       headerBytes.value(),
-                                                       loadProgress(*this, path, progress));
-        break;
-    }
-    case VolumeSource::FileNpy: {
-        const std::string path = requireFile();
-        result->grid = volume::readNpyVolume(path, loadProgress(*this, path, progress));
-        break;
-    }
+    case VolumeSource::FileRaw:
+    case VolumeSource::FileRawHeaderless:
+    case VolumeSource::FileNpy:
     case VolumeSource::FileNrrd: {
         const std::string path = requireFile();
-        result->grid =
-            volume::readNrrdVolume(path, loadProgress(*this, path, progress), dataRoots().get());
+        const volume::ProgressCallback reading = loadProgress(*this, path, progress);
+        result->grid = region ? volume::detail::readRawGridRegion(rawData(path), *region, reading)
+                              : volume::detail::readRawGrid(rawData(path), reading);
         break;
     }
     case VolumeSource::FileNetCdf: {
         const std::string path = requireFile();
-        result->grid = volume::readNetCdfVariable(path, gridName.value(), timeStep.value(),
-                                                  loadProgress(*this, path, progress));
+        result->grid = volume::NetCdfReader(path).read(gridName.value(), timeStep.value(),
+                                                       loadProgress(*this, path, progress), region);
         break;
     }
     case VolumeSource::FileVdb: {
         const std::string path = requireFile();
-        std::string name = gridName.value();
-        if (name.empty()) {
-            // A file of one grid needs no name; otherwise say which names there are.
-            const std::vector<volume::VdbGridInfo> grids = volume::listVdbGrids(path);
-            if (grids.size() != 1) {
-                std::string names;
-                for (const volume::VdbGridInfo& grid : grids) {
-                    names += (names.empty() ? "" : ", ") + grid.name + " (" + grid.valueType + ")";
-                }
-                throw DataError(
-                    grids.empty() ? path + ": the file has no grids"
-                                  : "gridName is empty and " + path + " has " +
-                                        std::to_string(grids.size()) +
-                                        " grids; set gridName to one of: " + names);
-            }
-            name = grids.front().name;
-        }
-        result->grid = volume::readVdbGrid(path, name, loadProgress(*this, path, progress));
+        const std::string name = vdbGridName(path);
+        const volume::ProgressCallback reading = loadProgress(*this, path, progress);
+        result->grid = region ? volume::readVdbRegion(path, name, *region, reading)
+                              : volume::readVdbGrid(path, name, reading);
         break;
     }
     case VolumeSource::Tornado:
-        result->grid = volume::generateTornado({dims(), double(time.value())});
+        result->grid = volume::generateTornado({dims(), double(time.value())}, region);
         break;
     case VolumeSource::MarschnerLobb: {
         volume::MarschnerLobbParameters parameters;
         parameters.dims = dims();
-        result->grid = volume::generateMarschnerLobb(parameters);
+        result->grid = volume::generateMarschnerLobb(parameters, region);
         break;
     }
     case VolumeSource::Blob: {
         volume::BlobParameters parameters;
         parameters.dims = dims();
-        result->grid = volume::generateBlob(parameters);
+        result->grid = volume::generateBlob(parameters, region);
         break;
     }
     case VolumeSource::JetStream: {
         volume::JetStreamParameters parameters;
         parameters.dims = dims();
         parameters.time = double(time.value());
-        volume::JetStreamField field = volume::generateJetStream(parameters);
+        volume::JetStreamField field = volume::generateJetStream(parameters, region);
         result->grid = std::move(field.wind);
         result->scalars.emplace("cloudiness", std::move(field.cloudiness));
         break;
@@ -283,7 +274,7 @@ VolumeData::read(const sg::WorkProgress& progress) const {
     case VolumeSource::Aerogel: {
         volume::AerogelParameters parameters;
         parameters.dims = dims();
-        volume::AerogelField field = volume::generateAerogel(parameters);
+        volume::AerogelField field = volume::generateAerogel(parameters, region);
         result->grid = std::move(field.velocity);
         result->fibers = std::move(field.fibers);
         break;
@@ -296,19 +287,91 @@ VolumeData::read(const sg::WorkProgress& progress) const {
                             "VolumeData::setGrid(); a scene file cannot hold one");
         }
         result->grid = mMemoryGrid;
+        if (region) {
+            // A view of the program's grid: no copy.
+            result->grid = std::visit(
+                [&](const auto& grid) -> volume::AnyGrid {
+                    using Value = typename std::decay_t<decltype(*grid)>::ValueType;
+                    return std::make_shared<const volume::BrickGrid<Value>>(grid, *region, nullptr);
+                },
+                mMemoryGrid);
+        }
         break;
     }
     }
     return result;
 }
 
+namespace {
+
+// A grid of one empty voxel where `grid` has its first: what a brick without voxels serves.
+volume::AnyGrid emptyVoxel(const volume::AnyGrid& grid) {
+    return std::visit(
+        [](const auto& typed) -> volume::AnyGrid {
+            using Value = typename std::decay_t<decltype(*typed)>::ValueType;
+            const volume::GridGeometry one(glm::i64vec3(1), typed->geometry().origin(),
+                                           typed->geometry().spacing());
+            return std::make_shared<const volume::DenseGrid<Value>>(
+                one, Value(std::numeric_limits<float>::quiet_NaN()));
+        },
+        grid);
+}
+
+// `grid` as a brick with the whole grid's figures `whole`: a view made by read() is unwrapped
+// first, so that a brick reads its voxels through one view.
+template <typename T>
+std::shared_ptr<const volume::Grid<T>> asBrick(const std::shared_ptr<const volume::Grid<T>>& grid,
+                                               std::shared_ptr<const volume::WholeGrid> whole) {
+    if (const auto* view = dynamic_cast<const volume::BrickGrid<T>*>(grid.get())) {
+        return std::make_shared<const volume::BrickGrid<T>>(view->voxels(), view->box(),
+                                                            std::move(whole));
+    }
+    return std::make_shared<const volume::BrickGrid<T>>(
+        grid, volume::IndexBox::of(grid->geometry()), std::move(whole));
+}
+
+} // namespace
+
+std::shared_ptr<const VolumeData::Loaded>
+VolumeData::readBrick(const sg::WorkProgress& progress, const volume::GridGeometry& whole) const {
+    const volume::IndexBox region = mBrick->intersection(volume::IndexBox::of(whole));
+    std::shared_ptr<Loaded> result;
+    if (region.isEmpty()) {
+        // No voxel here: the first voxel's kind and place, with nothing in it.
+        auto data = std::make_shared<Loaded>(
+            *read(progress, volume::IndexBox{glm::i64vec3(0), glm::i64vec3(1)}));
+        data->grid = emptyVoxel(data->grid);
+        for (auto& [name, grid] : data->scalars) {
+            grid = std::get<volume::ScalarGridPtr>(emptyVoxel(grid));
+        }
+        result = std::move(data);
+    } else {
+        result = std::make_shared<Loaded>(*read(progress, region));
+        result->offset = region.lo;
+    }
+    result->isBrick = true;
+    return result;
+}
+
 std::shared_ptr<const VolumeData::Loaded>
 VolumeData::loaded(const sg::WorkProgress& progress) const {
     if (!mLoaded) {
-        mLoaded =
-            detail::withNodeContext(*this, [this, &progress] { return loadShared(progress); });
+        mLoaded = detail::withNodeContext(*this, [this, &progress] {
+            return mBrick ? readBrick(progress, wholeGeometryHeld()) : loadShared(progress);
+        });
     }
     return mLoaded;
+}
+
+std::shared_ptr<const VolumeData::Loaded> VolumeData::servedData() const {
+    std::shared_ptr<const Loaded> data = loaded();
+    if (data->isBrick && !data->gridWhole) {
+        throw DataError(detail::nodeContext(*this) +
+                        ": a brick of a render split over processes was loaded without the whole "
+                        "grid's figures (a distributed render loads every volume and gathers "
+                        "them before the frame)");
+    }
+    return data;
 }
 
 void VolumeData::load(const sg::WorkProgress& progress) const {
@@ -318,18 +381,23 @@ void VolumeData::load(const sg::WorkProgress& progress) const {
 
 volume::ScalarGridPtr VolumeData::scalarGrid() const {
     const std::lock_guard<std::mutex> lock(mMutex);
-    const std::shared_ptr<const Loaded> data = loaded();
+    const std::shared_ptr<const Loaded> data = servedData();
     if (mScalar) {
         return mScalar;
     }
     if (const auto* scalar = std::get_if<volume::ScalarGridPtr>(&data->grid)) {
-        mScalar = detail::withNodeContext(*this, [&] { return placed(*scalar); });
+        mScalar = detail::withNodeContext(*this, [&] { return placed(*scalar, data->offset); });
         return mScalar;
     }
     const volume::VectorGridPtr& vectors = std::get<volume::VectorGridPtr>(data->grid);
     mScalar = detail::withNodeContext(*this, [&]() -> volume::ScalarGridPtr {
         if (component.as<VolumeComponent>() == VolumeComponent::Magnitude) {
-            return placed(volume::magnitudeGrid(*vectors));
+            volume::ScalarGridPtr magnitudes = volume::magnitudeGrid(*vectors);
+            // A brick's magnitudes: the vectors' whole figures are their lengths'.
+            if (data->gridWhole) {
+                magnitudes = asBrick(magnitudes, data->gridWhole);
+            }
+            return placed(magnitudes, data->offset);
         }
         const auto found = data->scalars.find(gridName.value());
         if (found == data->scalars.end()) {
@@ -344,20 +412,20 @@ volume::ScalarGridPtr VolumeData::scalarGrid() const {
                                            : "it has: " + names) +
                             ")");
         }
-        return placed(found->second);
+        return placed(found->second, data->offset);
     });
     return mScalar;
 }
 
 volume::VectorGridPtr VolumeData::vectorGrid() const {
     const std::lock_guard<std::mutex> lock(mMutex);
-    const std::shared_ptr<const Loaded> data = loaded();
+    const std::shared_ptr<const Loaded> data = servedData();
     const auto* vectors = std::get_if<volume::VectorGridPtr>(&data->grid);
     if (vectors == nullptr) {
         return nullptr;
     }
     if (!mVectors) {
-        mVectors = detail::withNodeContext(*this, [&] { return placed(*vectors); });
+        mVectors = detail::withNodeContext(*this, [&] { return placed(*vectors, data->offset); });
     }
     return mVectors;
 }
@@ -368,9 +436,18 @@ std::vector<volume::Fiber> VolumeData::fibers() const {
 }
 
 sg::Box3 VolumeData::bounds() const {
-    const volume::VectorGridPtr vectors = vectorGrid();
-    const volume::GridGeometry geometry =
-        vectors ? vectors->geometry() : scalarGrid()->geometry();
+    const volume::GridGeometry geometry = [this] {
+        {
+            // A brick's box is the whole grid's, read from the source's header: framing and
+            // outlines show the whole volume.
+            const std::lock_guard<std::mutex> lock(mMutex);
+            if (mBrick) {
+                return wholeGeometryHeld();
+            }
+        }
+        const volume::VectorGridPtr vectors = vectorGrid();
+        return vectors ? vectors->geometry() : scalarGrid()->geometry();
+    }();
     return sg::Box3(glm::vec3(geometry.boundsMin()), glm::vec3(geometry.boundsMax()));
 }
 
@@ -389,6 +466,140 @@ void VolumeData::setGrid(volume::AnyGrid grid) {
 bool VolumeData::isLoaded() const {
     const std::lock_guard<std::mutex> lock(mMutex);
     return mLoaded != nullptr;
+}
+
+void VolumeData::setBrick(const std::optional<volume::IndexBox>& region) {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    if (region != mBrick) {
+        mBrick = region;
+        mLoaded.reset();
+        mScalar.reset();
+    }
+}
+
+std::optional<volume::IndexBox> VolumeData::brick() const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    return mBrick;
+}
+
+volume::GridGeometry VolumeData::wholeGeometry() const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    return detail::withNodeContext(*this, [this] { return wholeGeometryHeld(); });
+}
+
+volume::GridGeometry VolumeData::wholeGeometryHeld() const {
+    const volume::GridGeometry own = [this] {
+        switch (source.as<VolumeSource>()) {
+        case VolumeSource::FileRaw:
+        case VolumeSource::FileRawHeaderless:
+        case VolumeSource::FileNpy:
+            return volume::detail::rawGridGeometry(rawData(readablePath(fileName.value(), "file")));
+        case VolumeSource::FileNrrd: {
+            // The header alone: its gzip data would be checked to the end once handed over.
+            const std::string path = readablePath(fileName.value(), "file");
+            std::ifstream in = volume::detail::openForReading(path);
+            const volume::RawHeader layout = volume::NrrdHeader::parse(in, path).layout;
+            return volume::GridGeometry(layout.dims, layout.origin, layout.spacing);
+        }
+        case VolumeSource::FileNetCdf:
+            return volume::NetCdfReader(readablePath(fileName.value(), "file"))
+                .geometry(gridName.value(), timeStep.value())
+                .first;
+        case VolumeSource::FileVdb: {
+            const std::string path = readablePath(fileName.value(), "file");
+            return volume::vdbGridGeometry(path, vdbGridName(path));
+        }
+        case VolumeSource::Memory: {
+            const std::shared_ptr<const Loaded> data = read({});
+            return std::visit([](const auto& grid) { return grid->geometry(); }, data->grid);
+        }
+        default: {
+            // A generator's first voxel says where the grid starts and how its voxels lie.
+            const std::shared_ptr<const Loaded> first =
+                read({}, volume::IndexBox{glm::i64vec3(0), glm::i64vec3(1)});
+            const volume::GridGeometry one =
+                std::visit([](const auto& grid) { return grid->geometry(); }, first->grid);
+            return volume::GridGeometry(dims(), one.origin(), one.spacing());
+        }
+        }
+    }();
+    return placedGeometry(own, glm::i64vec3(0));
+}
+
+std::function<void(const volume::detail::RawDataDecoder&)>
+VolumeData::rawData(const std::string& path) const {
+    switch (source.as<VolumeSource>()) {
+    case VolumeSource::FileRaw:
+        return [path](const volume::detail::RawDataDecoder& use) {
+            volume::detail::withRawVolumeData(path, use);
+        };
+    case VolumeSource::FileRawHeaderless:
+        return
+            [this, path, layout = headerlessLayout()](const volume::detail::RawDataDecoder& use) {
+                volume::detail::withHeaderlessRawData(path, layout, headerBytes.value(), use);
+            };
+    case VolumeSource::FileNpy:
+        return [path](const volume::detail::RawDataDecoder& use) {
+            volume::detail::withNpyData(path, use);
+        };
+    default:
+        return [this, path, roots = dataRoots()](const volume::detail::RawDataDecoder& use) {
+            volume::detail::withNrrdData(path, use, roots.get());
+        };
+    }
+}
+
+std::string VolumeData::vdbGridName(const std::string& path) const {
+    if (!gridName.value().empty()) {
+        return gridName.value();
+    }
+    // A file of one grid needs no name; otherwise say which names there are.
+    const std::vector<volume::VdbGridInfo> grids = volume::listVdbGrids(path);
+    if (grids.size() != 1) {
+        std::string names;
+        for (const volume::VdbGridInfo& grid : grids) {
+            names += (names.empty() ? "" : ", ") + grid.name + " (" + grid.valueType + ")";
+        }
+        throw DataError(grids.empty() ? path + ": the file has no grids"
+                                      : "gridName is empty and " + path + " has " +
+                                            std::to_string(grids.size()) +
+                                            " grids; set gridName to one of: " + names);
+    }
+    return grids.front().name;
+}
+
+std::vector<volume::AnyGrid> VolumeData::brickGrids(const sg::WorkProgress& progress) const {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    if (!mBrick) {
+        throw DataError(detail::nodeContext(*this) + ": brickGrids() of a whole node");
+    }
+    const std::shared_ptr<const Loaded> data = loaded(progress);
+    std::vector<volume::AnyGrid> grids{data->grid};
+    for (const auto& named : data->scalars) {
+        grids.emplace_back(named.second);
+    }
+    return grids;
+}
+
+void VolumeData::setWholeGrids(
+    const std::vector<std::shared_ptr<const volume::WholeGrid>>& wholes) {
+    const std::lock_guard<std::mutex> lock(mMutex);
+    if (!mLoaded || !mLoaded->isBrick || wholes.size() != 1 + mLoaded->scalars.size()) {
+        throw DataError(detail::nodeContext(*this) +
+                        ": setWholeGrids() needs a loaded brick and the figures of each of its "
+                        "grids");
+    }
+    auto data = std::make_shared<Loaded>(*mLoaded);
+    data->gridWhole = wholes.front();
+    data->grid = std::visit(
+        [&](const auto& grid) -> volume::AnyGrid { return asBrick(grid, data->gridWhole); },
+        data->grid);
+    std::size_t next = 1;
+    for (auto& named : data->scalars) {
+        named.second = asBrick(named.second, wholes[next++]);
+    }
+    mLoaded = std::move(data);
+    mScalar.reset();
 }
 
 void VolumeData::getBoundingBox(sg::BoundingBoxAction& action) {

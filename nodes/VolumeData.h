@@ -2,7 +2,9 @@
 
 #include "nodes/volume/Aerogel.h"
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
 #include "nodes/volume/RawHeader.h"
+#include "nodes/volume/WholeGrid.h"
 #include "scenegraph/Box3.h"
 #include "scenegraph/Declare.h"
 #include "scenegraph/EnumNames.h"
@@ -12,9 +14,16 @@
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/io/RelativeFileNames.h"
 
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <vector>
+
+namespace texsplat::volume::detail {
+struct RawDataView;
+using RawDataDecoder = std::function<void(const RawDataView& data)>;
+} // namespace texsplat::volume::detail
 
 namespace texsplat::nodes {
 
@@ -205,6 +214,38 @@ public:
     /// @brief Whether the source is loaded now (the cache holds it).
     bool isLoaded() const;
 
+    /// @brief Makes this node serve one brick of its grid, for a render split over processes
+    /// (nodes/distributed, docs/distributed.md): from now on a load reads or generates only the
+    /// voxels of `region` (a box of the whole grid, wholeGeometry(); an empty one: none, the
+    /// accessors then answer one empty voxel), and the accessors answer bricks
+    /// (volume::BrickGrid) that know the whole grid's figures, once setWholeGrids() has given
+    /// them. bounds() stays the whole grid's box. `std::nullopt` makes the node whole again.
+    /// Drops the cache when the region changes.
+    void setBrick(const std::optional<volume::IndexBox>& region);
+
+    /// @brief The region setBrick() set, or `std::nullopt` for a whole node.
+    std::optional<volume::IndexBox> brick() const;
+
+    /// @brief The whole grid's dimensions, origin and spacing, from the file's header or the
+    /// generator's fields without reading the voxels (one voxel of a generator is made): what a
+    /// distributed render splits into bricks. For MEMORY, the grid's.
+    /// @throws as scalarGrid().
+    volume::GridGeometry wholeGeometry() const;
+
+    /// @brief For a brick (setBrick()): its grids as loaded, loading first (reporting to
+    /// `progress` as load() does): the source's grid, then a generator's further scalar grids in
+    /// the order of their names. What the whole grid's figures are gathered from.
+    /// @throws as load(); DataError when the node is whole.
+    std::vector<volume::AnyGrid> brickGrids(const sg::WorkProgress& progress = {}) const;
+
+    /// @brief For a brick: what the whole grid knows of each of brickGrids(), in that order,
+    /// gathered over the processes. From now on (until the next load) the accessors answer
+    /// bricks with these figures; a vector grid's magnitudes share its figures. Before this, the
+    /// accessors of a brick throw DataError.
+    /// @throws DataError when the node is whole, not loaded, or `wholes` does not match
+    /// brickGrids().
+    void setWholeGrids(const std::vector<std::shared_ptr<const volume::WholeGrid>>& wholes);
+
     /// @brief Puts this node into VolumeElement and extends the action's box by bounds().
     void getBoundingBox(sg::BoundingBoxAction& action) override;
 
@@ -226,20 +267,41 @@ private:
     // The source's data: a file load shared with other nodes loading the same (detail::sharedLoad),
     // or read().
     std::shared_ptr<const Loaded> loadShared(const sg::WorkProgress& progress) const;
-    // Reads or generates the source's data.
-    std::shared_ptr<const Loaded> read(const sg::WorkProgress& progress) const;
+    // Reads or generates the source's data: the whole grid, or the voxels of `region` (not
+    // empty, inside the grid).
+    std::shared_ptr<const Loaded> read(const sg::WorkProgress& progress,
+                                       const std::optional<volume::IndexBox>& region = {}) const;
     glm::i64vec3 dims() const;
     volume::RawHeader headerlessLayout() const;
-    // `grid` where `origin` and `spacing` put it: itself when both are empty.
+    // The geometry `origin` and `spacing` give a grid of geometry `own` that starts at voxel
+    // `offset` of the whole grid (a brick's).
+    volume::GridGeometry placedGeometry(const volume::GridGeometry& own,
+                                        const glm::i64vec3& offset) const;
+    // `grid` where `origin` and `spacing` put it: itself when both are empty. A brick's grid
+    // starts at voxel `offset` of the whole grid, which the fields place.
     template <typename T>
-    std::shared_ptr<const volume::Grid<T>>
-    placed(std::shared_ptr<const volume::Grid<T>> grid) const;
+    std::shared_ptr<const volume::Grid<T>> placed(std::shared_ptr<const volume::Grid<T>> grid,
+                                                  const glm::i64vec3& offset) const;
+    // The data of a brick (setBrick()) of a source whose whole grid is `whole`.
+    std::shared_ptr<const Loaded> readBrick(const sg::WorkProgress& progress,
+                                            const volume::GridGeometry& whole) const;
+    // wholeGeometry(); called with mMutex held.
+    volume::GridGeometry wholeGeometryHeld() const;
+    // What hands the raw values of `path` to a decoder, for the sources of raw values
+    // (texsplat-raw, headerless raw, NumPy, NRRD).
+    std::function<void(const volume::detail::RawDataDecoder&)>
+    rawData(const std::string& path) const;
+    // The grid of an OpenVDB file to read: gridName, or the file's only grid.
+    std::string vdbGridName(const std::string& path) const;
+    // The loaded data, checked to be ready for the accessors (a brick's whole figures given).
+    std::shared_ptr<const Loaded> servedData() const;
 
     mutable std::mutex mMutex;
     mutable std::shared_ptr<const Loaded> mLoaded;
     mutable volume::ScalarGridPtr mScalar;  // placed, made once per load
     mutable volume::VectorGridPtr mVectors; // placed, made once per load
     volume::AnyGrid mMemoryGrid; // source MEMORY: setGrid()'s grid (guarded by mMutex)
+    std::optional<volume::IndexBox> mBrick; // setBrick()'s region (guarded by mMutex)
 };
 
 } // namespace texsplat::nodes

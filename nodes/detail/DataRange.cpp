@@ -1,6 +1,7 @@
 #include "nodes/detail/DataRange.h"
 
 #include "nodes/volume/ValueHistogram.h"
+#include "scenegraph/Assert.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +13,18 @@ glm::dvec2 widenedRange(double low, double high) {
     return low < high ? glm::dvec2(low, high) : glm::dvec2(low - 0.5, low + 0.5);
 }
 
+namespace {
+
+// The statistics a data range is taken from: the whole grid's for a brick of it.
+template <class T> volume::GridStatistics rangeStatistics(const volume::Grid<T>& grid) {
+    const volume::WholeGrid* whole = grid.whole();
+    return whole ? whole->statistics : grid.statistics();
+}
+
+} // namespace
+
 template <class T> glm::dvec2 valueRange(const volume::Grid<T>& grid) {
-    const volume::GridStatistics statistics = grid.statistics();
+    const volume::GridStatistics statistics = rangeStatistics(grid);
     if (statistics.finiteCount == 0) {
         return {0.0, 1.0};
     }
@@ -22,7 +33,7 @@ template <class T> glm::dvec2 valueRange(const volume::Grid<T>& grid) {
 
 template <class T>
 glm::dvec2 percentileRange(const volume::Grid<T>& grid, double low, double high) {
-    const volume::GridStatistics statistics = grid.statistics();
+    const volume::GridStatistics statistics = rangeStatistics(grid);
     if (statistics.finiteCount == 0) {
         return {0.0, 1.0};
     }
@@ -31,9 +42,12 @@ glm::dvec2 percentileRange(const volume::Grid<T>& grid, double low, double high)
     if (!(span > 0.0)) {
         return widenedRange(minimum, minimum);
     }
-    constexpr std::size_t kBins = 65536;
+    constexpr std::size_t kBins = volume::WholeGrid::kHistogramBins;
+    const volume::WholeGrid* whole = grid.whole();
+    TEXSPLAT_ASSERT(!whole || whole->histogram.size() == kBins,
+                    "percentileRange(): a brick without the whole grid's histogram");
     const std::vector<std::uint64_t> counts =
-        volume::valueHistogram(grid, minimum, statistics.maximum, kBins);
+        whole ? whole->histogram : volume::valueHistogram(grid, minimum, statistics.maximum, kBins);
     // The value of rank p (0..count-1) interpolated within its bin, values spread evenly in it.
     const auto percentile = [&](double percent) {
         const double rank = percent / 100.0 * double(statistics.finiteCount - 1);

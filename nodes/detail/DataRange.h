@@ -17,7 +17,7 @@ glm::dvec2 widenedRange(double low, double high);
 /// @brief The `low` and `high` percentiles (in [0, 100], low < high) of the finite values of
 /// `grid` (for vectors: magnitudes), within 1 / 65536 of the value range (a histogram of that
 /// many bins, so that memory stays small for huge grids); widened as valueRange() when they
-/// are equal.
+/// are equal. For a brick, the whole grid's (from its WholeGrid histogram).
 template <class T> glm::dvec2 percentileRange(const volume::Grid<T>& grid, double low, double high);
 
 extern template glm::dvec2 valueRange(const volume::Grid<float>&);

@@ -89,7 +89,8 @@ glm::dvec3 aerogelVelocity(const glm::dvec3& position, const std::vector<Fiber>&
     return velocity * noSlip;
 }
 
-AerogelField generateAerogel(const AerogelParameters& parameters) {
+AerogelField generateAerogel(const AerogelParameters& parameters,
+                             const std::optional<IndexBox>& region) {
     const glm::dvec3& inflow = parameters.inflow;
     if (!std::isfinite(inflow.x) || !std::isfinite(inflow.y) || !std::isfinite(inflow.z))
         throw DataError("aerogel: inflow must be finite, got " + detail::formatNumber(inflow.x) +
@@ -100,7 +101,7 @@ AerogelField generateAerogel(const AerogelParameters& parameters) {
                                                             glm::dvec3(0.0), glm::dvec3(1.0));
     VectorGridPtr velocity = detail::sampleGrid<glm::vec3>(
         geometry,
-        [&](const glm::dvec3& p) { return glm::vec3(aerogelVelocity(p, fibers, inflow)); });
+        [&](const glm::dvec3& p) { return glm::vec3(aerogelVelocity(p, fibers, inflow)); }, region);
     return {std::move(velocity), std::move(fibers)};
 }
 

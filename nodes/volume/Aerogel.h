@@ -1,8 +1,10 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace texsplat::volume {
@@ -61,7 +63,11 @@ glm::dvec3 aerogelVelocity(const glm::dvec3& position, const std::vector<Fiber>&
 
 /// @brief The fibers and the velocity sampled on a dims grid over [0,1]^3 (the paper's Figure 7
 /// volume-renders its magnitude; see magnitudeGrid()).
-/// @throws DataError for dims below 1, bad fiber parameters, or a non-finite inflow.
-AerogelField generateAerogel(const AerogelParameters& parameters);
+/// With `region` (a box of voxels inside the grid, not empty), only those voxels, placed where they
+/// lie in the grid: a brick of a render split over processes.
+/// @throws DataError for dims below 1, bad fiber parameters, a non-finite inflow, or a region
+/// outside the grid.
+AerogelField generateAerogel(const AerogelParameters& parameters,
+                             const std::optional<IndexBox>& region = std::nullopt);
 
 } // namespace texsplat::volume

@@ -34,12 +34,14 @@ double blobValue(const glm::dvec3& position, const std::vector<GaussianTerm>& te
     return sum;
 }
 
-ScalarGridPtr generateBlob(const BlobParameters& parameters) {
+ScalarGridPtr generateBlob(const BlobParameters& parameters,
+                           const std::optional<IndexBox>& region) {
     const std::vector<GaussianTerm> terms = blobTerms(parameters);
     const GridGeometry geometry = detail::generatorGeometry(
         "blob", parameters.dims, glm::dvec3(-1.0), glm::dvec3(1.0));
     return detail::sampleGrid<float>(
-        geometry, [&terms](const glm::dvec3& position) { return blobValue(position, terms); });
+        geometry, [&terms](const glm::dvec3& position) { return blobValue(position, terms); },
+        region);
 }
 
 } // namespace texsplat::volume

@@ -1,8 +1,10 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace texsplat::volume {
@@ -37,7 +39,10 @@ double blobValue(const glm::dvec3& position, const std::vector<GaussianTerm>& te
 
 /// @brief A smooth blob (sum of a few seeded Gaussians) sampled on a dims grid over [-1,1]^3:
 /// a simple scalar field with soft boundaries and several overlapping lobes.
-/// @throws DataError for dims below 1 or termCount below 1.
-ScalarGridPtr generateBlob(const BlobParameters& parameters);
+/// With `region` (a box of voxels inside the grid, not empty), only those voxels, placed where they
+/// lie in the grid: a brick of a render split over processes.
+/// @throws DataError for dims below 1, termCount below 1, or a region outside the grid.
+ScalarGridPtr generateBlob(const BlobParameters& parameters,
+                           const std::optional<IndexBox>& region = std::nullopt);
 
 } // namespace texsplat::volume

@@ -2,6 +2,7 @@
 
 #include "nodes/volume/GridGeometry.h"
 #include "nodes/volume/GridStatistics.h"
+#include "nodes/volume/WholeGrid.h"
 
 #include <glm/glm.hpp>
 
@@ -83,6 +84,9 @@ public:
     /// @brief Value range and counts; scans the stored voxels on each call, so cache the result.
     /// By default through forEachStored(); grids that can walk their values directly do.
     virtual GridStatistics statistics() const;
+    /// @brief For a brick of a grid split over processes (BrickGrid): what it knows of the whole
+    /// grid, which data ranges are taken from; nullptr (the default) for a grid that is whole.
+    virtual const WholeGrid* whole() const { return nullptr; }
 
 protected:
     /// @brief For subclasses: a grid with this geometry whose empty voxels read as `background`.

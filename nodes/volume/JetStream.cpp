@@ -79,7 +79,8 @@ void checkBox(const JetStreamParameters& p) {
 
 } // namespace
 
-JetStreamField generateJetStream(const JetStreamParameters& parameters) {
+JetStreamField generateJetStream(const JetStreamParameters& parameters,
+                                 const std::optional<IndexBox>& region) {
     checkBox(parameters);
     const GridGeometry geometry = detail::generatorGeometry(
         "jet-stream", parameters.dims,
@@ -121,8 +122,8 @@ JetStreamField generateJetStream(const JetStreamParameters& parameters) {
         return 100.0 * smoothstep(0.25, 0.6, humidity);
     };
 
-    return {detail::sampleGrid<glm::vec3>(geometry, wind),
-            detail::sampleGrid<float>(geometry, cloudiness)};
+    return {detail::sampleGrid<glm::vec3>(geometry, wind, region),
+            detail::sampleGrid<float>(geometry, cloudiness, region)};
 }
 
 } // namespace texsplat::volume

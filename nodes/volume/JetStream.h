@@ -1,8 +1,10 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace texsplat::volume {
 
@@ -39,7 +41,11 @@ struct JetStreamField {
 /// east, Gaussian in latitude and altitude around their cores, over weak westerlies; clouds
 /// along the polar front where the flow turns poleward, and in a tropical band, shaped by
 /// seeded value noise and confined to the lower troposphere. Formulas in docs/data.md.
-/// @throws DataError for dims below 1, an empty or reversed box, or a non-finite time.
-JetStreamField generateJetStream(const JetStreamParameters& parameters);
+/// With `region` (a box of voxels inside the grid, not empty), only those voxels, placed where they
+/// lie in the grid: a brick of a render split over processes.
+/// @throws DataError for dims below 1, an empty or reversed box, a non-finite time, or a region
+/// outside the grid.
+JetStreamField generateJetStream(const JetStreamParameters& parameters,
+                                 const std::optional<IndexBox>& region = std::nullopt);
 
 } // namespace texsplat::volume

@@ -16,7 +16,8 @@ double marschnerLobb(const glm::dvec3& position, double modulationFrequency, dou
            (2.0 * (1.0 + alpha));
 }
 
-ScalarGridPtr generateMarschnerLobb(const MarschnerLobbParameters& parameters) {
+ScalarGridPtr generateMarschnerLobb(const MarschnerLobbParameters& parameters,
+                                    const std::optional<IndexBox>& region) {
     if (!std::isfinite(parameters.modulationFrequency))
         throw DataError("marschner-lobb: modulation frequency must be finite, got " +
                         detail::formatNumber(parameters.modulationFrequency));
@@ -25,9 +26,12 @@ ScalarGridPtr generateMarschnerLobb(const MarschnerLobbParameters& parameters) {
                         detail::formatNumber(parameters.alpha));
     const GridGeometry geometry = detail::generatorGeometry(
         "marschner-lobb", parameters.dims, glm::dvec3(-1.0), glm::dvec3(1.0));
-    return detail::sampleGrid<float>(geometry, [&](const glm::dvec3& position) {
-        return marschnerLobb(position, parameters.modulationFrequency, parameters.alpha);
-    });
+    return detail::sampleGrid<float>(
+        geometry,
+        [&](const glm::dvec3& position) {
+            return marschnerLobb(position, parameters.modulationFrequency, parameters.alpha);
+        },
+        region);
 }
 
 } // namespace texsplat::volume

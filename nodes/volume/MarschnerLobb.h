@@ -1,6 +1,9 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
+
+#include <optional>
 
 namespace texsplat::volume {
 
@@ -22,7 +25,11 @@ struct MarschnerLobbParameters {
 double marschnerLobb(const glm::dvec3& position, double modulationFrequency, double alpha);
 
 /// @brief The signal sampled on a dims grid over [-1,1]^3.
-/// @throws DataError for dims below 1, a non-finite f_M, or alpha not finite and >= 0.
-ScalarGridPtr generateMarschnerLobb(const MarschnerLobbParameters& parameters);
+/// With `region` (a box of voxels inside the grid, not empty), only those voxels, placed where they
+/// lie in the grid: a brick of a render split over processes.
+/// @throws DataError for dims below 1, a non-finite f_M, alpha not finite and >= 0, or a region
+/// outside the grid.
+ScalarGridPtr generateMarschnerLobb(const MarschnerLobbParameters& parameters,
+                                    const std::optional<IndexBox>& region = std::nullopt);
 
 } // namespace texsplat::volume

@@ -478,24 +478,32 @@ struct NetCdfReader::File {
     // Reads the selection a z slice of the file at a time into `slice(z, values)`, values in the
     // grid's order (axes the file stores from their far end turned round), interleaved for
     // vectors.
+    // `region` (of the grid's voxels; the whole grid by default) limits the read to its
+    // hyperslab: the slices are then the region's, numbered from its first.
     void readSlices(const Selection& selection, std::int64_t timeStep,
                     const ProgressCallback& progress,
-                    const std::function<void(std::int64_t, const std::vector<float>&)>& slice)
-        const {
+                    const std::function<void(std::int64_t, const std::vector<float>&)>& slice,
+                    const std::optional<IndexBox>& region = std::nullopt) const {
         const std::size_t components = selection.ids.size();
         std::vector<ValueMapping> mappings;
         for (const int variable : selection.ids)
             mappings.push_back(valueMapping(variable, selection.where));
         const bool hasTime = selection.infos.front().dimensions.size() == 4;
-        const glm::i64vec3 dims = selection.geometry.dims();
+        const glm::i64vec3 whole = selection.geometry.dims();
+        const IndexBox box = region.value_or(IndexBox::of(selection.geometry));
+        const glm::i64vec3 dims = box.dims();
         const glm::bvec3 reversed = selection.reversed;
+        // The file's first index of the box along each axis (the far end of a reversed one).
+        glm::i64vec3 fileFirst;
+        for (int axis = 0; axis < 3; ++axis)
+            fileFirst[axis] = reversed[axis] ? whole[axis] - box.hi[axis] : box.lo[axis];
         const std::size_t sliceVoxels = static_cast<std::size_t>(dims.x * dims.y);
         std::vector<double> raw(sliceVoxels);
         std::vector<float> values(sliceVoxels * components);
         reportProgress(progress, path, 0.0, selection.message);
         for (std::int64_t fileZ = 0; fileZ < dims.z; ++fileZ) {
             for (std::size_t component = 0; component < components; ++component) {
-                // One z slice: (time step,) z, all y, all x.
+                // One z slice of the box: (time step,) z, its y, its x.
                 std::size_t start[4] = {};
                 std::size_t count[4] = {};
                 const std::size_t zAxis = hasTime ? 1 : 0;
@@ -503,12 +511,15 @@ struct NetCdfReader::File {
                     start[0] = static_cast<std::size_t>(timeStep);
                     count[0] = 1;
                 }
-                start[zAxis] = static_cast<std::size_t>(fileZ);
+                start[zAxis] = static_cast<std::size_t>(fileFirst.z + fileZ);
+                start[zAxis + 1] = static_cast<std::size_t>(fileFirst.y);
+                start[zAxis + 2] = static_cast<std::size_t>(fileFirst.x);
                 count[zAxis] = 1;
                 count[zAxis + 1] = static_cast<std::size_t>(dims.y);
                 count[zAxis + 2] = static_cast<std::size_t>(dims.x);
                 check(nc_get_vara_double(id, selection.ids[component], start, count, raw.data()),
-                      selection.where, "cannot read z slice " + std::to_string(fileZ));
+                      selection.where,
+                      "cannot read z slice " + std::to_string(fileFirst.z + fileZ));
                 const ValueMapping& mapping = mappings[component];
                 std::size_t n = 0;
                 for (std::int64_t fileY = 0; fileY < dims.y; ++fileY) {
@@ -543,34 +554,49 @@ std::pair<GridGeometry, int> NetCdfReader::geometry(const std::string& names,
 }
 
 AnyGrid NetCdfReader::read(const std::string& names, std::int64_t timeStep,
-                           const ProgressCallback& progress) const {
+                           const ProgressCallback& progress,
+                           const std::optional<IndexBox>& region) const {
     const Selection& selection = mFile->select(names, timeStep);
     const int components = static_cast<int>(selection.ids.size());
-    detail::checkGridFitsInMemory(selection.where, selection.geometry, components);
+    const IndexBox all = IndexBox::of(selection.geometry);
+    if (region && (region->isEmpty() || region->intersection(all) != *region))
+        throw DataError(selection.where + ": brick " + region->text() +
+                        " is not a box of voxels of the grid's " + all.text());
+    const GridGeometry geometry =
+        region ? boxGeometry(selection.geometry, *region) : selection.geometry;
+    detail::checkGridFitsInMemory(selection.where, geometry, components);
     mFile->checkStorage(selection);
-    const glm::i64vec3 dims = selection.geometry.dims();
+    const glm::i64vec3 dims = geometry.dims();
     const auto sliceVoxels = static_cast<std::size_t>(dims.x * dims.y);
+    // A brick's voxels are checked with the whole grid's, by the render that split it.
+    const auto checkFinite = [&](const auto& grid) {
+        if (!region)
+            detail::checkFiniteVoxels(selection.where, grid->statistics());
+    };
     if (components == 1) {
-        auto grid = std::make_shared<DenseScalarGrid>(selection.geometry);
-        mFile->readSlices(selection, timeStep, progress,
-                          [&](std::int64_t z, const std::vector<float>& values) {
-                              std::copy(values.begin(), values.end(),
-                                        grid->values().begin() +
-                                            static_cast<std::ptrdiff_t>(z * sliceVoxels));
-                          });
-        detail::checkFiniteVoxels(selection.where, grid->statistics());
+        auto grid = std::make_shared<DenseScalarGrid>(geometry);
+        mFile->readSlices(
+            selection, timeStep, progress,
+            [&](std::int64_t z, const std::vector<float>& values) {
+                std::copy(values.begin(), values.end(),
+                          grid->values().begin() + static_cast<std::ptrdiff_t>(z * sliceVoxels));
+            },
+            region);
+        checkFinite(grid);
         return grid;
     }
-    auto grid = std::make_shared<DenseVectorGrid>(selection.geometry);
-    mFile->readSlices(selection, timeStep, progress,
-                      [&](std::int64_t z, const std::vector<float>& values) {
-                          glm::vec3* target =
-                              grid->values().data() + static_cast<std::ptrdiff_t>(z * sliceVoxels);
-                          for (std::size_t voxel = 0; voxel < sliceVoxels; ++voxel)
-                              target[voxel] = glm::vec3(values[3 * voxel], values[3 * voxel + 1],
-                                                        values[3 * voxel + 2]);
-                      });
-    detail::checkFiniteVoxels(selection.where, grid->statistics());
+    auto grid = std::make_shared<DenseVectorGrid>(geometry);
+    mFile->readSlices(
+        selection, timeStep, progress,
+        [&](std::int64_t z, const std::vector<float>& values) {
+            glm::vec3* target =
+                grid->values().data() + static_cast<std::ptrdiff_t>(z * sliceVoxels);
+            for (std::size_t voxel = 0; voxel < sliceVoxels; ++voxel)
+                target[voxel] =
+                    glm::vec3(values[3 * voxel], values[3 * voxel + 1], values[3 * voxel + 2]);
+        },
+        region);
+    checkFinite(grid);
     return grid;
 }
 
@@ -619,7 +645,8 @@ std::pair<GridGeometry, int> NetCdfReader::geometry(const std::string&, std::int
     return {GridGeometry(glm::i64vec3(1)), 1};
 }
 
-AnyGrid NetCdfReader::read(const std::string&, std::int64_t, const ProgressCallback&) const {
+AnyGrid NetCdfReader::read(const std::string&, std::int64_t, const ProgressCallback&,
+                           const std::optional<IndexBox>&) const {
     return {};
 }
 

@@ -2,11 +2,13 @@
 
 #include "nodes/volume/Grid.h"
 #include "nodes/volume/GridGeometry.h"
+#include "nodes/volume/IndexBox.h"
 #include "nodes/volume/Progress.h"
 
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -101,8 +103,12 @@ public:
     /// variable declared larger than its compressed data could hold (the rest would be fill
     /// values, never written), or a variable with no finite value; ResourceError for a grid or
     /// chunks too large for the memory limit; LoadCancelled when `progress` answered false.
+    /// With `region` (a box of the grid's voxels, not empty), reads only its hyperslab, into a
+    /// grid of the region placed where it lies (a brick of a render split over processes; its
+    /// values are not checked for finite ones, and none need be).
     AnyGrid read(const std::string& names, std::int64_t timeStep = 0,
-                 const ProgressCallback& progress = {}) const;
+                 const ProgressCallback& progress = {},
+                 const std::optional<IndexBox>& region = std::nullopt) const;
 
     /// @brief The values read() would hold, a z slice at a time in the grid's order (x fastest,
     /// then y; `components` values a voxel), without holding the grid: `slice(z, values)` for

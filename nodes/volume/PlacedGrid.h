@@ -46,6 +46,8 @@ public:
     }
     /// @copydoc Grid::statistics
     GridStatistics statistics() const override { return mPlaced->statistics(); }
+    /// @copydoc Grid::whole
+    const WholeGrid* whole() const override { return mPlaced->whole(); }
 
 private:
     std::shared_ptr<const Grid<T>> mPlaced;

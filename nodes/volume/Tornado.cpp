@@ -32,15 +32,19 @@ glm::dvec3 tornadoVelocity(const glm::dvec3& position, double time) {
     return {scale * (y - yc) + 0.1 * (x - xc), scale * -(x - xc) + 0.1 * (y - yc), scale * z0};
 }
 
-VectorGridPtr generateTornado(const TornadoParameters& parameters) {
+VectorGridPtr generateTornado(const TornadoParameters& parameters,
+                              const std::optional<IndexBox>& region) {
     if (!std::isfinite(parameters.time))
         throw DataError("tornado: time must be finite, got " +
                         detail::formatNumber(parameters.time));
     const GridGeometry geometry = detail::generatorGeometry(
         "tornado", parameters.dims, glm::dvec3(0.0), glm::dvec3(1.0));
-    return detail::sampleGrid<glm::vec3>(geometry, [&](const glm::dvec3& position) {
-        return glm::vec3(tornadoVelocity(position, parameters.time));
-    });
+    return detail::sampleGrid<glm::vec3>(
+        geometry,
+        [&](const glm::dvec3& position) {
+            return glm::vec3(tornadoVelocity(position, parameters.time));
+        },
+        region);
 }
 
 } // namespace texsplat::volume

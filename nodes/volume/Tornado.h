@@ -1,6 +1,9 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
+
+#include <optional>
 
 namespace texsplat::volume {
 
@@ -25,7 +28,10 @@ glm::dvec3 tornadoVelocity(const glm::dvec3& position, double time);
 
 /// @brief The tornado sampled on a dims grid over [0,1]^3 (voxel i at x = i / (dims.x - 1), as
 /// in the original), origin 0.
-/// @throws DataError for dims below 1 or a non-finite time.
-VectorGridPtr generateTornado(const TornadoParameters& parameters);
+/// With `region` (a box of voxels inside the grid, not empty), only those voxels, placed where they
+/// lie in the grid: a brick of a render split over processes.
+/// @throws DataError for dims below 1 or a non-finite time, or a region outside the grid.
+VectorGridPtr generateTornado(const TornadoParameters& parameters,
+                              const std::optional<IndexBox>& region = std::nullopt);
 
 } // namespace texsplat::volume

@@ -17,6 +17,8 @@
 #include <exception>
 #include <memory>
 #include <new>
+#include <optional>
+#include <utility>
 #include <vector>
 #endif
 
@@ -203,13 +205,17 @@ GridGeometry geometryOf(const openvdb::GridBase& grid, const openvdb::CoordBBox&
     }
 }
 
-// `treeBytes`: what OpenVDB's tree holds while it is copied, where this read made it.
+// `treeBytes`: what OpenVDB's tree holds while it is copied, where this read made it. With
+// `clip` (a brick's box of OpenVDB's voxels), the grid is that box's voxels (whose active voxels
+// may be none), unchecked for finite values (the whole grid's are checked by the render that
+// split it).
 template <typename VdbGrid>
 auto convert(const VdbGrid& source, const std::string& path, const std::string& gridName,
-             const ProgressCallback& progress, std::uint64_t treeBytes) {
+             const ProgressCallback& progress, std::uint64_t treeBytes,
+             const std::optional<openvdb::CoordBBox>& clip = std::nullopt) {
     using Value = decltype(toGlm(source.background()));
     const std::string where = path + ": grid '" + gridName + "'";
-    const openvdb::CoordBBox box = source.evalActiveVoxelBoundingBox();
+    const openvdb::CoordBBox box = clip ? *clip : source.evalActiveVoxelBoundingBox();
     if (box.empty())
         throw DataError(where + " has no active voxels");
     const GridGeometry geometry = geometryOf(source, box, where);
@@ -245,8 +251,12 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
     // Leaves a block at a time. OpenVDB orders a leaf's voxels z fastest, a block x fastest.
     typename SparseGrid<Value>::BlockVoxels block;
     for (auto leaf = source.tree().cbeginLeaf(); leaf; ++leaf) {
+        if (clip && !clip->hasOverlap(leaf->getNodeBoundingBox()))
+            continue;
         block.active.reset();
         for (auto on = leaf->cbeginValueOn(); on; ++on) {
+            if (clip && !clip->isInside(on.getCoord()))
+                continue;
             const openvdb::Index n = on.pos();
             const std::size_t slot = ((n >> 6U) & 7U) + 8 * (((n >> 3U) & 7U) + 8 * (n & 7U));
             block.values[slot] = toGlm(*on);
@@ -268,18 +278,47 @@ auto convert(const VdbGrid& source, const std::string& path, const std::string& 
         block.values.fill(toGlm(*tile));
         // In 64 bits: OpenVDB's box iterator steps past the largest int to the smallest, and
         // goes on, for a voxel at index 2^31 - 1.
+        if (clip) {
+            // A brick takes the tile's blocks that lie in its box, each cut to it.
+            voxels.intersect(*clip);
+            if (voxels.empty())
+                continue;
+            voxels = openvdb::CoordBBox(voxels.min() & ~(kBlock - 1), voxels.max() | (kBlock - 1));
+        }
         const glm::i64vec3 first(voxels.min().x(), voxels.min().y(), voxels.min().z());
         const glm::i64vec3 last(voxels.max().x(), voxels.max().y(), voxels.max().z());
         for (std::int64_t z = first.z; z <= last.z; z += kBlock)
             for (std::int64_t y = first.y; y <= last.y; y += kBlock)
                 for (std::int64_t x = first.x; x <= last.x; x += kBlock) {
+                    if (clip) {
+                        block.active.reset();
+                        for (std::size_t slot = 0; slot < block.active.size(); ++slot) {
+                            const openvdb::Coord voxel(
+                                static_cast<openvdb::Int32>(x + std::int64_t(slot % 8)),
+                                static_cast<openvdb::Int32>(y + std::int64_t(slot / 8 % 8)),
+                                static_cast<openvdb::Int32>(z + std::int64_t(slot / 64)));
+                            block.active.set(slot, clip->isInside(voxel));
+                        }
+                    }
                     grid->setBlock(glm::i64vec3(x, y, z) - low, block);
                     count(kBlock * kBlock * kBlock);
                 }
     }
     reportProgress(progress, path, 1.0, message);
-    detail::checkFiniteVoxels(where, grid->statistics());
+    if (!clip)
+        detail::checkFiniteVoxels(where, grid->statistics());
     return grid;
+}
+
+// OpenVDB's box of the voxels of `region` of the grid readVdbGrid() makes of `grid`, whose
+// active voxels' box is `whole`.
+openvdb::CoordBBox regionBox(const openvdb::CoordBBox& whole, const IndexBox& region) {
+    const auto coord = [](const glm::i64vec3& index) {
+        return openvdb::Coord(static_cast<openvdb::Int32>(index.x),
+                              static_cast<openvdb::Int32>(index.y),
+                              static_cast<openvdb::Int32>(index.z));
+    };
+    return {whole.min() + coord(region.lo), whole.min() + coord(region.hi - std::int64_t{1})};
 }
 
 } // namespace
@@ -303,15 +342,15 @@ VectorGridPtr gridFromVdb(const openvdb::Vec3SGrid& grid) {
     return convert(grid, kInMemory, grid.getName(), {}, 0);
 }
 
-AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
-                    const ProgressCallback& progress) {
-    detail::VdbFileTrees trees;
-    auto file = openVdb(path, trees);
+namespace {
+
+// Throws unless the file has a float or vec3s grid named `gridName`, naming the grids it has.
+void requireGrid(openvdb::io::File& file, const std::string& path, const std::string& gridName) {
     const bool hasGrid =
-        callOpenVdb([&] { return file->hasGrid(gridName); },
+        callOpenVdb([&] { return file.hasGrid(gridName); },
                     [&](const std::string& reason) { return corrupt(path, reason); });
     if (!hasGrid) {
-        const std::vector<VdbGridInfo> infos = gridInfos(*file, path);
+        const std::vector<VdbGridInfo> infos = gridInfos(file, path);
         std::string available;
         for (const VdbGridInfo& info : infos)
             available += (available.empty() ? "" : ", ") + info.name + " (" + info.valueType + ")";
@@ -324,10 +363,82 @@ AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
     };
     // The type first, from the grid's metadata: the tree of a grid of another type (bool, mask,
     // points) is not one that the header walk checked, and is not read.
-    const std::string valueType = callOpenVdb(
-        [&] { return file->readGridMetadata(gridName)->valueType(); }, cannotRead);
+    const std::string valueType =
+        callOpenVdb([&] { return file.readGridMetadata(gridName)->valueType(); }, cannotRead);
     if (valueType != "float" && valueType != "vec3s")
         throw DataError(where + " holds " + valueType + " values; expected float or vec3s");
+}
+
+// The grid's metadata and transform, and its active voxels' box as OpenVDB writes it with every
+// grid (file_bbox_min, file_bbox_max), without reading the tree.
+std::pair<openvdb::GridBase::Ptr, openvdb::CoordBBox>
+gridBox(openvdb::io::File& file, const std::string& path, const std::string& gridName) {
+    requireGrid(file, path, gridName);
+    const std::string where = path + ": grid '" + gridName + "'";
+    const openvdb::GridBase::Ptr metadata = callOpenVdb(
+        [&] { return file.readGridMetadata(gridName); },
+        [&](const std::string& reason) { return where + " cannot be read (" + reason + ")"; });
+    const auto low = (*metadata)[openvdb::GridBase::META_FILE_BBOX_MIN];
+    const auto high = (*metadata)[openvdb::GridBase::META_FILE_BBOX_MAX];
+    const auto* min = dynamic_cast<const openvdb::Vec3IMetadata*>(low.get());
+    const auto* max = dynamic_cast<const openvdb::Vec3IMetadata*>(high.get());
+    if (!min || !max)
+        throw DataError(where + " has no bounding box in its metadata (file_bbox_min, "
+                                "file_bbox_max, which OpenVDB writes with each grid): a render "
+                                "split over processes cannot read it by bricks; render it in one "
+                                "process");
+    const openvdb::CoordBBox box(openvdb::Coord(min->value()), openvdb::Coord(max->value()));
+    if (box.empty())
+        throw DataError(where + " has no active voxels");
+    return {metadata, box};
+}
+
+} // namespace
+
+GridGeometry vdbGridGeometry(const std::string& path, const std::string& gridName) {
+    detail::VdbFileTrees trees;
+    auto file = openVdb(path, trees);
+    const auto [metadata, box] = gridBox(*file, path, gridName);
+    return geometryOf(*metadata, box, path + ": grid '" + gridName + "'");
+}
+
+AnyGrid readVdbRegion(const std::string& path, const std::string& gridName, const IndexBox& region,
+                      const ProgressCallback& progress) {
+    detail::VdbFileTrees trees;
+    auto file = openVdb(path, trees);
+    const auto [metadata, whole] = gridBox(*file, path, gridName);
+    const std::string where = path + ": grid '" + gridName + "'";
+    const GridGeometry wholeGeometry = geometryOf(*metadata, whole, where);
+    if (region.isEmpty() || region.intersection(IndexBox::of(wholeGeometry)) != region)
+        throw DataError(where + ": brick " + region.text() +
+                        " is not a box of voxels of the "
+                        "grid's " +
+                        IndexBox::of(wholeGeometry).text());
+    const openvdb::CoordBBox box = regionBox(whole, region);
+    // OpenVDB reads the tree's topology and only the leaves that meet the brick's world box.
+    const openvdb::BBoxd world = metadata->transform().indexToWorld(box);
+    const std::string reading = "reading grid '" + gridName + "'";
+    reportProgress(progress, path, 0.0, reading);
+    const openvdb::GridBase::Ptr base = callOpenVdb(
+        [&] { return file->readGrid(gridName, world); },
+        [&](const std::string& reason) { return where + " cannot be read (" + reason + ")"; });
+    reportProgress(progress, path, 1.0, reading);
+    if (auto scalar = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
+        return ScalarGridPtr(convert(*scalar, path, gridName, progress, 0, box));
+    if (auto vector = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))
+        return VectorGridPtr(convert(*vector, path, gridName, progress, 0, box));
+    throw DataError(where + " holds " + base->valueType() + " values; expected float or vec3s");
+}
+
+AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
+                    const ProgressCallback& progress) {
+    detail::VdbFileTrees trees;
+    auto file = openVdb(path, trees);
+    requireGrid(*file, path, gridName);
+    const std::string where = path + ": grid '" + gridName + "'";
+    const auto cannotRead = [&](const std::string& reason) {
+        return where + " cannot be read (" + reason + ")";
+    };
     // A float or vec3s grid's tree was walked; a file written as a stream has been read whole.
     const detail::VdbTreeSize* walked = trees.find(gridName);
     const detail::VdbTreeSize tree = walked != nullptr ? *walked : detail::VdbTreeSize{};
@@ -368,6 +479,15 @@ bool isOpenVdbAvailable() { return false; }
 std::vector<VdbGridInfo> listVdbGrids(const std::string& path) { notBuiltIn(path); }
 
 AnyGrid readVdbGrid(const std::string& path, const std::string&, const ProgressCallback&) {
+    notBuiltIn(path);
+}
+
+GridGeometry vdbGridGeometry(const std::string& path, const std::string&) {
+    notBuiltIn(path);
+}
+
+AnyGrid readVdbRegion(const std::string& path, const std::string&, const IndexBox&,
+                      const ProgressCallback&) {
     notBuiltIn(path);
 }
 

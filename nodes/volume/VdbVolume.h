@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
 #include "nodes/volume/Progress.h"
 
 #include <string>
@@ -40,5 +41,19 @@ std::vector<VdbGridInfo> listVdbGrids(const std::string& path);
 /// `progress` answered false.
 AnyGrid readVdbGrid(const std::string& path, const std::string& gridName,
                     const ProgressCallback& progress = {});
+
+/// @brief The geometry readVdbGrid() gives the grid named `gridName`, from its metadata (the
+/// active voxels' box OpenVDB writes with each grid, `file_bbox_min` and `file_bbox_max`) and
+/// transform, without reading its tree.
+/// @throws as readVdbGrid(); DataError for a grid without that metadata.
+GridGeometry vdbGridGeometry(const std::string& path, const std::string& gridName);
+
+/// @brief readVdbGrid() of the voxels of `region` only (a box of that grid's voxels, not empty: a
+/// brick of a render split over processes), placed where they lie: OpenVDB reads the tree's
+/// topology and only the leaves that meet the region's box. The brick's active voxels may be
+/// none, and are not checked for finite values.
+/// @throws as vdbGridGeometry() and readVdbGrid(); DataError for a region outside the grid.
+AnyGrid readVdbRegion(const std::string& path, const std::string& gridName, const IndexBox& region,
+                      const ProgressCallback& progress = {});
 
 } // namespace texsplat::volume

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/volume/Grid.h"
+#include "nodes/volume/IndexBox.h"
 #include "nodes/volume/Progress.h"
 #include "nodes/volume/RawHeader.h"
 #include "scenegraph/io/DataRoots.h"
@@ -93,6 +94,25 @@ void withNrrdData(const std::string& path, const RawDataDecoder& use,
 AnyGrid readRawData(std::istream& in, const std::string& path, const RawHeader& layout,
                     RawOrder order, const ProgressCallback& progress,
                     const FileAxes& axes = {});
+
+/// @brief readRawData() of the voxels of `region` only (a box inside the grid, not empty: a
+/// brick of a render split over processes), placed where they lie in the grid: a stream that can
+/// seek is read only where the region's rows lie, one that cannot (gzip) is read through,
+/// keeping the region's values. The voxels are not checked for finite values (the whole grid is,
+/// by the render that split it).
+/// @throws IoError when reading fails; DataError for a region outside the grid or one that does
+/// not fit in memory; LoadCancelled when `progress` answered false.
+AnyGrid readRawRegion(const RawDataView& data, const IndexBox& region,
+                      const ProgressCallback& progress);
+
+/// @brief readRawRegion() of the data that `with` (withNpyData() and the like, bound to a file)
+/// hands its decoder.
+AnyGrid readRawGridRegion(const std::function<void(const RawDataDecoder&)>& with,
+                          const IndexBox& region, const ProgressCallback& progress);
+
+/// @brief The geometry of the grid whose data `with` hands its decoder, from the header, without
+/// reading a value.
+GridGeometry rawGridGeometry(const std::function<void(const RawDataDecoder&)>& with);
 
 /// @brief The grid readRawData() makes of the data that `with` (withNpyData() and the like, bound
 /// to a file) hands its decoder.

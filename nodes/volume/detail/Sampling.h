@@ -1,22 +1,31 @@
 #pragma once
 
 #include "nodes/volume/DenseGrid.h"
+#include "nodes/volume/IndexBox.h"
 #include "scenegraph/Error.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace texsplat::volume::detail {
 
-/// @brief A dense grid whose voxel values are `field(world position of the voxel center)`.
+/// @brief A dense grid whose voxel values are `field(world position of the voxel center)`: the
+/// voxels of `geometry`, or with `region` (not empty, inside the grid) only those of that box,
+/// placed where they lie in it (a brick of a distributed render).
+/// @throws DataError when `region` is empty or reaches outside the grid.
 template <typename T, typename Field>
-std::shared_ptr<DenseGrid<T>> sampleGrid(const GridGeometry& geometry, const Field& field) {
-    auto grid = std::make_shared<DenseGrid<T>>(geometry);
+std::shared_ptr<DenseGrid<T>> sampleGrid(const GridGeometry& geometry, const Field& field,
+                                         const std::optional<IndexBox>& region = std::nullopt) {
+    const IndexBox box = region.value_or(IndexBox::of(geometry));
+    if (box.isEmpty() || box.intersection(IndexBox::of(geometry)) != box)
+        throw DataError("region " + box.text() + " is not a box of voxels of the grid's " +
+                        IndexBox::of(geometry).text());
+    auto grid = std::make_shared<DenseGrid<T>>(boxGeometry(geometry, box));
     T* out = grid->values().data();
-    const glm::i64vec3& dims = geometry.dims();
-    for (std::int64_t k = 0; k < dims.z; ++k)
-        for (std::int64_t j = 0; j < dims.y; ++j)
-            for (std::int64_t i = 0; i < dims.x; ++i)
+    for (std::int64_t k = box.lo.z; k < box.hi.z; ++k)
+        for (std::int64_t j = box.lo.y; j < box.hi.y; ++j)
+            for (std::int64_t i = box.lo.x; i < box.hi.x; ++i)
                 *out++ = T(field(geometry.indexToWorld(glm::dvec3(i, j, k))));
     return grid;
 }
