@@ -18,6 +18,12 @@
 #include "scenegraph/actions/Seconds.h"
 #include "scenegraph/engines/SceneTime.h"
 
+#ifdef TEXSPLAT_WITH_MPI
+#include "apps/MpiSession.h"
+#include "nodes/distributed/LargestOnRanks.h"
+#include "nodes/distributed/RankAgreement.h"
+#include "nodes/distributed/SceneRenderer.h"
+#endif
 
 #include <CLI/CLI.hpp>
 
@@ -27,6 +33,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -70,6 +77,7 @@ struct RenderArguments {
     BudgetOverride budget;
     HeaderlessOptions headerless;
     std::vector<std::string> dataRoots;
+    std::string compositing = "radix-k";
 };
 
 // The output name of each frame. A name with one printf-style integer conversion is a pattern:
@@ -480,32 +488,38 @@ RenderOptions checkRenderOptions(const RenderArguments& arguments) {
             std::move(source)};
 }
 
-void runRender(const RenderArguments& arguments, const RenderOptions& options) {
+// What the picture is rendered over: the layer alone when the outline's back edges go under it
+// (ImageAnnotations composites the background then).
+glm::vec4 renderBackgroundOf(const RenderArguments& arguments, const RenderOptions& options) {
+    return annotationRequest(arguments.annotations, options.background).renderBackground();
+}
+
+render::SceneRenderOptions sceneRenderOptions(const RenderArguments& arguments,
+                                              const RenderOptions& options) {
+    render::SceneRenderOptions renderOptions;
+    renderOptions.width = options.size.x;
+    renderOptions.height = options.size.y;
+    renderOptions.background = renderBackgroundOf(arguments, options);
+    renderOptions.backend = options.request;
+    renderOptions.threads = arguments.threads;
+    renderOptions.advice = kRenderAdvice;
+    return renderOptions;
+}
+
+// The scene as drawn: read, its budgets set, `prepare` run on it, framed when it has no camera;
+// the times in `setup`.
+sg::Node::Ptr readFramedScene(const RenderArguments& arguments, const RenderOptions& options,
+                              SetupTimes& setup,
+                              const std::function<void(sg::Node&)>& prepare = {}) {
     const glm::ivec2 size = options.size;
-    const Animation& animation = options.animation;
-    setMemoryLimit(options.memoryLimit);
-    const ThreadLimit threadLimit(arguments.threads);
-    // What the picture is rendered over: the layer alone when the outline's back edges go
-    // under it (ImageAnnotations composites the background then).
-    const glm::vec4 renderBackground =
-        annotationRequest(arguments.annotations, options.background).renderBackground();
-    std::optional<render::SceneRenderer> renderer;
-    if (!arguments.rayCast) {
-        render::SceneRenderOptions renderOptions;
-        renderOptions.width = size.x;
-        renderOptions.height = size.y;
-        renderOptions.background = renderBackground;
-        renderOptions.backend = options.request;
-        renderOptions.threads = arguments.threads;
-        renderOptions.advice = kRenderAdvice;
-        renderer.emplace(renderOptions);
-    }
-    SetupTimes setup;
     Clock::time_point start = Clock::now();
     SceneSource source = options.source;
     source.dataRoots = dataRootsOf(arguments.dataRoots);
     const sg::Node::Ptr scene = loadScene(source);
     applyBudget(*scene, arguments.budget);
+    if (prepare) {
+        prepare(*scene);
+    }
     setup.readScene = secondsSince(start);
     const float aspect = static_cast<float>(size.x) / static_cast<float>(size.y);
     start = Clock::now();
@@ -518,11 +532,138 @@ void runRender(const RenderArguments& arguments, const RenderOptions& options) {
                         });
     setup.frame = secondsSince(start);
     setup.framed = root != scene;
+    return root;
+}
+
+#ifdef TEXSPLAT_WITH_MPI
+// The time report of a render split over processes: each step's slowest rank, totals over the
+// frames.
+void printDistributedTimes(const distributed::SceneRenderer& renderer, const SetupTimes& setup,
+                           const Animation& animation, const std::vector<double>& seconds,
+                           double write, std::size_t splats, const FrameClock& clock) {
+    const std::vector<distributed::LargestOnRank> slowest =
+        distributed::largestOnRanks(MPI_COMM_WORLD, seconds);
+    const distributed::LargestOnRank memory =
+        distributed::largestOnRanks(MPI_COMM_WORLD, {renderer.statistics().peakMebibytes})[0];
+    const std::vector<distributed::LargestOnRank> voxels =
+        distributed::largestOnRanks(MPI_COMM_WORLD, {double(renderer.statistics().voxels)});
+    std::uint64_t allSplats = splats;
+    MPI_Allreduce(MPI_IN_PLACE, &allSplats, 1, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD);
+    if (renderer.rank() != 0) {
+        return;
+    }
+    printReportHeader(setup, animation);
+    const render::BackendChoice& backend = renderer.backend();
+    std::printf("  backend    %s (%s), on each of %d ranks\n", renderer.description().c_str(),
+                backend.reason.c_str(), renderer.size());
+    printAnimateTime(clock, animation);
+    for (std::size_t step = 0; step < distributed::kStepCount; ++step) {
+        const auto name = std::string(distributed::toString(static_cast<distributed::Step>(step)));
+        std::string note = "slowest: rank " + std::to_string(slowest[step].rank);
+        if (static_cast<distributed::Step>(step) == distributed::Step::Composite) {
+            note += "; " + distributed::toString(renderer.compositing()) + " over " +
+                    std::to_string(renderer.size()) + " ranks";
+        }
+        printFrameTime(name.c_str(), slowest[step].value, animation.frames, note);
+    }
+    printFrameTime("write", write, animation.frames, "rank 0: encode and rename");
+    std::printf("  splats %llu (all ranks%s); largest brick %.0f voxels (rank %d)\n",
+                static_cast<unsigned long long>(allSplats),
+                animation.frames > 1 ? ", all frames" : "", voxels[0].value, voxels[0].rank);
+    std::printf("  memory: peak %.1f MiB resident on rank %d (the largest)\n", memory.value,
+                memory.rank);
+}
+
+// `render` under mpirun: the scene split over the processes (distributed::SceneRenderer), the
+// image written by rank 0. Every step ends with the ranks agreeing on failures, so that each
+// rank ends with the same error.
+void runDistributedRender(const RenderArguments& arguments, const RenderOptions& options) {
+    MPI_Comm comm = MPI_COMM_WORLD;
+    const Animation& animation = options.animation;
+    distributed::runAgreed(comm, [&] {
+        if (arguments.rayCast) {
+            throw DataError("--raycast: the reference is drawn by one process; run it without "
+                            "mpirun");
+        }
+    });
+    const distributed::Compositing compositing = distributed::runAgreed(comm, [&] {
+        return distributed::parseCompositing(arguments.compositing, "--compositing");
+    });
+    auto renderer = distributed::runAgreed(comm, [&] {
+        return std::make_unique<distributed::SceneRenderer>(
+            comm, sceneRenderOptions(arguments, options), compositing);
+    });
+    SetupTimes setup;
+    const sg::Node::Ptr root = distributed::runAgreed(comm, [&] {
+        return readFramedScene(arguments, options, setup,
+                               &distributed::SceneRenderer::prepareBricks);
+    });
+    const bool isWriter = renderer->rank() == 0;
+    if (isWriter) {
+        renderer->setWorkProgress(WorkProgressPrinter());
+    }
+    const bool withDepth = options.format == image::ImageFormat::Exr;
+    FrameClock clock(animation, *root);
+    std::optional<annotation::ImageAnnotations> annotations;
+    std::vector<double> seconds(distributed::kStepCount, 0.0);
+    std::size_t splats = 0;
+    double write = 0.0;
+    for (int frame = 0; frame < animation.frames; ++frame) {
+        animation.inFrame(frame, [&] {
+            clock.moveTo(frame);
+            const std::optional<image::Image> image = renderer->render(*root, withDepth);
+            for (std::size_t step = 0; step < distributed::kStepCount; ++step) {
+                seconds[step] += renderer->statistics().seconds[step];
+            }
+            splats += renderer->statistics().splats;
+            distributed::runAgreed(comm, [&] {
+                if (!isWriter) {
+                    return;
+                }
+                const Clock::time_point writeStart = Clock::now();
+                // Made after the first frame: a legend's range is the whole data's, which the
+                // render gathered.
+                if (!annotations) {
+                    annotations.emplace(
+                        imageAnnotations(arguments.annotations, *root, options.background));
+                }
+                annotations->write(*image, animation.output.name(frame));
+                write += secondsSince(writeStart);
+            });
+        });
+        if (isWriter) {
+            clock.reportWritten(frame);
+        }
+    }
+    if (arguments.timeReport) {
+        printDistributedTimes(*renderer, setup, animation, seconds, write, splats, clock);
+    }
+}
+#endif
+
+void runRender(const RenderArguments& arguments, const RenderOptions& options) {
+    const glm::ivec2 size = options.size;
+    const Animation& animation = options.animation;
+    setMemoryLimit(options.memoryLimit);
+    const ThreadLimit threadLimit(arguments.threads);
+#ifdef TEXSPLAT_WITH_MPI
+    if (isDistributed()) {
+        runDistributedRender(arguments, options);
+        return;
+    }
+#endif
+    std::optional<render::SceneRenderer> renderer;
+    if (!arguments.rayCast) {
+        renderer.emplace(sceneRenderOptions(arguments, options));
+    }
+    SetupTimes setup;
+    const sg::Node::Ptr root = readFramedScene(arguments, options, setup);
 
     const annotation::ImageAnnotations annotations =
         imageAnnotations(arguments.annotations, *root, options.background);
     if (arguments.rayCast) {
-        runRayCast(arguments, animation, *root, size, renderBackground, setup, annotations);
+        runRayCast(arguments, animation, *root, size, renderBackgroundOf(arguments, options), setup,
+                   annotations);
         return;
     }
     const bool withDepth = options.format == image::ImageFormat::Exr;
@@ -612,6 +753,14 @@ void addRenderCommand(CLI::App& app, int& exitCode, CommandMode mode) {
     addMemoryLimitOption(*command, arguments->memoryLimit);
     addHeaderlessOptions(*command, arguments->headerless);
     addDataRootOption(*command, arguments->dataRoots);
+#ifdef TEXSPLAT_WITH_MPI
+    command
+        ->add_option("--compositing", arguments->compositing,
+                     "radix-k|reduce: how the ranks' images are composited under mpirun "
+                     "(docs/distributed.md): radix-k rounds over point-to-point messages, or "
+                     "MPI_Reduce with a non-commutative \"over\"")
+        ->capture_default_str();
+#endif
     command->callback([arguments, mode, &exitCode] {
         const RenderOptions options = checkRenderOptions(*arguments);
         if (mode == CommandMode::Run) {

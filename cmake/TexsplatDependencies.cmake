@@ -23,6 +23,10 @@ if(TEXSPLAT_WITH_OPENVDB)
     find_package(OpenVDB REQUIRED)
     set(BUILD_SHARED_LIBS ${texsplat_shared_libs})
 endif()
+if(TEXSPLAT_WITH_MPI)
+    # Debian's OpenMPI (libopenmpi-dev): FindMPI finds its compiler wrappers and makes MPI::MPI_CXX.
+    find_package(MPI REQUIRED COMPONENTS CXX)
+endif()
 if(TEXSPLAT_WITH_NETCDF)
     # Debian's libnetcdf-dev ships a config package (target netCDF::netcdf, the C library).
     find_package(netCDF REQUIRED)

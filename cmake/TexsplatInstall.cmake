@@ -2,7 +2,11 @@ include(CMakePackageConfigHelpers)
 
 set(TEXSPLAT_INSTALL_CMAKEDIR ${CMAKE_INSTALL_LIBDIR}/cmake/texsplat)
 
-install(TARGETS texsplat_scenegraph texsplat_nodes texsplat_octree
+set(texsplat_installed_libraries texsplat_scenegraph texsplat_nodes texsplat_octree)
+if(TEXSPLAT_WITH_MPI)
+    list(APPEND texsplat_installed_libraries texsplat_distributed)
+endif()
+install(TARGETS ${texsplat_installed_libraries}
         EXPORT texsplatTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         LIBRARY DESTINATION ${CMAKE_INSTALL_LIBDIR}
@@ -11,8 +15,15 @@ foreach(folder scenegraph nodes octree)
     install(DIRECTORY ${PROJECT_SOURCE_DIR}/${folder}/
             DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/texsplat/${folder}
             FILES_MATCHING PATTERN "*.h"
-            PATTERN "detail" EXCLUDE)
+            PATTERN "detail" EXCLUDE
+            PATTERN "distributed" EXCLUDE)
 endforeach()
+# texsplat::distributed's headers include MPI's: installed with the library only.
+if(TEXSPLAT_WITH_MPI)
+    install(DIRECTORY ${PROJECT_SOURCE_DIR}/nodes/distributed/
+            DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/texsplat/nodes/distributed
+            FILES_MATCHING PATTERN "*.h")
+endif()
 # Private headers that public ones include (field value traits behind SFFloat & co., the sensor
 # queue's lanes, the voxel access DenseGrid and ExternalGrid share and its statistics, the child
 # count behind Octree::child(), the CPU backend's cache-line allocator): installed so the public

@@ -200,13 +200,6 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     const std::vector<octree::SplatMark>* const marks =
         timed(statistics, sg::RenderPhase::Order,
               [&] { return frameMarks(classified, result, width, height); });
-    if (marks) {
-        // The corners in either order: a flipped axis has a negative spacing.
-        const glm::vec3 first(classified->toWorld(glm::dvec3(-0.5)));
-        const glm::vec3 last(classified->toWorld(glm::dvec3(classified->dims()) - 0.5));
-        result.marks.dataLow = glm::min(first, last);
-        result.marks.dataHigh = glm::max(first, last);
-    }
     result.footprint = timed(statistics, sg::RenderPhase::Classify, [this] { return footprint(); });
     // The list of the last frame, refilled when the frame that drew it is gone: the same pages,
     // no allocation or zeroing per frame (about a twentieth of a Marschner-Lobb 128^3 CPU frame).
@@ -277,6 +270,22 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     bytes.splats += splats->memoryBytes() + mDepthSorter.memoryBytes();
     result.splats = splats;
     return result;
+}
+
+std::shared_ptr<const octree::ClassifiedGrid> ScalarSplat::classifiedGrid(sg::Action& action) {
+    sg::State& state = action.state();
+    const auto inputs = renderInputs(state);
+    mCache->setWorkProgress(action.workProgress());
+    inputs.first.load(action.workProgress());
+    const glm::mat4& model = state.get<sg::ModelMatrixElement>().matrix;
+    return detail::withNodeContext(
+        *this, [&] { return classify(*mCache, state, inputs.first, inputs.second, model); });
+}
+
+const octree::Octree& ScalarSplat::octree(sg::Action& action) {
+    classifiedGrid(action);
+    // withNodeContext() answers by value: the octree stays the cache's.
+    return *detail::withNodeContext(*this, [&] { return &mCache->octree(); });
 }
 
 double ScalarSplat::splatReach() { return footprint()->reach(); }

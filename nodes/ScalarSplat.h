@@ -104,6 +104,17 @@ public:
     /// when one that classification reads changes, then notifies as every node does.
     void notify(const sg::Field* source) override;
 
+    /// @brief The classified grid this node draws in the traversal state of `action` (a
+    /// VolumeData and a TransferFunction before it), classified now unless the node holds it:
+    /// what a render split over processes surveys in every brick before drawing it
+    /// (nodes/distributed).
+    /// @throws as collectFrame().
+    std::shared_ptr<const octree::ClassifiedGrid> classifiedGrid(sg::Action& action);
+
+    /// @brief The octree over classifiedGrid(`action`), built now unless the node holds it.
+    /// @throws as collectFrame().
+    const octree::Octree& octree(sg::Action& action);
+
     /// @brief How far this node's splats draw from their centre, in voxels at size 1, for the
     /// current fields (SplatFootprint::reach()): what its cuts are refined and drawn for.
     double splatReach();
@@ -136,8 +147,8 @@ protected:
 
     /// @brief For splats that draw marks (the footprint's hasMarks()): the marks of `classified`
     /// this frame draws for `batch` (its view set) in an image of `width` x `height` pixels,
-    /// valid until the next call, with their expected number per voxel set in `batch.marks`;
-    /// nothing (the default) for scalar splats.
+    /// valid until the next call, with their expected number per voxel and the box they are cut
+    /// to set in `batch.marks`; nothing (the default) for scalar splats.
     virtual const std::vector<octree::SplatMark>*
     frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>& /*classified*/,
                render::FrameSplats& /*batch*/, int /*width*/, int /*height*/) {

@@ -126,7 +126,10 @@ bool VectorMarkSplat::isInMask(float value) const {
 const std::vector<octree::SplatMark>*
 VectorMarkSplat::frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
                             render::FrameSplats& batch, int width, int height) {
-    const auto seedValue = static_cast<std::uint32_t>(seed.value());
+    // A brick's marks are a sequence of their own: the same sequence in every brick would
+    // repeat one pattern of marks brick after brick.
+    const auto seedValue =
+        static_cast<std::uint32_t>(seed.value()) ^ (mWhole ? mWhole->brick * 0x9e3779b9u : 0u);
     if (mMarks.of.lock() != classified) {
         mMarks.shadows = std::make_shared<const octree::VoxelShadows>(*classified);
         mMarks.source = std::make_shared<const octree::MarkSource>(classified);
@@ -139,12 +142,21 @@ VectorMarkSplat::frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>&
     }
     // How deep the data is behind a pixel, seen from here towards the grid's centre, and how
     // large a voxel's mark is on screen there: marks per voxel = coverage / (area · depth).
-    const glm::dvec3 centre = classified->toWorld((glm::dvec3(classified->dims()) - 1.0) * 0.5);
+    const glm::dvec3 centre =
+        mWhole ? mWhole->centre : classified->toWorld((glm::dvec3(classified->dims()) - 1.0) * 0.5);
     const render::SplatView& view = batch.view;
     const glm::dvec3 sight =
         view.isPerspective ? centre - glm::dvec3(view.eye) : glm::dvec3(view.direction);
-    const double depth = mMarks.shadows->meanDepth(sight);
+    const double depth = (mWhole ? *mWhole->shadows : *mMarks.shadows).meanDepth(sight);
     const float pixels = render::pixelsPerVoxel(batch, width, height, glm::vec3(centre));
+    // The box the marks are cut to, its corners in either order (a flipped axis has a negative
+    // spacing); a brick's is the whole volume's, not its own.
+    const glm::vec3 first = mWhole ? mWhole->low : glm::vec3(classified->toWorld(glm::dvec3(-0.5)));
+    const glm::vec3 last =
+        mWhole ? mWhole->high
+               : glm::vec3(classified->toWorld(glm::dvec3(classified->dims()) - 0.5));
+    batch.marks.dataLow = glm::min(first, last);
+    batch.marks.dataHigh = glm::max(first, last);
     batch.marks.marksPerVoxel = 0.0;
     if (depth > 0.0 && pixels > 0.0f && std::isfinite(pixels)) {
         const double area = render::markArea(batch.marks, pixels);

@@ -7,6 +7,9 @@
 #include "scenegraph/fields/SFEnum.h"
 #include "scenegraph/fields/SFNode.h"
 
+#include <glm/ext/vector_double3.hpp>
+#include <glm/ext/vector_float3.hpp>
+
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -92,6 +95,19 @@ public:
     /// mark length for half a mark and half its travel, half a mark width).
     double markReach() const;
 
+    /// @brief For a brick of a volume split over processes (nodes/distributed): the whole
+    /// volume's figures that its marks follow instead of the brick's, so that every brick draws
+    /// as many marks per voxel as the whole would, each from a sequence of its own.
+    struct WholeVolume {
+        std::shared_ptr<const octree::VoxelShadows> shadows; ///< of the whole classified grid
+        glm::dvec3 centre{0.0};                              ///< its centre (local space)
+        glm::vec3 low{0.0f};     ///< its box's smallest corner (local space): marks are cut to it
+        glm::vec3 high{0.0f};    ///< its box's largest corner
+        std::uint32_t brick = 0; ///< the brick's number, mixed into the seed
+    };
+    /// @brief Sets the whole volume this node's grid is a brick of; nullptr: its own.
+    void setWholeVolume(std::shared_ptr<const WholeVolume> whole) { mWhole = std::move(whole); }
+
 protected:
     VectorMarkSplat();
 
@@ -131,6 +147,7 @@ private:
         std::vector<octree::SplatMark> marks;
     };
     MarkCache mMarks;
+    std::shared_ptr<const WholeVolume> mWhole; // setWholeVolume()
 };
 
 } // namespace texsplat::nodes

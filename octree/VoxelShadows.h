@@ -22,6 +22,13 @@ public:
     /// @brief The shadows of `grid`'s non-empty voxels, in one parallel pass over its blocks.
     explicit VoxelShadows(const ClassifiedGrid& grid);
 
+    /// @brief Shadows counted elsewhere: `columns` along x, y, z holding a non-empty voxel and
+    /// `voxels` non-empty voxels of a grid of `spacing` (a grid split over processes, whose
+    /// bricks' columns are merged: nodes/distributed).
+    VoxelShadows(const std::array<std::uint64_t, 3>& columns, std::uint64_t voxels,
+                 const glm::dvec3& spacing)
+        : mColumns(columns), mVoxels(voxels), mSpacing(spacing) {}
+
     /// @brief Columns along axis `axis` (0: x, 1: y, 2: z) holding a non-empty voxel.
     [[nodiscard]] std::uint64_t columns(int axis) const {
         return mColumns[static_cast<std::size_t>(axis)];

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Checks a texsplat built with -DTEXSPLAT_WITH_GL=OFF (the `nogl` preset; CI checks the `fuzz`
-# preset's, which leaves GL out too): it links no GL, EGL or libepoxy, renders and benchmarks on
-# the CPU backend, and refuses --backend gl with a message.
+# Checks a texsplat built with -DTEXSPLAT_WITH_GL=OFF and -DTEXSPLAT_WITH_MPI=OFF (the `nogl`
+# preset; CI checks the `fuzz` preset's, which leaves both out too): it links no GL, EGL,
+# libepoxy or MPI, renders and benchmarks on the CPU backend, and refuses --backend gl with a
+# message.
 # Usage: scripts/check-without-gl.sh build/nogl/apps/texsplat
 set -euo pipefail
 texsplat=${1:?usage: $0 path/to/texsplat}
@@ -12,6 +13,10 @@ fail() { echo "check-without-gl: $*" >&2; exit 1; }
 if ldd "$texsplat" | grep -Eq 'lib(EGL|GL|GLX|OpenGL|epoxy)\.so'; then
     ldd "$texsplat" >&2
     fail "$texsplat links a GL library"
+fi
+if ldd "$texsplat" | grep -Eq 'lib(mpi|open-pal|open-rte)\.so'; then
+    ldd "$texsplat" >&2
+    fail "$texsplat links MPI"
 fi
 report=$("$texsplat" render -o "$scratch/default.png" --size 64x48 --time-report)
 grep -q 'backend    CPU (.*(auto: built without GL)' <<<"$report" || fail "render: $report"
@@ -27,4 +32,4 @@ fi
 expected='texsplat: error: --backend gl: this texsplat was built without GL (TEXSPLAT_WITH_GL=OFF); only --backend cpu draws'
 [ "$message" = "$expected" ] || fail "--backend gl said: $message"
 [ ! -e "$scratch/gl.png" ] || fail "--backend gl left an image"
-echo "check-without-gl: $texsplat renders and benchmarks on the CPU without GL"
+echo "check-without-gl: $texsplat renders and benchmarks on the CPU without GL or MPI"

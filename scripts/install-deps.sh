@@ -28,6 +28,9 @@ tests=(
     # Pillow grabs the viewer's window for the docs (scripts/viewer-screenshot.sh) and compresses
     # the docs' pictures again without changing a pixel.
     python3-pil
+    # MPI for renders split over processes (TEXSPLAT_WITH_MPI, docs/distributed.md): Debian's
+    # OpenMPI; the README's first command builds without it.
+    libopenmpi-dev openmpi-bin
 )
 case "${1:-}" in
     --build) packages=("${build[@]}") ;;

@@ -22,7 +22,7 @@ cmake --preset asan
 cmake --build --preset asan -j "$jobs"
 ctest --preset asan -j "$jobs"
 
-stage "fuzz build (clang, ASan + UBSan, TEXSPLAT_WITH_GL=OFF): render and bench without GL"
+stage "fuzz build (clang, ASan + UBSan, without GL or MPI): render and bench without them"
 # One build for both: a separate GL-less build of the library took a sixth of the CI's time.
 cmake --preset fuzz
 cmake --build --preset fuzz -j "$jobs"

@@ -50,6 +50,10 @@ struct Frame {
     glm::vec4 background{0.0f};     ///< premultiplied clear colour
     std::vector<FrameMesh> meshes;  ///< opaque, in traversal order
     std::vector<FrameSplats> splats; ///< one entry per splat node traversal
+    /// @brief Whether the meshes only hide the splats behind them and draw no colour (the
+    /// background stays where they are): the frames of a render split over processes, whose
+    /// meshes one image draws under all the bricks' splats (nodes/distributed).
+    bool meshesHideOnly = false;
 };
 
 } // namespace texsplat::render

@@ -58,6 +58,10 @@ SceneRenderer::SceneRenderer(const SceneRenderOptions& options) : mOptions(optio
 
 SceneRenderer::~SceneRenderer() = default;
 
+void SceneRenderer::setFrameEdit(std::function<void(Frame&)> edit) {
+    mFrameEdit = std::move(edit);
+}
+
 void SceneRenderer::setWorkProgress(sg::WorkProgress progress) {
     mRenderers->action.setWorkProgress(std::move(progress));
 }
@@ -70,19 +74,40 @@ image::Image SceneRenderer::render(sg::Node& root, bool withDepth) {
     checkMemory(mStage, mImageBytes, mOptions.advice);
     const sg::WorkProgress& progress = renderers.action.workProgress();
     image::Image image = withMemoryStage(mStage, mImageBytes, mOptions.advice, [&] {
-        const Frame& frame = renderers.action.collect(root);
+        const Frame& collected = renderers.action.collect(root);
+        // The action keeps its frame's size for the next one: the edit changes a copy (of the
+        // batches' pointers and matrices, not of their splats).
+        std::optional<Frame> edited;
+        if (mFrameEdit) {
+            edited.emplace(collected);
+            mFrameEdit(*edited);
+        }
+        const Frame& frame = edited ? *edited : collected;
         // The draw reports nothing while it runs: a cancellation asked for during the frame's
         // collection (after its last report) stops here rather than after the draw.
         sg::reportWork(progress, kDrawStep, 0.0);
-#ifdef TEXSPLAT_WITH_GL
-        if (renderers.gl) {
-            return renderers.gl->draw(frame, renderers.action.statistics(), withDepth);
-        }
-#endif
-        return renderers.cpu->draw(frame, renderers.action.statistics(), withDepth);
+        return drawOnBackend(frame, withDepth);
     });
     sg::reportWork(progress, kDrawStep, 1.0);
     return image;
+}
+
+image::Image SceneRenderer::draw(const Frame& frame, bool withDepth) {
+    mRenderers->action.statistics() = sg::RenderStatistics();
+    const std::uint64_t bytes =
+        byteProduct(std::uint64_t(frame.width) * std::uint64_t(frame.height), sizeof(glm::vec4));
+    return withMemoryStage(mStage, bytes, mOptions.advice,
+                           [&] { return drawOnBackend(frame, withDepth); });
+}
+
+image::Image SceneRenderer::drawOnBackend(const Frame& frame, bool withDepth) {
+    Renderers& renderers = *mRenderers;
+#ifdef TEXSPLAT_WITH_GL
+    if (renderers.gl) {
+        return renderers.gl->draw(frame, renderers.action.statistics(), withDepth);
+    }
+#endif
+    return renderers.cpu->draw(frame, renderers.action.statistics(), withDepth);
 }
 
 const sg::RenderStatistics& SceneRenderer::statistics() const {

@@ -9,10 +9,13 @@
 #include <glm/vec4.hpp>
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 
 namespace texsplat::render {
+
+struct Frame;
 
 /// @brief What a SceneRenderer draws, and on what.
 struct SceneRenderOptions {
@@ -42,6 +45,11 @@ public:
     SceneRenderer(const SceneRenderer&) = delete;
     SceneRenderer& operator=(const SceneRenderer&) = delete;
 
+    /// @brief What is done to each frame between its collection and its draw (none by default):
+    /// a render split over processes crops it to its brick's screen footprint
+    /// (nodes/distributed). The image drawn has the edited frame's size.
+    void setFrameEdit(std::function<void(Frame&)> edit);
+
     /// @brief Where the long steps of a render (reading volumes, classifying, building octrees,
     /// then "drawing", at its start and end) report how they go; the progress may cancel them
     /// (sg::Cancelled).
@@ -54,6 +62,10 @@ public:
     /// running out of memory while rendering throws ResourceError naming the stage and advice.
     /// @throws what the scene's nodes throw; sg::Cancelled when the progress cancelled.
     image::Image render(sg::Node& root, bool withDepth = false);
+
+    /// @brief Draws a frame made elsewhere (of any size) on this renderer's backend, with the
+    /// meshes' depth when `withDepth`; its times go to statistics() (from zero).
+    image::Image draw(const Frame& frame, bool withDepth = false);
 
     /// @brief The times and counts of the last render().
     const sg::RenderStatistics& statistics() const;
@@ -73,11 +85,14 @@ public:
 private:
     struct Renderers;
 
+    image::Image drawOnBackend(const Frame& frame, bool withDepth);
+
     SceneRenderOptions mOptions;
     std::string mStage;
     std::uint64_t mImageBytes;
     BackendChoice mBackend;
     std::unique_ptr<Renderers> mRenderers;
+    std::function<void(Frame&)> mFrameEdit;
 };
 
 } // namespace texsplat::render

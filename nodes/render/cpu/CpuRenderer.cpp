@@ -133,6 +133,13 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             const MeshRasterizer meshes(frame.meshes, frame.width, frame.height);
             tbb::parallel_for(0, bands.count, [&](int band) {
                 meshes.draw(planes, bands.begin(band), bands.end(band, frame.height));
+                for (int row = bands.begin(band);
+                     frame.meshesHideOnly && row < bands.end(band, frame.height); ++row) {
+                    std::fill_n(planes.red(row), frame.width, frame.background.r);
+                    std::fill_n(planes.green(row), frame.width, frame.background.g);
+                    std::fill_n(planes.blue(row), frame.width, frame.background.b);
+                    std::fill_n(planes.alpha(row), frame.width, frame.background.a);
+                }
             });
         }
         // The splats of all batches in one depth order, as GlRenderer draws them.

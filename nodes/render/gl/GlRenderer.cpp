@@ -173,11 +173,14 @@ void GlRenderer::drawPasses(const Frame& frame, Prepared& prepared, const Tile* 
         const PassState passState;
         glDisable(GL_BLEND);
         glDepthMask(GL_TRUE);
+        const GLboolean meshColor = frame.meshesHideOnly ? GL_FALSE : GL_TRUE;
+        glColorMask(meshColor, meshColor, meshColor, meshColor);
         for (std::size_t i = 0; i < prepared.meshes.size(); ++i) {
             MeshLighting lighting = frame.meshes[i].lighting;
             lighting.localToClip = toTile(lighting.localToClip);
             prepared.meshes[i].draw(lighting);
         }
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         // Pass 2: the splats see the surfaces (depth test) but do not occlude each other; the
         // back-to-front order does that through "over" on premultiplied colors.
         glDepthMask(GL_FALSE);
