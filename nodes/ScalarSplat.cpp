@@ -20,6 +20,7 @@
 #include "octree/Refiner.h"
 #include "octree/Splat.h"
 #include "octree/SplatEmission.h"
+#include "octree/VoxelSplats.h"
 #include "scenegraph/Error.h"
 #include "scenegraph/Log.h"
 #include "scenegraph/MemoryLimit.h"
@@ -227,6 +228,13 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         }
         if (fullResolution) {
             mDepthSorter = {}; // slice order needs no sort
+            if (marks == nullptr) {
+                // No list: the backend walks the voxels in slice order (or lists them into
+                // the node's list where it needs one).
+                result.voxels =
+                    std::make_shared<const octree::VoxelSplats>(classified, order, splats);
+                return;
+            }
             octree::emitVoxelSplats(*classified, order, *splats, marks);
             return;
         }
@@ -257,7 +265,10 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
     statistics.builds.octrees += after.octrees - before.octrees;
     statistics.builds.valueHistograms += after.valueHistograms - before.valueHistograms;
     statistics.builds.previews += after.previews - before.previews;
-    statistics.splats += splats->size();
+    if (!result.voxels) {
+        result.splats = splats;
+    }
+    statistics.splats += result.splatCount();
     statistics.previewed += isPreview ? 1 : 0;
     sg::FrameMemory& bytes = statistics.memory;
     const volume::VectorGridPtr vectorGrid = withMarks ? volume.vectorGrid() : nullptr;
@@ -267,8 +278,8 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         bytes.classified += unshaded->memoryBytes() + mShading->gradientBytes();
     }
     bytes.octree += fullResolution ? 0 : tree().memoryBytes();
-    bytes.splats += splats->memoryBytes() + mDepthSorter.memoryBytes();
-    result.splats = splats;
+    // A batch of voxels holds no list unless its backend makes one (which counts it then).
+    bytes.splats += (result.voxels ? 0 : splats->memoryBytes()) + mDepthSorter.memoryBytes();
     return result;
 }
 

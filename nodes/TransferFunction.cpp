@@ -206,14 +206,28 @@ float normalized(const glm::vec2& range, float value) {
     return std::isnan(t) ? t : static_cast<float>(std::clamp(t, 0.0, 1.0));
 }
 
+// The level of normalized position `t` in [0, 1]: the nearest of TransferFunction::kLevels.
+int levelOf(float t) {
+    return static_cast<int>(t * static_cast<float>(TransferFunction::kLevels - 1) + 0.5f);
+}
+
+// The normalized position of level `level`: exact in float (a multiple of 2^-15).
+float levelPosition(int level) {
+    return static_cast<float>(level) / static_cast<float>(TransferFunction::kLevels - 1);
+}
+
+// The classification at normalized position `t` in [0, 1].
+Classification classifyAt(const detail::TransferTable& table, float t, const DataScale& scale) {
+    const float tau = table.opacities(t) / scale.unitDistance;
+    return {table.colors(t) * (tau + table.emission / scale.unitDistance), tau};
+}
+
 Classification classifyWith(const detail::TransferTable& table, float value,
                             const DataScale& scale) {
     if (std::isnan(value)) {
         return {};
     }
-    const float clamped = normalized(scale.range, value);
-    const float tau = table.opacities(clamped) / scale.unitDistance;
-    return {table.colors(clamped) * (tau + table.emission / scale.unitDistance), tau};
+    return classifyAt(table, normalized(scale.range, value), scale);
 }
 
 // The fields as written: `range`, and one world unit for "one voxel" since there is no voxel.
@@ -279,6 +293,13 @@ Classification TransferFunction::classify(float value, const DataScale& scale) c
     return classifyWith(*table(), value, scale);
 }
 
+Classification TransferFunction::classifyLevel(float value, const DataScale& scale) const {
+    if (std::isnan(value)) {
+        return {};
+    }
+    return classifyAt(*table(), levelPosition(levelOf(normalized(scale.range, value))), scale);
+}
+
 glm::vec3 TransferFunction::color(float value) const {
     const std::shared_ptr<const detail::TransferTable> checked = table();
     return color(value, fixedScale(*checked));
@@ -314,10 +335,16 @@ template <class Y> bool isZeroBetween(const detail::PiecewiseLinear<Y>& map, flo
 // TransferFunction::isTransparentBetween() with the table `checked`.
 bool isTransparentWith(const detail::TransferTable& checked, float minimum, float maximum,
                        const DataScale& scale) {
-    // normalized() does not decrease with the value, so the range's ends bound every t in it.
-    const float t0 = normalized(scale.range, minimum);
-    const float t1 = normalized(scale.range, maximum);
-    if (!(t0 <= t1) || !isZeroBetween(checked.opacities, t0, t1)) {
+    // normalized() and the levels do not decrease with the value, so the range's ends bound
+    // every t in it and every level of them.
+    const float low = normalized(scale.range, minimum);
+    const float high = normalized(scale.range, maximum);
+    if (!(low <= high)) {
+        return false;
+    }
+    const float t0 = std::min(low, levelPosition(levelOf(low)));
+    const float t1 = std::max(high, levelPosition(levelOf(high)));
+    if (!isZeroBetween(checked.opacities, t0, t1)) {
         return false;
     }
     // With no extinction, classifyWith() gives colour * emission per unit length.
@@ -335,22 +362,48 @@ namespace {
 
 constexpr const char* kClassifyStep = "classifying";
 
+// The palette of a scalar classification (octree::ClassifiedGrid::Storage::Palette): index 0
+// the empty voxel, index k >= 1 the function at level k − 1; made in parallel.
+std::vector<glm::vec4> paletteOf(const detail::TransferTable& checked, const DataScale& scale) {
+    std::vector<glm::vec4> palette(TransferFunction::kLevels + 1, glm::vec4(0.0f));
+    tbb::parallel_for(0, TransferFunction::kLevels, [&](int level) {
+        const Classification medium = classifyAt(checked, levelPosition(level), scale);
+        palette[static_cast<std::size_t>(level + 1)] = glm::vec4(medium.color, medium.extinction);
+    });
+    return palette;
+}
+
+// The palette index of `value` (not empty, not NaN): its level's, or 0 where that level's
+// medium is empty.
+std::uint16_t paletteIndex(const std::vector<glm::vec4>& palette, const glm::vec2& range,
+                           float value) {
+    const float t = normalized(range, value);
+    if (std::isnan(t)) {
+        return 0;
+    }
+    const auto index = static_cast<std::uint16_t>(1 + levelOf(t));
+    return palette[index] != glm::vec4(0.0f) ? index : std::uint16_t{0};
+}
+
 // Classifies the non-empty voxels of `grid`'s blocks for which `isWanted(block)` holds (block
 // coordinates), telling `progress` the fraction of the blocks done; with `recording`, adds the
 // value range of every block that holds a non-empty voxel to it. A block whose value range the
 // function shows nothing of is not classified voxel by voxel: it would allocate nothing (the
 // test is exact that way round), and most blocks of a thresholded dense volume are such. The
 // blocks are read and classified in parallel (oneTBB), a batch at a time, and put into the grid
-// in order: the same grid for any number of threads.
+// in order: the same grid for any number of threads. Each voxel holds the index of its value's
+// level in the grid's palette (paletteOf()): 2 bytes a voxel, classifyLevel().
 template <class IsWanted>
 std::shared_ptr<octree::ClassifiedGrid>
 classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
                const volume::ScalarGrid& grid, const sg::WorkProgress& progress,
                octree::ValueRanges* recording, IsWanted&& isWanted) {
-    using ClassifiedBlock = std::array<glm::vec4, octree::ClassifiedGrid::kBlockVoxels>;
+    using ClassifiedBlock = octree::ClassifiedGrid::PaletteBlock;
     const volume::GridGeometry& geometry = grid.geometry();
-    auto classified = std::make_shared<octree::ClassifiedGrid>(
-        glm::u64vec3(geometry.dims()), geometry.spacing(), geometry.origin());
+    auto classified =
+        std::make_shared<octree::ClassifiedGrid>(glm::u64vec3(geometry.dims()), geometry.spacing(),
+                                                 geometry.origin(), paletteOf(checked, scale));
+    const std::vector<glm::vec4>& palette = classified->palette();
     const std::vector<glm::i64vec3> blocks = grid.occupiedBlocks();
     std::vector<ClassifiedBlock> batch(std::min(blocks.size(), volume::kBlocksPerBatch));
     std::vector<std::uint32_t> nonEmpty(batch.size());
@@ -371,15 +424,10 @@ classifyBlocks(const detail::TransferTable& checked, const DataScale& scale,
         }
         ClassifiedBlock& out = batch[i];
         for (std::size_t v = 0; v < voxels.values.size(); ++v) {
-            out[v] = glm::vec4(0.0f);
-            if (!voxels.nonEmpty[v]) {
-                continue;
-            }
-            const Classification result = classifyWith(checked, voxels.values[v], scale);
-            if (result.extinction != 0.0f || result.color != glm::vec3(0.0f)) {
-                out[v] = glm::vec4(result.color, result.extinction);
-                ++nonEmpty[i];
-            }
+            const std::uint16_t index =
+                voxels.nonEmpty[v] ? paletteIndex(palette, scale.range, voxels.values[v]) : 0;
+            out[v] = index;
+            nonEmpty[i] += index != 0 ? 1 : 0;
         }
     };
     const auto takeBlock = [&](std::size_t i, const glm::i64vec3& block) {

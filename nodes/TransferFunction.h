@@ -190,6 +190,17 @@ public:
     /// length.
     Classification classify(float value, const DataScale& scale) const;
 
+    /// @brief Levels of the normalized position t that a classified grid tells apart: t =
+    /// k/(kLevels − 1), k < kLevels (a sixteenth of a thousandth of the range apart).
+    static constexpr int kLevels = 32769;
+
+    /// @brief What a classified grid holds for a voxel of `value` (classify(grid)): classify() at
+    /// the nearest level of its normalized position, so 2 bytes a voxel name it (an index into
+    /// the grid's palette). It differs from classify(value, scale) by what the function changes
+    /// over half a level, 1/65536 of the range, at most (where the function steps, a value within
+    /// that of the step takes the step's other side).
+    Classification classifyLevel(float value, const DataScale& scale) const;
+
     /// @brief The colour map S(t) alone at `value` (normalized over `range` as classify() does;
     /// NaN gives black): the polygon colour of vector splats, which take their opacity from the
     /// extinction and the mark table rather than from an emission-absorption slab.
@@ -202,8 +213,9 @@ public:
     glm::vec3 colorAt(float t) const;
 
     /// @brief Classifies every non-empty voxel of `grid` (same dimensions, spacing and origin)
-    /// over dataScale(grid); empty voxels, and voxels that classify to zero, stay empty, so they
-    /// produce no splats.
+    /// over dataScale(grid), as classifyLevel() does, into a grid of palette indices
+    /// (octree::ClassifiedGrid::Storage::Palette: 2 bytes a voxel); empty voxels, and voxels that
+    /// classify to zero, stay empty, so they produce no splats.
     /// @throws DataError when the fields are invalid.
     std::shared_ptr<octree::ClassifiedGrid> classify(const volume::ScalarGrid& grid) const;
     /// @brief classify(grid), the same grid bit for bit, but with `ranges` (the value range of
@@ -236,9 +248,10 @@ public:
     classifyBlockMeans(const volume::ScalarGrid& grid, const octree::ValueRanges& ranges,
                        const octree::ValueHistograms& histograms) const;
     /// @brief Whether every value in [`minimum`, `maximum`] classifies over `scale` to no
-    /// emission and no extinction. Exact where it answers true (never true for a range holding a
-    /// visible value); it may answer false for a range whose values are all transparent only
-    /// through float underflow or a step exactly at an end.
+    /// emission and no extinction, by classify() and by classifyLevel() alike. Exact where it
+    /// answers true (never true for a range holding a visible value); it may answer false for a
+    /// range whose values are all transparent only through float underflow, a step exactly at an
+    /// end, or a level of an end that shows what the end itself does not.
     bool isTransparentBetween(float minimum, float maximum, const DataScale& scale) const;
 
     /// @brief Whether `field` (one of this node's) says how values are labelled rather than

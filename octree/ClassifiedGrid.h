@@ -31,6 +31,13 @@ namespace texsplat::octree {
 /// of level 3), and a block is allocated only when a non-empty value is set in it. A block
 /// table of 4 bytes per block of the box says where each block is. A dense grid pays the table
 /// and nothing else; an all-transparent one allocates no block.
+///
+/// A voxel is held in one of two forms, the same for the whole grid (storage()):
+/// - Storage::Direct: its four floats (16 bytes), any values: what vector splats, previews and
+///   the block means of an edit hold;
+/// - Storage::Palette: a 16-bit index into the grid's palette of at most kPaletteSize media
+///   (2 bytes a voxel, and one table), which a transfer function fills for each of 65 535
+///   levels of its normalized value (TransferFunction::classify()): index 0 is the empty voxel.
 class ClassifiedGrid {
 public:
     /// @brief Edge length of a block in voxels (2^kBlockLevel).
@@ -45,10 +52,35 @@ public:
     /// walking blocks.
     using StorageIndex = std::uint64_t;
 
-    /// @brief A grid of @p dims voxels, all empty (no block allocated).
+    /// @brief How voxels are held (see the class).
+    enum class Storage { Direct, Palette };
+
+    /// @brief The most media a palette holds (16-bit indices).
+    static constexpr std::size_t kPaletteSize = 65536;
+
+    /// @brief The palette indices of one block, x fastest.
+    using PaletteBlock = std::array<std::uint16_t, kBlockVoxels>;
+
+    /// @brief A grid of @p dims voxels, all empty (no block allocated), held directly.
     /// @throws DataError when a dimension is zero, the block table does not fit in memory
     /// addressing, a spacing is not finite and positive, or the origin is not finite.
     ClassifiedGrid(glm::u64vec3 dims, glm::dvec3 spacing, glm::dvec3 origin);
+
+    /// @brief A grid of @p dims voxels, all empty, held as indices into @p palette (at most
+    /// kPaletteSize media, the first one empty: the index of an empty voxel).
+    /// @throws DataError as the other constructor, and when the palette is empty, larger than
+    /// kPaletteSize, its first medium is not empty or a medium is negative or not finite.
+    ClassifiedGrid(glm::u64vec3 dims, glm::dvec3 spacing, glm::dvec3 origin,
+                   std::vector<glm::vec4> palette);
+
+    /// @brief How the voxels are held.
+    [[nodiscard]] Storage storage() const {
+        return mPalette.empty() ? Storage::Direct : Storage::Palette;
+    }
+
+    /// @brief The palette (Storage::Palette; empty otherwise): colour (xyz) and extinction (w)
+    /// per index.
+    [[nodiscard]] const std::vector<glm::vec4>& palette() const { return mPalette; }
 
     /// @brief Sets voxel @p ijk (which must lie inside the grid). An empty value in a block
     /// that holds nothing yet allocates nothing.
@@ -57,9 +89,14 @@ public:
 
     /// @brief Sets every voxel of block @p block (block coordinates) at once, x fastest, as
     /// setVoxel() would one by one: the way to fill a grid from blocks made in parallel. Voxels
-    /// of a block clipped by the grid's upper faces must be zero there.
+    /// of a block clipped by the grid's upper faces must be zero there. Storage::Direct only.
     /// @throws DataError as setVoxel().
     void setBlock(glm::u64vec3 block, const std::array<glm::vec4, kBlockVoxels>& voxels);
+
+    /// @brief Sets every voxel of block @p block of a Storage::Palette grid to the medium of
+    /// its palette index, x fastest (0: empty). Voxels of a block clipped by the grid's upper
+    /// faces must be 0 there, and every index must lie inside the palette.
+    void setBlock(glm::u64vec3 block, const PaletteBlock& indices);
 
     /// @brief Gives every voxel a vector, all zero until setVector(): the flow that vector splats
     /// draw as marks (Crawfis & Max 1993, "Combined Vector and Scalar Textures"). Scalar grids have
@@ -82,15 +119,26 @@ public:
 
     /// @brief Colour and extinction of the voxel stored at @p storage (from forEachBlock()).
     [[nodiscard]] glm::vec4 storedVoxel(StorageIndex storage) const {
-        return mBlocks[static_cast<std::size_t>(storage / kBlockVoxels)]
-            ->voxels[static_cast<std::size_t>(storage % kBlockVoxels)];
+        const Block& block = *mBlocks[static_cast<std::size_t>(storage / kBlockVoxels)];
+        const auto voxel = static_cast<std::size_t>(storage % kBlockVoxels);
+        return block.voxels ? (*block.voxels)[voxel] : mPalette[(*block.indices)[voxel]];
     }
 
     /// @brief The 512 colours and extinctions of the allocated block whose voxel (0, 0, 0) is
-    /// stored at @p first (from blockStorage() or forEachBlock()), x fastest: for a pass over
-    /// whole blocks.
-    [[nodiscard]] const std::array<glm::vec4, kBlockVoxels>& storedBlock(StorageIndex first) const {
-        return mBlocks[static_cast<std::size_t>(first / kBlockVoxels)]->voxels;
+    /// stored at @p first (from blockStorage() or forEachBlock()), x fastest, into @p voxels:
+    /// for a pass over whole blocks.
+    void readBlock(StorageIndex first, std::array<glm::vec4, kBlockVoxels>& voxels) const;
+
+    /// @brief The media of the allocated block whose voxel (0, 0, 0) is stored at @p first, x
+    /// fastest (Storage::Direct only): for a loop that reads a block's voxels itself.
+    [[nodiscard]] const glm::vec4* directBlock(StorageIndex first) const {
+        return mBlocks[static_cast<std::size_t>(first / kBlockVoxels)]->voxels->data();
+    }
+
+    /// @brief The palette indices of the allocated block whose voxel (0, 0, 0) is stored at
+    /// @p first, x fastest (Storage::Palette only).
+    [[nodiscard]] const std::uint16_t* paletteBlock(StorageIndex first) const {
+        return mBlocks[static_cast<std::size_t>(first / kBlockVoxels)]->indices->data();
     }
 
     /// @brief The vector of voxel @p ijk (hasVectors() must hold; zero outside allocated blocks).
@@ -170,6 +218,12 @@ public:
     /// @brief Number of non-empty voxels: what a full-resolution splat list holds at most.
     [[nodiscard]] std::uint64_t nonEmptyVoxelCount() const { return mNonEmptyCount; }
 
+    /// @brief Number of non-empty voxels of the allocated block whose voxel (0, 0, 0) is stored
+    /// at @p first.
+    [[nodiscard]] std::uint32_t storedBlockCount(StorageIndex first) const {
+        return mBlocks[static_cast<std::size_t>(first / kBlockVoxels)]->nonEmpty;
+    }
+
     /// @brief Number of allocated blocks.
     [[nodiscard]] std::size_t blockCount() const { return mBlocks.size(); }
 
@@ -183,7 +237,8 @@ public:
         }
     }
 
-    /// @brief Bytes held: the block table and the allocated blocks (with their vectors).
+    /// @brief Bytes held: the block table, the palette and the allocated blocks (with their
+    /// vectors).
     [[nodiscard]] std::uint64_t memoryBytes() const;
 
     /// @brief Blocks along x, y, z of a box of @p dims voxels (rounded up, without overflow).
@@ -193,16 +248,20 @@ public:
     [[nodiscard]] static std::uint64_t boxBlockCount(glm::u64vec3 dims);
 
     /// @brief What a grid of @p dims with @p blocks allocated blocks costs (memoryBytes()),
-    /// saturating at the largest uint64: for an estimate before classifying.
+    /// held directly or, with @p paletteSize media (> 0), as palette indices; saturating at the
+    /// largest uint64: for an estimate before classifying.
     [[nodiscard]] static std::uint64_t memoryBytesFor(glm::u64vec3 dims, std::uint64_t blocks,
-                                                      bool withVectors);
+                                                      bool withVectors,
+                                                      std::size_t paletteSize = 0);
 
 private:
     static constexpr std::uint32_t kNoBlock = 0xffffffffu;
 
     struct Block {
         glm::u64vec3 coordinates{0};
-        std::array<glm::vec4, kBlockVoxels> voxels{};
+        std::uint32_t nonEmpty = 0;                                   // voxels not empty
+        std::unique_ptr<std::array<glm::vec4, kBlockVoxels>> voxels;  // Storage::Direct
+        std::unique_ptr<PaletteBlock> indices;                        // Storage::Palette
         std::unique_ptr<std::array<glm::vec3, kBlockVoxels>> vectors; // with hasVectors() only
     };
 
@@ -222,9 +281,15 @@ private:
 
     // The block of `ijk`, allocated (empty) on first use.
     Block& block(glm::u64vec3 ijk);
-    // A new block (not allocated yet) holding `voxels`.
+    // A new block (not allocated yet) holding `voxels` (Direct) or `indices` (Palette).
     Block& allocateBlock(glm::u64vec3 coordinates,
-                         const std::array<glm::vec4, kBlockVoxels>& voxels);
+                         const std::array<glm::vec4, kBlockVoxels>* voxels,
+                         const PaletteBlock* indices);
+    // Bytes of one allocated block.
+    static std::uint64_t blockBytes(bool withVectors, Storage storage);
+    // Asserts that the voxels of `block` outside the grid (a block clipped by its upper faces)
+    // are empty by `isEmpty(i)`, i the voxel's place in the block.
+    template <typename IsEmpty> void checkClipped(glm::u64vec3 block, IsEmpty&& isEmpty) const;
 
     // Throws DataError unless every channel of voxel `ijk`'s `value` is finite and >= 0.
     static void checkVoxel(glm::u64vec3 ijk, glm::vec4 value);
@@ -237,6 +302,7 @@ private:
     std::uint64_t mNonEmptyCount = 0;
     std::vector<std::uint32_t> mSlots; // per block of the box: its slot in mBlocks, or kNoBlock
     std::vector<std::unique_ptr<Block>> mBlocks;
+    std::vector<glm::vec4> mPalette; // Storage::Palette: the media; empty for Storage::Direct
 };
 
 } // namespace texsplat::octree

@@ -7,6 +7,7 @@ namespace texsplat::octree {
 
 class ClassifiedGrid;
 class Cut;
+class DrawnVoxels;
 class MarkSource;
 class Octree;
 class Refiner;
@@ -16,6 +17,7 @@ class ValueHistograms;
 class ValueRanges;
 class View;
 class VoxelShadows;
+class VoxelSplats;
 struct NodeRef;
 struct OctreeNode;
 struct RefineBudget;

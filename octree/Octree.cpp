@@ -364,8 +364,8 @@ Octree::Statistics Octree::buildSubtree(int level, glm::u64vec3 coord, Records& 
 // records in the same order, the same sums in the same order, so the same bits) but read straight
 // from the block's storage, with no per-voxel Statistics: most of the build's time is spent here.
 Octree::Statistics Octree::buildBlock(glm::u64vec3 block, Records& records) const {
-    const std::array<glm::vec4, ClassifiedGrid::kBlockVoxels>& voxels =
-        mGrid->storedBlock(mGrid->blockStorage(block));
+    std::array<glm::vec4, ClassifiedGrid::kBlockVoxels> voxels;
+    mGrid->readBlock(mGrid->blockStorage(block), voxels);
     // Voxels of the block inside the grid, per axis (fewer at the grid's far faces).
     const glm::u64vec3 begin = block * ClassifiedGrid::kBlockSize;
     const glm::u64vec3 extent =

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace texsplat::octree {
@@ -53,10 +54,43 @@ public:
 
     /// @brief forEach() over slice `slice` (< sliceCount()) only.
     template <typename Visit> void forEachInSlice(std::size_t slice, Visit&& visit) const {
+        const std::uint64_t all = mGrid->dims()[mAxes[2]];
+        forEachInSliceRows(
+            slice, [all](std::uint64_t) { return std::pair<std::uint64_t, std::uint64_t>(0, all); },
+            visit);
+    }
+
+    /// @brief forEachInSlice() of the voxels whose inner-axis coordinate lies in
+    /// `innerRange(middle)` = [begin, end) (a pair), asked once per row of the slice, `middle`
+    /// being the row's middle-axis coordinate: a row's voxels that a caller knows it needs
+    /// (those whose splats reach a band of the image, say) without the steps to the others'
+    /// blocks.
+    template <typename InnerRange, typename Visit>
+    void forEachInSliceRows(std::size_t slice, InnerRange&& innerRange, Visit&& visit) const {
+        const int inner = mAxes[2];
+        forEachSegmentInSlice(slice, innerRange,
+                              [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex first,
+                                  const std::uint64_t* coordinates, std::size_t count) {
+                                  for (std::size_t i = 0; i < count; ++i) {
+                                      voxel[inner] = coordinates[i];
+                                      visit(voxel, first + ClassifiedGrid::offsetInBlock(voxel));
+                                  }
+                              });
+    }
+
+    /// @brief forEachInSliceRows() a run of a row within one block at a time: calls
+    /// `visit(glm::u64vec3 voxel, ClassifiedGrid::StorageIndex first, const std::uint64_t*
+    /// coordinates, std::size_t count)` with the block's storage index (as forEachBlock()
+    /// gives it), the row's voxel whose inner coordinate is the block's first, and the `count`
+    /// inner coordinates of the run, in order, all within the block and `innerRange`: a caller's
+    /// loop over a run reads one block.
+    template <typename InnerRange, typename Visit>
+    void forEachSegmentInSlice(std::size_t slice, InnerRange&& innerRange, Visit&& visit) const {
         const auto middle = static_cast<std::size_t>(mAxes[1]);
         const auto inner = static_cast<std::size_t>(mAxes[2]);
         constexpr std::uint64_t kSize = ClassifiedGrid::kBlockSize;
         const glm::u64vec3 blockDims = mGrid->blockDims();
+        const std::uint64_t* order = mOrder[inner].data();
         glm::u64vec3 voxel(0);
         const std::uint64_t a = mOrder[static_cast<std::size_t>(mAxes[0])][slice];
         voxel[mAxes[0]] = a;
@@ -66,7 +100,15 @@ public:
                                                         blockDims[mAxes[0]] * (b / kSize))]) {
                 continue;
             }
+            const std::pair<std::uint64_t, std::uint64_t> range = innerRange(b);
+            if (range.first >= range.second) {
+                continue;
+            }
             for (const Segment& segment : mSegments) {
+                if ((segment.block + 1) * kSize <= range.first ||
+                    segment.block * kSize >= range.second) {
+                    continue;
+                }
                 voxel[mAxes[2]] = segment.block * kSize;
                 const ClassifiedGrid::StorageIndex first = mGrid->blockStorage(voxel / kSize);
                 if (first == ClassifiedGrid::kNoStorage ||
@@ -74,13 +116,34 @@ public:
                      mOutOfSight[static_cast<std::size_t>(first / ClassifiedGrid::kBlockVoxels)])) {
                     continue;
                 }
-                for (std::uint64_t step = segment.begin; step < segment.end; ++step) {
-                    voxel[mAxes[2]] = mOrder[inner][step];
-                    visit(voxel, first + ClassifiedGrid::offsetInBlock(voxel));
+                // Within a block the run's coordinates are monotonic: those in the range are
+                // one stretch of it.
+                std::uint64_t begin = segment.begin;
+                std::uint64_t end = segment.end;
+                while (begin < end &&
+                       (order[begin] < range.first || order[begin] >= range.second)) {
+                    ++begin;
+                }
+                while (end > begin &&
+                       (order[end - 1] < range.first || order[end - 1] >= range.second)) {
+                    --end;
+                }
+                if (begin < end) {
+                    visit(voxel, first, order + begin, static_cast<std::size_t>(end - begin));
                 }
             }
         }
     }
+
+    /// @brief Whether the walk visits the voxels of the allocated block whose voxel (0, 0, 0) is
+    /// stored at @p first: false where the view's sides leave all their splats out of sight.
+    [[nodiscard]] bool isInSight(ClassifiedGrid::StorageIndex first) const {
+        return mOutOfSight.empty() ||
+               !mOutOfSight[static_cast<std::size_t>(first / ClassifiedGrid::kBlockVoxels)];
+    }
+
+    /// @brief The axes from outermost to innermost: slices, rows of a slice, voxels of a row.
+    [[nodiscard]] const std::array<int, 3>& axes() const { return mAxes; }
 
 private:
     // A run of the inner axis' order that stays in one block: steps [begin, end) of it.

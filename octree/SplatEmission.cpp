@@ -145,18 +145,40 @@ void emitSplats(const Cut& cut, const View& view, SplatList& splats) {
     });
 }
 
-void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats,
-                     const std::vector<SplatMark>* marks) {
-    const SliceOrder order(grid, view);
-    // The voxel centres' box in front of the eye: no voxel can be behind it.
-    const bool cullsBehindEye = !view.isBoxInFrontOfEye(
-        grid.toWorld(glm::dvec3(0.0)), grid.toWorld(glm::dvec3(grid.dims()) - 1.0));
-    // Calls add(voxel, stored) for the voxels of `slice` that make a splat: not empty, not
-    // behind the eye.
+Splat voxelSplat(const ClassifiedGrid& grid, glm::u64vec3 voxel,
+                 ClassifiedGrid::StorageIndex stored) {
+    const glm::vec4 value = grid.storedVoxel(stored);
+    // Every member: a list may be refilled over an octree cut's coarse splats.
+    Splat splat;
+    splat.position = glm::vec3(grid.toWorld(glm::dvec3(voxel)));
+    splat.size = 1.0f;
+    splat.color = glm::vec3(value);
+    splat.extinction = value.w;
+    return splat;
+}
+
+DrawnVoxels::DrawnVoxels(const ClassifiedGrid& grid, const View& view)
+    : mGrid(&grid), mView(view),
+      // The voxel centres' box in front of the eye: no voxel can be behind it.
+      mCullsBehindEye(!view.isBoxInFrontOfEye(grid.toWorld(glm::dvec3(0.0)),
+                                              grid.toWorld(glm::dvec3(grid.dims()) - 1.0))) {}
+
+bool DrawnVoxels::isBehindEye(glm::u64vec3 voxel) const {
+    return mView.depth(mGrid->toWorld(glm::dvec3(voxel))) <= 0.0;
+}
+
+namespace {
+
+// emitVoxelSplats() of slices [sliceBegin, sliceEnd): returns where each slice's splats end in
+// `splats` (entry i + 1 one past slice sliceBegin + i's last splat, entry 0 zero).
+std::vector<std::size_t> emitSlices(const SliceOrder& order, const DrawnVoxels& drawn,
+                                    std::size_t sliceBegin, std::size_t sliceEnd,
+                                    SplatList& splats) {
+    const ClassifiedGrid& grid = drawn.grid();
+    // Calls add(voxel, stored) for the drawn voxels of `slice`.
     const auto forEachDrawn = [&](std::size_t slice, auto&& add) {
         order.forEachInSlice(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
-            if (grid.storedVoxel(stored) != glm::vec4(0.0f) &&
-                !(cullsBehindEye && view.depth(grid.toWorld(glm::dvec3(voxel))) <= 0.0)) {
+            if (drawn.isDrawn(voxel, stored)) {
                 add(voxel, stored);
             }
         });
@@ -165,30 +187,40 @@ void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& sp
     // slice's at its offset. The list is exactly as long as its splats (no growth by doubling,
     // which would hold the old and the new array at once), and the same for any number of
     // threads.
-    const std::size_t slices = order.sliceCount();
+    const std::size_t slices = sliceEnd - sliceBegin;
     std::vector<std::size_t> offsets(slices + 1, 0);
     tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
-        forEachDrawn(slice,
+        forEachDrawn(sliceBegin + slice,
                      [&](glm::u64vec3, ClassifiedGrid::StorageIndex) { ++offsets[slice + 1]; });
     });
     layOut(offsets, splats);
     Splat* const out = splats.writableSplats();
     tbb::parallel_for(std::size_t{0}, slices, [&](std::size_t slice) {
         std::size_t at = offsets[slice];
-        forEachDrawn(slice, [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
-            const glm::vec4 value = grid.storedVoxel(stored);
-            // Every member: the list may be refilled over an octree cut's coarse splats.
-            Splat& splat = out[at++];
-            splat.position = glm::vec3(grid.toWorld(glm::dvec3(voxel)));
-            splat.size = 1.0f;
-            splat.color = glm::vec3(value);
-            splat.extinction = value.w;
-        });
+        forEachDrawn(sliceBegin + slice,
+                     [&](glm::u64vec3 voxel, ClassifiedGrid::StorageIndex stored) {
+                         out[at++] = voxelSplat(grid, voxel, stored);
+                     });
     });
+    // offsets[i + 1] is now one past slice i's last splat.
+    return offsets;
+}
+
+} // namespace
+
+void emitVoxelSplats(const ClassifiedGrid& grid, const View& view, SplatList& splats,
+                     const std::vector<SplatMark>* marks) {
+    const SliceOrder order(grid, view);
+    const std::vector<std::size_t> ends =
+        emitSlices(order, DrawnVoxels(grid, view), 0, order.sliceCount(), splats);
     if (marks != nullptr) {
-        // offsets[slice + 1] is now one past the slice's last splat.
-        detail::placeMarks(*marks, slicePlaces(grid, order, view, offsets, *marks), splats);
+        detail::placeMarks(*marks, slicePlaces(grid, order, view, ends, *marks), splats);
     }
+}
+
+void emitVoxelSplats(const SliceOrder& order, const DrawnVoxels& drawn, std::size_t sliceBegin,
+                     std::size_t sliceEnd, SplatList& splats) {
+    emitSlices(order, drawn, sliceBegin, sliceEnd, splats);
 }
 
 } // namespace texsplat::octree

@@ -140,7 +140,7 @@ public:
         const render::Frame& frame = action.collect(mRoot);
         mFullSplats.clear();
         for (const render::FrameSplats& splats : frame.splats) {
-            mFullSplats.push_back(splats.splats->size());
+            mFullSplats.push_back(splats.splatCount());
         }
     }
 

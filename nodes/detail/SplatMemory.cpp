@@ -1,5 +1,6 @@
 #include "nodes/detail/SplatMemory.h"
 
+#include "nodes/TransferFunction.h"
 #include "nodes/VolumeData.h"
 #include "octree/ClassifiedGrid.h"
 #include "octree/OctreeNode.h"
@@ -56,8 +57,10 @@ SplatMemory estimateClassification(const VolumeData& volume, bool withVectors) {
     const std::uint64_t boxBlocks = octree::ClassifiedGrid::boxBlockCount(dims);
     // Each stored voxel can make at most one classified block non-empty, and a voxel that is
     // not stored classifies to nothing.
+    // Scalars classify into a palette (2 bytes a voxel); vector splats hold their media.
     memory.classified = octree::ClassifiedGrid::memoryBytesFor(
-        dims, std::min(boxBlocks, stored), withVectors);
+        dims, std::min(boxBlocks, stored), withVectors,
+        withVectors ? 0 : static_cast<std::size_t>(TransferFunction::kLevels) + 1);
     if (!withVectors) {
         // Scalar classification also keeps the grid's value ranges (docs/octree.md).
         memory.classified = byteSum(memory.classified, octree::ValueRanges::memoryBytesFor(

@@ -12,6 +12,7 @@
 #include "scenegraph/actions/Action.h"
 #include "scenegraph/actions/ModelMatrixElement.h"
 
+#include <array>
 #include <mutex>
 
 namespace texsplat::distributed {
@@ -35,7 +36,8 @@ void markColumns(const octree::ClassifiedGrid& grid, const glm::u64vec3& offset,
     constexpr std::uint64_t kSize = octree::ClassifiedGrid::kBlockSize;
     const glm::u64vec3 dims = grid.dims();
     grid.forEachBlock([&](glm::u64vec3 block, octree::ClassifiedGrid::StorageIndex first) {
-        const auto& voxels = grid.storedBlock(first);
+        std::array<glm::vec4, octree::ClassifiedGrid::kBlockVoxels> voxels;
+        grid.readBlock(first, voxels);
         for (std::uint64_t slot = 0; slot < octree::ClassifiedGrid::kBlockVoxels; ++slot) {
             const glm::u64vec3 local =
                 block * kSize +

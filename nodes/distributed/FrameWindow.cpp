@@ -1,12 +1,15 @@
 #include "nodes/distributed/FrameWindow.h"
 
 #include "nodes/render/MarkDrawing.h"
+#include "octree/ClassifiedGrid.h"
 #include "octree/Splat.h"
+#include "octree/VoxelSplats.h"
 
 #include <glm/glm.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace texsplat::distributed {
@@ -29,20 +32,41 @@ struct PixelBox {
     bool isWholeImage = false;
 };
 
-// Grows `box` by the splats of `batch` in an image of width x height.
-void addBatch(const render::FrameSplats& batch, int width, int height, PixelBox& box) {
-    const octree::SplatList& list = *batch.splats;
-    if (list.isEmpty()) {
-        return;
+// Grows `low` and `high` to hold the centres of the splats of `batch` (local space) and returns
+// the largest splat size; a batch of voxels, which holds no list, by its allocated blocks'
+// voxels (a bound: empty voxels among them make no splat).
+double addCentres(const render::FrameSplats& batch, glm::dvec3& low, glm::dvec3& high) {
+    if (batch.voxels) {
+        const octree::ClassifiedGrid& grid = batch.voxels->grid();
+        constexpr std::uint64_t kSize = octree::ClassifiedGrid::kBlockSize;
+        grid.forEachBlock([&](glm::u64vec3 block, octree::ClassifiedGrid::StorageIndex) {
+            const glm::u64vec3 first = block * kSize;
+            const glm::u64vec3 last = glm::min(first + kSize, grid.dims()) - glm::u64vec3(1);
+            for (const glm::u64vec3& corner : {first, last}) {
+                const glm::dvec3 centre(glm::vec3(grid.toWorld(glm::dvec3(corner))));
+                low = glm::min(low, centre);
+                high = glm::max(high, centre);
+            }
+        });
+        return grid.blockCount() > 0 ? 1.0 : 0.0;
     }
-    glm::dvec3 low(std::numeric_limits<double>::infinity());
-    glm::dvec3 high(-std::numeric_limits<double>::infinity());
     double largest = 0.0;
-    for (const octree::Splat& splat : list.splats()) {
+    for (const octree::Splat& splat : batch.splats->splats()) {
         low = glm::min(low, glm::dvec3(splat.position));
         high = glm::max(high, glm::dvec3(splat.position));
         largest = std::max(largest, double(splat.size));
     }
+    return largest;
+}
+
+// Grows `box` by the splats of `batch` in an image of width x height.
+void addBatch(const render::FrameSplats& batch, int width, int height, PixelBox& box) {
+    if (batch.splatCount() == 0) {
+        return;
+    }
+    glm::dvec3 low(std::numeric_limits<double>::infinity());
+    glm::dvec3 high(-std::numeric_limits<double>::infinity());
+    const double largest = addCentres(batch, low, high);
     const glm::dvec3 spacing(batch.view.spacing);
     const double reach =
         largest * batch.footprint->reach() * std::max({spacing.x, spacing.y, spacing.z});

@@ -27,12 +27,24 @@ struct FrameMesh {
 
 /// @brief One splat node's contribution to a frame: its splats back to front for the view, and
 /// what each looks like.
+///
+/// The splats come as a list (`splats`: an octree cut, vector and combined splats with their
+/// marks) or, for a full-resolution frame of a grid, as the grid's voxels in slice order
+/// (`voxels`), which a backend may draw without listing them (docs/design.md, "Splat lists and
+/// voxel batches"); list() gives either as a list.
 struct FrameSplats {
-    std::shared_ptr<const octree::SplatList> splats; ///< back to front
-    SplatView view;                                  ///< how the batch is seen (local space)
+    std::shared_ptr<const octree::SplatList> splats;   ///< back to front, or null: `voxels`
+    std::shared_ptr<const octree::VoxelSplats> voxels; ///< every voxel's splat, or null
+    SplatView view;                                    ///< how the batch is seen (local space)
     std::shared_ptr<const SplatFootprint> footprint; ///< shape, kernel texture, mark table
     MarkDrawing marks;                               ///< vector and combined splats only
     glm::mat4 localToCamera{1.0f};                   ///< view · model
+
+    /// @brief The splats as a list: `splats`, or the voxels' list (made on first use).
+    const std::shared_ptr<const octree::SplatList>& list() const;
+
+    /// @brief Number of splats.
+    std::size_t splatCount() const;
 
     /// @brief How far each splat is from the eye, what batches of several nodes are merged by:
     /// the depth along the view (camera space looks down −z) for an orthographic camera, the

@@ -22,7 +22,8 @@ std::shared_ptr<octree::ClassifiedGrid> shadedGrid(const VoxelGradients& gradien
     std::vector<Voxels> lit(blocks.size());
     tbb::parallel_for(std::size_t{0}, blocks.size(), [&](std::size_t b) {
         const ClassifiedGrid::StorageIndex first = blocks[b].second;
-        const Voxels& voxels = grid.storedBlock(first);
+        Voxels voxels;
+        grid.readBlock(first, voxels);
         for (std::size_t i = 0; i < voxels.size(); ++i) {
             const glm::vec4& voxel = voxels[i];
             lit[b][i] = voxel == glm::vec4(0.0f)

@@ -44,16 +44,16 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
     const std::string opaque = writeVolumeScene('\xff');
     expectError(opaque + " --memory-limit 8M",
                 opaque + ":5:1: TextureSplat: classifying and splatting 64x64x64 voxels would "
-                         "need 26243072 bytes (25 MiB), more than the memory limit of 8388608 "
-                         "bytes (8 MiB); the classified grid takes 4.03 MiB, the octree 0 KiB, the "
+                         "need 23109664 bytes (22 MiB), more than the memory limit of 8388608 "
+                         "bytes (8 MiB); the classified grid takes 1.04 MiB, the octree 0 KiB, the "
                          "splats 21 MiB; use a volume of lower resolution, a splat budget "
                          "(maxSplats, or --max-splats) to bound the splats, or a larger "
                          "--memory-limit");
     // The classified grid is asked before classifying, as if every voxel were visible.
     const std::string scene = writeZeroVolumeScene();
-    expectError(scene + " --memory-limit 2M --size 64x64",
-                scene + ":5:1: TextureSplat: classifying 64x64x64 voxels would need 4222976 "
-                        "bytes (4.03 MiB), more than the memory limit of 2097152 bytes (2 MiB); "
+    expectError(scene + " --memory-limit 1M --size 64x64",
+                scene + ":5:1: TextureSplat: classifying 64x64x64 voxels would need 1089568 "
+                        "bytes (1.04 MiB), more than the memory limit of 1048576 bytes (1 MiB); "
                         "use a volume of lower resolution or a larger --memory-limit");
     // The volume readers ask the same limit before they allocate the grid.
     expectError(scene + " --memory-limit 512K",
@@ -62,10 +62,10 @@ TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
                         "limit of 524288 bytes (512 KiB); use a volume of lower resolution, or a "
                         "larger --memory-limit");
     // The ray-cast reference classifies too, but makes no splats.
-    expectError(scene + " --raycast --memory-limit 2M",
+    expectError(scene + " --raycast --memory-limit 1M",
                 scene + ":5:1: TextureSplat: classifying 64x64x64 voxels for the ray-cast "
-                        "reference would need 4222976 bytes (4.03 MiB), more than the memory limit "
-                        "of 2097152 bytes (2 MiB); use a volume of lower resolution or a larger "
+                        "reference would need 1089568 bytes (1.04 MiB), more than the memory limit "
+                        "of 1048576 bytes (1 MiB); use a volume of lower resolution or a larger "
                         "--memory-limit");
     // A splat budget bounds the splats: the same frame fits.
     const auto budget = runTexsplat("render " + opaque +
@@ -95,20 +95,22 @@ TEST_F(HostileInputTest, runningOutOfMemoryNamesTheStageNotAnInternalError) {
 #if defined(__SANITIZE_ADDRESS__)
     GTEST_SKIP() << "AddressSanitizer reserves more address space than the ulimit below allows";
 #else
-    // A 256^3 grid (64 MiB of floats) loads under a 400 MB address-space limit; classifying it
-    // (256 MiB more) cannot, and the estimate passes a limit of 1 TiB. Before, std::bad_alloc
-    // came out as "internal error: std::bad_alloc", with no file, stage or size.
-    std::string values(256, '\0');
-    for (int value = 0; value < 256; ++value) {
-        values[static_cast<std::size_t>(value)] = static_cast<char>(value);
+    // A 352^3 grid (166 MiB of floats) loads under a 400 MB address-space limit; classifying it
+    // (90 MiB more: palette indices, 2 bytes a voxel) cannot, and the estimate passes a limit of
+    // 1 TiB (336^3 to 368^3 do so on this machine). Before, std::bad_alloc came out as
+    // "internal error: std::bad_alloc", with no file, stage or size.
+    constexpr int kSide = 352;
+    std::string row(kSide, '\0');
+    for (int x = 0; x < kSide; ++x) {
+        row[static_cast<std::size_t>(x)] = static_cast<char>(x % 256);
     }
     std::string voxels;
-    voxels.reserve(256 * 256 * 256);
-    for (int row = 0; row < 256 * 256; ++row) {
-        voxels += values;
+    voxels.reserve(std::size_t{kSide} * kSide * kSide);
+    for (int line = 0; line < kSide * kSide; ++line) {
+        voxels += row;
     }
     const std::string raw =
-        write("ramp.raw", "texsplat-raw 1\ndims 256 256 256\ntype uint8\ndata\n" + voxels);
+        write("ramp.raw", "texsplat-raw 1\ndims 352 352 352\ntype uint8\ndata\n" + voxels);
     const std::string scene = write("ramp.iv", "#Inventor V2.1 ascii\nSeparator {\n"
                                                "TransferFunction { preset HOT range 0 255 }\n"
                                                "VolumeData { source FILE_RAW fileName \"" +
@@ -122,7 +124,7 @@ TEST_F(HostileInputTest, runningOutOfMemoryNamesTheStageNotAnInternalError) {
         << result.standardError;
     EXPECT_NE(result.standardError.find(
                   scene + ":5:1: TextureSplat: classifying: out of memory (this stage was "
-                          "estimated at 270270464 bytes (258 MiB)); the memory limit is "
+                          "estimated at 94567456 bytes (90.2 MiB)); the memory limit is "
                           "1099511627776 bytes (1 TiB); use a volume of lower resolution"),
               std::string::npos)
         << result.standardError;

@@ -12,15 +12,23 @@
 // again and again (the work per pixel does not depend on what the planes hold); fragments are
 // the pixels inside a square (stamped: where the footprint is not 0), counted once by the
 // scalar loop.
+//
+// The orthographic stamped workloads are also drawn as CpuRenderer draws a full-resolution
+// batch: compositeVoxels() walks the grid's voxels in slice order, band by band, and places
+// each splat from its voxel's index on the way (no list, no set-up beforehand). Its baseline is
+// compositeSplats() of the same splats set up beforehand: the ratio is what walking and placing
+// costs on top of the compositing (the same pixels, the same bytes).
 #include "nodes/render/cpu/SplatSpans.h"
+#include "nodes/render/cpu/VoxelRaster.h"
+#include "nodes/render/cpu/VoxelSpans.h"
 
 #include "tests/nodes/SplatSpansReference.h"
 
 #include "BenchmarkBaseline.h"
-#include "CompositeFloor.h"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>
@@ -132,19 +140,27 @@ BENCHMARK(CompositeSplatsBaselineScalar)
     ->Unit(benchmark::kMillisecond);
 TEXSPLAT_BENCHMARK_BASELINE(CompositeSplatsSimd, CompositeSplatsBaselineScalar);
 
-// The same vectors as the stamped loop on Marschner–Lobb 128³, with one stamp load for the
-// footprint and the least arithmetic (CompositeFloor.h): how close the loop is to what its
-// vectors cost.
-void CompositeSplatsFloor(benchmark::State& state) {
+// The voxel walk over the orthographic stamped workloads, band by band as CpuRenderer's bands
+// (at most 64 rows), all on one thread.
+void CompositeVoxelsWalk(benchmark::State& state) {
     timeComposite(
         state,
         [](const CompositeWorkload& workload, ColorPlanes& planes) {
-            texsplat::microbench::compositeFloor(workload.splats.data(), workload.splats.size(),
-                                                 *workload.stamps(), planes);
+            const texsplat::render::cpu::VoxelRaster voxels(
+                *workload.voxels, *workload.setup, *workload.sampler, workload.width,
+                workload.height);
+            constexpr int kBandRows = 64;
+            for (int row = 0; row < workload.height; row += kBandRows) {
+                texsplat::render::cpu::compositeVoxels(
+                    voxels, planes, row, std::min(workload.height, row + kBandRows));
+            }
         },
-        std::string("floor, ") + texsplat::render::cpu::compositeTarget());
+        std::string("voxel walk, ") + texsplat::render::cpu::compositeTarget());
 }
-BENCHMARK(CompositeSplatsFloor)->Args({0, 128, 1, 1})->Unit(benchmark::kMillisecond);
-TEXSPLAT_BENCHMARK_BASELINE(CompositeSplatsFloor, CompositeSplatsSimd);
+BENCHMARK(CompositeVoxelsWalk)
+    ->Args({0, 64, 0, 1})
+    ->Args({0, 128, 1, 1})
+    ->Unit(benchmark::kMillisecond);
+TEXSPLAT_BENCHMARK_BASELINE(CompositeVoxelsWalk, CompositeSplatsSimd);
 
 } // namespace

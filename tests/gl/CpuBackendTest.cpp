@@ -21,6 +21,7 @@
 #include "nodes/render/RayCastImage.h"
 #include "nodes/render/cpu/CpuRenderer.h"
 #include "nodes/volume/DenseGrid.h"
+#include "octree/VoxelSplats.h"
 #include "scenegraph/NodeRegistry.h"
 #include "scenegraph/Separator.h"
 #include "scenegraph/actions/RayCastAction.h"
@@ -195,7 +196,11 @@ TEST(CpuBackend, drawsEveryGlSceneAsGlDoesAndAsCloseToTheReference) {
         const image::Image reference = rayCast(*scene.root, kSize, kSize);
         const double glError = psnr(reference, gl);
         const double cpuError = psnr(reference, cpu.image);
-        EXPECT_GE(cpuError, glError - 1.0) << scene.name;
+        // Orthographic splats take the stamp of the sub-pixel phase nearest their centre
+        // (FootprintStamps: a 16th of a pixel, within 2.5 % of the footprint's peak) where GL
+        // interpolates the texture: Marschner-Lobb's is 2.0 dB further from the reference at
+        // 60 dB (an RMSE of a third of a step of 255), 63 dB from GL's.
+        EXPECT_GE(cpuError, glError - 2.5) << scene.name;
         RecordProperty(scene.name, "CPU vs GL " + std::to_string(againstGl) + " dB; against " +
                                        "the reference GL " + std::to_string(glError) +
                                        " dB, CPU " + std::to_string(cpuError) + " dB");
@@ -243,6 +248,41 @@ TEST(CpuBackend, theImageIsTheSameForAnyThreadCount) {
             EXPECT_EQ(one.depths(), other.depths()) << scene.name;
         }
     }
+}
+
+TEST(CpuBackend, aGridsVoxelsDrawTheBytesTheirListDraws) {
+    // A full-resolution batch comes as the grid's voxels in slice order (FrameSplats::voxels),
+    // which the CPU backend walks without a list (stamped, band by band) or lists a few slices at
+    // a time: the same splats in the same order as the list, so the same bytes.
+    registerNodeTypes();
+    std::size_t walked = 0;
+    for (const Scene& scene : scenes()) {
+        for (const glm::ivec2 size : {glm::ivec2(83, 61), glm::ivec2(400, 300)}) {
+            render::FrameAction action(size.x, size.y);
+            const render::Frame& frame = action.collect(*scene.root);
+            render::Frame listed = frame;
+            for (render::FrameSplats& splats : listed.splats) {
+                if (splats.voxels) {
+                    splats.splats = splats.voxels->list();
+                    splats.voxels = nullptr;
+                    ++walked;
+                }
+            }
+            for (const int threads : {1, 2}) {
+                const render::cpu::CpuRenderer renderer(threads);
+                const image::Image voxels = renderer.draw(frame, action.statistics(), true);
+                const image::Image list = renderer.draw(listed, action.statistics(), true);
+                ASSERT_EQ(voxels.pixels().size(), list.pixels().size());
+                EXPECT_EQ(std::memcmp(voxels.pixels().data(), list.pixels().data(),
+                                      list.pixels().size() * sizeof(glm::vec4)),
+                          0)
+                    << scene.name << ", " << size.x << "x" << size.y << ", " << threads
+                    << " threads";
+                EXPECT_EQ(voxels.depths(), list.depths()) << scene.name;
+            }
+        }
+    }
+    EXPECT_GE(walked, 8u) << "the scenes should bring batches of voxels";
 }
 
 TEST(CpuBackend, drawsAnyImageSizeAndSplatsPartlyOutsideIt) {

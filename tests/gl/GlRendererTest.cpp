@@ -117,12 +117,12 @@ TEST(GlRenderer, drawsANodesRefilledSplatListAnew) {
     auto* camera = static_cast<PerspectiveCamera*>(root->child(0).get());
     render::FrameAction action(kSize, kSize);
     render::GlRenderer kept;
-    const octree::SplatList* list = action.collect(*root).splats[0].splats.get();
+    const octree::SplatList* list = action.collect(*root).splats[0].list().get();
     const image::Image before = kept.draw(action.frame(), action.statistics());
     camera->orientation.setValue(render::rotationLookingAlong({0.6f, 0.35f, 1.0f}));
     test::frameCamera(*camera, *root); // from the other side: the splats' order changes
     const render::Frame& turned = action.collect(*root);
-    EXPECT_EQ(turned.splats[0].splats.get(), list) << "the list was refilled, not made anew";
+    EXPECT_EQ(turned.splats[0].list().get(), list) << "the list was refilled, not made anew";
     const image::Image after = kept.draw(turned, action.statistics());
     render::GlRenderer fresh;
     const image::Image expected = fresh.draw(turned, action.statistics());

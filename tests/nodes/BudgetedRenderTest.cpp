@@ -114,7 +114,7 @@ TEST(BudgetedRender, aBudgetThatHoldsEveryVoxelDrawsTheFullResolutionImage) {
 std::size_t splatsInTheImage(const render::Frame& frame) {
     std::size_t inside = 0;
     for (const render::FrameSplats& batch : frame.splats) {
-        for (const octree::Splat& splat : batch.splats->splats()) {
+        for (const octree::Splat& splat : batch.list()->splats()) {
             const glm::vec4 clip = batch.view.localToClip * glm::vec4(splat.position, 1.0f);
             inside += clip.w > 0.0f && std::abs(clip.x) <= clip.w && std::abs(clip.y) <= clip.w;
         }
@@ -152,11 +152,12 @@ TEST(BudgetedRender, aZoomedFullFrameLeavesOutOnlySplatsThatCoverNoPixel) {
     auto every = std::make_shared<octree::SplatList>();
     octree::emitVoxelSplats(*transfer.classify(*volume.scalarGrid()),
                             frame.splats[0].view.octreeView(), *every);
-    EXPECT_LT(frame.splats[0].splats->size(), every->size() * 3 / 4) << "blocks are left out";
+    EXPECT_LT(frame.splats[0].splatCount(), every->size() * 3 / 4) << "blocks are left out";
 
     const render::cpu::CpuRenderer renderer(2);
     sg::RenderStatistics statistics;
     const image::Image sighted = renderer.draw(frame, statistics);
+    frame.splats[0].voxels = nullptr; // the list of every voxel instead
     frame.splats[0].splats = every;
     EXPECT_EQ(renderer.draw(frame, statistics).pixels(), sighted.pixels());
 }
@@ -187,12 +188,13 @@ TEST(BudgetedRender, splatsReachingIntoTheImageFromOutsideAreDrawn) {
     octree::emitVoxelSplats(*transfer.classify(*volume->scalarGrid()),
                             frame.splats[0].view.octreeView(), *every);
     ASSERT_EQ(every->size(), 256u);
-    EXPECT_EQ(frame.splats[0].splats->size(), 256u) << "no block lies beyond the reach";
+    EXPECT_EQ(frame.splats[0].splatCount(), 256u) << "no block lies beyond the reach";
 
     const render::cpu::CpuRenderer renderer(1);
     sg::RenderStatistics statistics;
     const image::Image sighted = renderer.draw(frame, statistics);
     EXPECT_GT(sighted.pixel(63, 32).a, 0.0f) << "the block outside reaches the last column";
+    frame.splats[0].voxels = nullptr; // the list of every voxel instead
     frame.splats[0].splats = every;
     EXPECT_EQ(renderer.draw(frame, statistics).pixels(), sighted.pixels());
 }

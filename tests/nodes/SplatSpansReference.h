@@ -14,6 +14,7 @@
 #include "nodes/render/cpu/SplatRaster.h"
 #include "nodes/render/cpu/SplatSpans.h"
 #include "octree/Splat.h"
+#include "octree/VoxelSplats.h"
 
 #include <glm/geometric.hpp>
 
@@ -78,7 +79,7 @@ inline float sampleFootprint(const render::cpu::FootprintSampler& sampler, float
 /// footprint lookup (sampleFootprint()), and the emission-absorption of the definition rather
 /// than its fast forms: α = 1 − e^(−τf) by std::expm1 at every optical depth, colour C·α/τ
 /// (C·f for τ ≤ 1e-30), dst = min(src + (1 − α)·dst, FLT_MAX). A stamped splat's footprint is
-/// `stamps`' blend (FootprintStamps::blend()) at every pixel of its box. Returns the fragments
+/// its stamp (FootprintStamps::at()) at every pixel of its box. Returns the fragments
 /// drawn: pixels inside a square (stamped: where the blend is not 0) and passing the depth tests,
 /// summed over the splats.
 inline std::uint64_t compositeSplatsScalar(const render::cpu::SplatRaster* splats,
@@ -106,9 +107,8 @@ inline std::uint64_t compositeSplatsScalar(const render::cpu::SplatRaster* splat
                 float b = q[3] * x + (q[4] * y + q[5]);
                 float f = 0.0f;
                 if (stamped) {
-                    f = stamps->blend(splat.stampPhase, splat.stampFraction[0],
-                                      splat.stampFraction[1], column - splat.stampColumn,
-                                      row - splat.stampRow);
+                    f = stamps->at(splat.stampPhase, column - splat.stampColumn,
+                                   row - splat.stampRow);
                 } else {
                     if (projective) {
                         const float w = q[6] * x + (q[7] * y + q[8]);
@@ -166,6 +166,9 @@ struct CompositeWorkload {
     std::vector<std::size_t> sources;             ///< each one's index in the frame's list
     std::shared_ptr<const render::cpu::FootprintSampler> sampler; ///< the batch's footprint
     std::shared_ptr<const render::cpu::SplatSetup> setup;         ///< what set them up
+    /// @brief The batch's voxels when it is a full-resolution grid's (FrameSplats::voxels: what
+    /// compositeVoxels() walks), else null.
+    std::shared_ptr<const octree::VoxelSplats> voxels;
     int width = 0;                                                ///< image columns
     int height = 0;                                               ///< image rows
 
@@ -218,11 +221,12 @@ inline CompositeWorkload compositeWorkload(const std::string& dataset, const std
         batch.view, static_cast<float>(batch.footprint->extent), size, size,
         discRadius && workload.sampler->isRadial ? std::sqrt(workload.sampler->reach) : 0.0f);
     if (stamped) {
-        setup->stampFootprint(*workload.sampler);
+        setup->setStamps(setup->stampsFor(*workload.sampler));
     }
     workload.setup = setup;
+    workload.voxels = batch.voxels;
     const std::vector<render::cpu::SplatRaster> rasters =
-        setUpSplats(*setup, batch.splats->splats());
+        setUpSplats(*setup, batch.list()->splats());
     for (std::size_t i = 0; i < rasters.size(); ++i) {
         if (!rasters[i].isEmpty()) {
             workload.splats.push_back(rasters[i]);

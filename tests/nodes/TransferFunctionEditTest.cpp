@@ -155,7 +155,8 @@ TEST_F(TransferFunctionEdit, classifyingWithTheValueRangesGivesTheSameGrid) {
 
 // A grid's first classification (no value ranges yet) skips the blocks whose own values the
 // function hides too: a thresholded dense field, with clipped blocks at the box's far sides and
-// non-finite voxels, classifies voxel for voxel as each value alone does.
+// non-finite voxels, classifies voxel for voxel as each value alone does (at its level,
+// TransferFunction::classifyLevel()).
 TEST_F(TransferFunctionEdit, aFirstClassificationGivesEveryVoxelWhatItsValueClassifiesTo) {
     volume::DenseScalarGrid grid(volume::GridGeometry(glm::i64vec3(45, 38, 41)));
     for (std::int64_t z = 0; z < 41; ++z)
@@ -175,7 +176,7 @@ TEST_F(TransferFunctionEdit, aFirstClassificationGivesEveryVoxelWhatItsValueClas
         std::size_t visible = 0;
         std::size_t differing = 0;
         grid.forEachActive([&](const glm::i64vec3& index, float value) {
-            const Classification alone = transfer->classify(value, scale);
+            const Classification alone = transfer->classifyLevel(value, scale);
             const glm::vec4 expected(alone.color, alone.extinction);
             visible += expected != glm::vec4(0.0f) ? 1 : 0;
             differing += classified->voxel(glm::u64vec3(index)) != expected ? 1 : 0;

@@ -278,7 +278,8 @@ TEST(TransferFunction, classifiesAGridIntoTheOctreeInput) {
 
 TEST(TransferFunction, classifyingAGridGivesEachVoxelItsValuesClassificationForAnyThreadCount) {
     // Blocks are read and classified in parallel batches (more than one batch here, and blocks
-    // the box clips): every voxel must be what classify(value) gives it, for 1, 2 and 7 threads.
+    // the box clips): every voxel must be what classifyLevel(value) gives it, for 1, 2 and 7
+    // threads.
     using volume::DenseScalarGrid;
     using volume::GridGeometry;
     DenseScalarGrid grid(GridGeometry({131, 97, 90}));
@@ -302,7 +303,7 @@ TEST(TransferFunction, classifyingAGridGivesEachVoxelItsValuesClassificationForA
         std::size_t wrong = 0;
         std::uint64_t drawn = 0;
         grid.forEachActive([&](const glm::i64vec3& index, float value) {
-            const Classification expected = tf->classify(value, scale);
+            const Classification expected = tf->classifyLevel(value, scale);
             wrong += classified->voxel(glm::u64vec3(index)) !=
                              glm::vec4(expected.color, expected.extinction)
                          ? 1
@@ -313,6 +314,48 @@ TEST(TransferFunction, classifyingAGridGivesEachVoxelItsValuesClassificationForA
         EXPECT_EQ(classified->nonEmptyVoxelCount(), drawn);
         EXPECT_GT(drawn, 100000u);
     }
+}
+
+TEST(TransferFunction, aVoxelIsItsValuesClassificationWithinHalfALevel) {
+    // Colour and opacity change along t at most by their control points' steepest slope, so the
+    // level a voxel holds (1/65536 of the range away at most) moves its classification by that
+    // slope over half a level at most; values on a level are classified exactly.
+    const auto tf = TransferFunction::create();
+    tf->colorValues.setValue({0.0f, 0.3f, 1.0f});
+    tf->colors.setValue({glm::vec3(0.0f), glm::vec3(1.0f, 0.2f, 0.5f), glm::vec3(0.1f)});
+    tf->opacityValues.setValue({0.0f, 0.6f, 1.0f});
+    tf->opacities.setValue({0.5f, 40.0f, 2.0f});
+    const DataScale scale{glm::vec2(-3.0f, 5.0f), 1.0f};
+    // d(C, τ)/dt at most: |τ'| = 39.5/0.6 below t = 0.6 and 38/0.4 above; C = S·τ with
+    // |S'| <= 1/0.3 (and S <= 1, τ <= 40), so |C'| <= |τ'| + 40/0.3.
+    const double slopeT = std::max(39.5 / 0.6, 38.0 / 0.4);
+    const double slopeC = slopeT + 40.0 / 0.3;
+    const double halfLevel = 0.5 / (TransferFunction::kLevels - 1);
+    double largest = 0.0;
+    for (int i = 0; i <= 200000; ++i) {
+        const float value = -3.5f + 9.0f * static_cast<float>(i) / 200000.0f;
+        const Classification exact = tf->classify(value, scale);
+        const Classification level = tf->classifyLevel(value, scale);
+        EXPECT_LE(std::abs(level.extinction - exact.extinction), slopeT * halfLevel * 1.01 + 1e-6)
+            << value;
+        for (int c = 0; c < 3; ++c) {
+            const double colorError = std::abs(level.color[c] - exact.color[c]);
+            EXPECT_LE(colorError, slopeC * halfLevel * 1.01 + 1e-6) << value;
+            largest = std::max(largest, colorError);
+        }
+    }
+    EXPECT_GT(largest, 0.0) << "values between levels should move";
+    // On a level (multiples of 1/32768 of the range) and outside the range: exact.
+    for (const float t : {0.0f, 0.25f, 0.5f, 1.0f, 12345.0f / 32768.0f}) {
+        const float value = scale.range.x + t * (scale.range.y - scale.range.x);
+        const Classification exact = tf->classify(value, scale);
+        const Classification level = tf->classifyLevel(value, scale);
+        EXPECT_EQ(level.extinction, exact.extinction) << t;
+        EXPECT_EQ(level.color, exact.color) << t;
+    }
+    EXPECT_EQ(tf->classifyLevel(-100.0f, scale).extinction,
+              tf->classify(-100.0f, scale).extinction);
+    EXPECT_EQ(tf->classifyLevel(std::numeric_limits<float>::quiet_NaN(), scale).extinction, 0.0f);
 }
 
 TEST(TransferFunction, classifyingAGridChecksTheFields) {

@@ -104,7 +104,7 @@ TEST_F(WorkProgressTest, aCancelledStepThrowsAndTheNextFrameStartsItAgain) {
         action.setWorkProgress({});
         const render::Frame& frame = action.collect(*scene);
         ASSERT_EQ(frame.splats.size(), 1u);
-        EXPECT_GT(frame.splats.front().splats->size(), 400u);
+        EXPECT_GT(frame.splats.front().splatCount(), 400u);
         EXPECT_EQ(action.statistics().builds.octrees, 1u);
         // Cancelling the octree build keeps the classification it was building on.
         EXPECT_EQ(action.statistics().builds.classifications,

@@ -8,6 +8,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
+#include <vector>
 
 using texsplat::DataError;
 using texsplat::octree::ClassifiedGrid;
@@ -103,6 +105,59 @@ TEST(ClassifiedGrid, aWholeBlockIsSetAsItsVoxelsWouldBe) {
     grid.setBlock({1, 0, 0}, extremes);
     EXPECT_EQ(grid.blockCount(), 2u);
     EXPECT_EQ(grid.nonEmptyVoxelCount(), 1u + 2u);
+}
+
+TEST(ClassifiedGrid, aPaletteGridHoldsTwoBytesAVoxelAndReadsAsItsMedia) {
+    const std::vector<glm::vec4> palette = {glm::vec4(0.0f), glm::vec4(1.0f, 2.0f, 3.0f, 4.0f),
+                                            glm::vec4(0.0f, 0.0f, 0.0f, 0.5f)};
+    ClassifiedGrid grid({20, 9, 9}, glm::dvec3(1.0), glm::dvec3(0.0), palette);
+    EXPECT_EQ(grid.storage(), ClassifiedGrid::Storage::Palette);
+    ClassifiedGrid::PaletteBlock indices{};
+    indices[0] = 1;
+    indices[3 + 8 * (1 + 8 * 2)] = 2;  // voxel (3, 1, 2)
+    grid.setBlock({2, 0, 0}, indices); // x 16..19 inside, 20..23 beyond the grid (all 0)
+    EXPECT_EQ(grid.blockCount(), 1u);
+    EXPECT_EQ(grid.nonEmptyVoxelCount(), 2u);
+    EXPECT_EQ(grid.voxel({16, 0, 0}), palette[1]);
+    EXPECT_EQ(grid.voxel({19, 1, 2}), palette[2]);
+    EXPECT_EQ(grid.voxel({17, 0, 0}), glm::vec4(0.0f));
+    const ClassifiedGrid::StorageIndex first = grid.blockStorage({2, 0, 0});
+    EXPECT_EQ(grid.paletteBlock(first)[0], 1u);
+    std::array<glm::vec4, ClassifiedGrid::kBlockVoxels> media{};
+    grid.readBlock(first, media);
+    EXPECT_EQ(media[0], palette[1]);
+    EXPECT_EQ(media[3 + 8 * (1 + 8 * 2)], palette[2]);
+    // Setting it again replaces it and counts again; an all-empty block allocates nothing.
+    indices[0] = 0;
+    grid.setBlock({2, 0, 0}, indices);
+    EXPECT_EQ(grid.nonEmptyVoxelCount(), 1u);
+    grid.setBlock({0, 1, 1}, ClassifiedGrid::PaletteBlock{});
+    EXPECT_EQ(grid.blockCount(), 1u);
+    // A block costs its 512 indices, not 512 media; the palette is paid once.
+    const ClassifiedGrid direct({20, 9, 9}, glm::dvec3(1.0), glm::dvec3(0.0));
+    const std::uint64_t table = direct.memoryBytes();
+    const std::uint64_t block = grid.memoryBytes() - table - palette.size() * sizeof(glm::vec4);
+    EXPECT_GE(block, ClassifiedGrid::kBlockVoxels * 2);
+    EXPECT_LT(block, ClassifiedGrid::kBlockVoxels * 2 + 256);
+    EXPECT_EQ(grid.memoryBytes(),
+              ClassifiedGrid::memoryBytesFor({20, 9, 9}, 1, false, palette.size()));
+}
+
+TEST(ClassifiedGrid, rejectsAPaletteThatCannotNameItsMedia) {
+    const auto make = [](std::vector<glm::vec4> palette) {
+        return errorOf([&] {
+            ClassifiedGrid({2, 2, 2}, glm::dvec3(1.0), glm::dvec3(0.0), std::move(palette));
+        });
+    };
+    EXPECT_EQ(make({}), "ClassifiedGrid: a palette holds 1 to 65536 media, got 0");
+    EXPECT_EQ(make(std::vector<glm::vec4>(65537, glm::vec4(0.0f))),
+              "ClassifiedGrid: a palette holds 1 to 65536 media, got 65537");
+    EXPECT_EQ(make({glm::vec4(0.0f, 0.0f, 0.0f, 1.0f)}),
+              "ClassifiedGrid: the palette's first medium must be empty");
+    EXPECT_EQ(make({glm::vec4(0.0f), glm::vec4(0.0f, -1.0f, 0.0f, 1.0f)}),
+              "ClassifiedGrid: palette medium 1: color must be finite and >= 0, got -1");
+    EXPECT_EQ(make({glm::vec4(0.0f), glm::vec4(0.0f, 0.0f, 0.0f, INFINITY)}),
+              "ClassifiedGrid: palette medium 1: extinction must be finite and >= 0, got inf");
 }
 
 TEST(ClassifiedGrid, vectorsAreThereOnlyWhenEnabledAndMustBeFinite) {

@@ -1,46 +1,61 @@
 #include "nodes/render/cpu/ColorPlanes.h"
 
+#include <algorithm>
+
 namespace texsplat::render::cpu {
+namespace {
+
+// Floats per 4 KiB page and per cache line.
+constexpr std::ptrdiff_t kPageFloats = 1024;
+constexpr std::ptrdiff_t kLineFloats = 16;
+
+} // namespace
 
 ColorPlanes::ColorPlanes(int width, int height, const glm::vec4& background, bool withDepth)
-    : mWidth(width), mHeight(height), mStride((width + 2 * kPadding - 1) / kPadding * kPadding) {
-    const std::size_t size = static_cast<std::size_t>(mStride) * static_cast<std::size_t>(height);
-    mRed.assign(size, background.r);
-    mGreen.assign(size, background.g);
-    mBlue.assign(size, background.b);
-    mAlpha.assign(size, background.a);
-    if (withDepth) {
-        mDepth.assign(size, 1.0f);
+    : mWidth(width), mHeight(height),
+      mStride((width + 2 * kPadding + kLineFloats - 1) / kLineFloats * kLineFloats),
+      mHasDepth(withDepth) {
+    const std::ptrdiff_t values = static_cast<std::ptrdiff_t>(mStride) * height;
+    mPlaneStride = (values + kPageFloats - 1) / kPageFloats * kPageFloats + kLineFloats;
+    mValues.resize(static_cast<std::size_t>(mPlaneStride * (withDepth ? 5 : 4)));
+    clear(background);
+}
+
+void ColorPlanes::clear(const glm::vec4& background) {
+    for (int channel = 0; channel < 4; ++channel) {
+        std::fill_n(plane(channel), mPlaneStride, background[channel]);
+    }
+    if (mHasDepth) {
+        std::fill_n(plane(4), mPlaneStride, 1.0f);
+    }
+}
+
+void ColorPlanes::copyRows(image::Image& image, int rowBegin, int rowEnd, bool withDepth) const {
+    glm::vec4* pixel = image.data() + static_cast<std::ptrdiff_t>(rowBegin) * mWidth;
+    for (int row = rowBegin; row < rowEnd; ++row) {
+        const float* r = red(row);
+        const float* g = green(row);
+        const float* b = blue(row);
+        const float* a = alpha(row);
+        for (int column = 0; column < mWidth; ++column) {
+            *pixel++ = glm::vec4(r[column], g[column], b[column], a[column]);
+        }
+    }
+    if (withDepth && mHasDepth) {
+        float* depthOut = image.depthData() + static_cast<std::ptrdiff_t>(rowBegin) * mWidth;
+        for (int row = rowBegin; row < rowEnd; ++row) {
+            depthOut = std::copy_n(depth(row), mWidth, depthOut);
+        }
     }
 }
 
 image::Image ColorPlanes::toImage(bool withDepth) const {
     image::Image result(mWidth, mHeight);
-    glm::vec4* pixel = result.data();
-    for (int row = 0; row < mHeight; ++row) {
-        const std::size_t first = offset(row);
-        for (int column = 0; column < mWidth; ++column) {
-            const std::size_t i = first + static_cast<std::size_t>(column);
-            *pixel++ = glm::vec4(mRed[i], mGreen[i], mBlue[i], mAlpha[i]);
-        }
-    }
     if (withDepth) {
         result.addDepth(1.0f);
-        if (hasDepth()) {
-            float* depth = result.depthData();
-            for (int row = 0; row < mHeight; ++row) {
-                for (int column = 0; column < mWidth; ++column) {
-                    *depth++ = mDepth[offset(row) + static_cast<std::size_t>(column)];
-                }
-            }
-        }
     }
+    copyRows(result, 0, mHeight, withDepth);
     return result;
-}
-
-std::size_t ColorPlanes::byteSize() const {
-    return (mRed.size() + mGreen.size() + mBlue.size() + mAlpha.size() + mDepth.size()) *
-           sizeof(float);
 }
 
 } // namespace texsplat::render::cpu

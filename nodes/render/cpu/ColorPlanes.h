@@ -14,43 +14,69 @@ namespace texsplat::render::cpu {
 /// arrays, so one SIMD vector holds one channel of adjacent pixels) and, when the frame has
 /// meshes, a window-space depth plane as GL's depth buffer holds it ([0, 1], 1 = nothing).
 ///
-/// Rows are `stride()` floats apart, at least kPadding floats more than the width, so a SIMD
-/// loop may run past the last column of a row (into padding nobody reads) without a tail.
+/// Each row has kPadding floats before its first column and at least as many after its last, so
+/// a SIMD loop may write a vector at any column within kPadding of the image (a stamp row that
+/// starts left of it, a tail past its last column) into padding nobody reads. The planes lie in
+/// one allocation, `planeStride()` floats apart: a whole number of 4 KiB pages and one cache line,
+/// so that the same pixel of two planes never shares its address modulo 4 KiB (a load from one
+/// plane right after a store to another at such an address waits for the store).
 class ColorPlanes {
 public:
-    /// @brief The widest SIMD vector in floats (AVX-512), the padding after each row.
-    static constexpr int kPadding = 16;
+    /// @brief Floats before and after each row: the widest stamp row (FootprintStamps).
+    static constexpr int kPadding = 32;
 
     /// @brief `width` x `height` planes cleared to `background`, with a depth plane cleared to
     /// 1 when `withDepth`.
     ColorPlanes(int width, int height, const glm::vec4& background, bool withDepth);
 
+    /// @brief Clears the planes to `background` (and the depth plane to 1), as a new object of
+    /// the same size and depth would be, in the memory they hold: a frame after frame of the
+    /// same size faults no page in.
+    void clear(const glm::vec4& background);
+
     int width() const { return mWidth; }   ///< columns
     int height() const { return mHeight; } ///< rows
     int stride() const { return mStride; } ///< floats from one row to the next
-    bool hasDepth() const { return !mDepth.empty(); } ///< whether there is a depth plane
+    /// @brief Floats from a pixel of one plane to the same pixel of the next (red, green, blue,
+    /// alpha, depth).
+    std::ptrdiff_t planeStride() const { return mPlaneStride; }
+    bool hasDepth() const { return mHasDepth; } ///< whether there is a depth plane
 
-    float* red(int row) { return mRed.data() + offset(row); }     ///< row `row`, top first
-    float* green(int row) { return mGreen.data() + offset(row); } ///< row `row`, top first
-    float* blue(int row) { return mBlue.data() + offset(row); }   ///< row `row`, top first
-    float* alpha(int row) { return mAlpha.data() + offset(row); } ///< row `row`, top first
-    float* depth(int row) { return mDepth.data() + offset(row); } ///< needs hasDepth()
+    float* red(int row) { return plane(0) + offset(row); }               ///< row `row`, top first
+    float* green(int row) { return plane(1) + offset(row); }             ///< row `row`, top first
+    float* blue(int row) { return plane(2) + offset(row); }              ///< row `row`, top first
+    float* alpha(int row) { return plane(3) + offset(row); }             ///< row `row`, top first
+    float* depth(int row) { return plane(4) + offset(row); }             ///< needs hasDepth()
+    const float* red(int row) const { return plane(0) + offset(row); }   ///< row `row`
+    const float* green(int row) const { return plane(1) + offset(row); } ///< row `row`
+    const float* blue(int row) const { return plane(2) + offset(row); }  ///< row `row`
+    const float* alpha(int row) const { return plane(3) + offset(row); } ///< row `row`
+    const float* depth(int row) const { return plane(4) + offset(row); } ///< needs hasDepth()
 
     /// @brief The planes as an image (RGBA interleaved, top row first), with the depth plane
     /// when there is one and `withDepth` (1 where nothing opaque is, as GL reads back).
     image::Image toImage(bool withDepth) const;
 
+    /// @brief Rows [`rowBegin`, `rowEnd`) of toImage() written into `image` (of this size): what
+    /// the threads of a band do once it is drawn.
+    void copyRows(image::Image& image, int rowBegin, int rowEnd, bool withDepth) const;
+
     /// @brief Bytes the planes hold.
-    std::size_t byteSize() const;
+    std::size_t byteSize() const { return mValues.size() * sizeof(float); }
 
 private:
-    std::size_t offset(int row) const { return static_cast<std::size_t>(row) * mStride; }
+    float* plane(int index) { return mValues.data() + index * mPlaneStride; }
+    const float* plane(int index) const { return mValues.data() + index * mPlaneStride; }
+    std::ptrdiff_t offset(int row) const {
+        return static_cast<std::ptrdiff_t>(row) * mStride + kPadding;
+    }
 
     int mWidth;
     int mHeight;
     int mStride;
-    using Plane = std::vector<float, detail::CacheLineAllocator<float>>;
-    Plane mRed, mGreen, mBlue, mAlpha, mDepth;
+    std::ptrdiff_t mPlaneStride;
+    bool mHasDepth;
+    std::vector<float, detail::CacheLineAllocator<float>> mValues;
 };
 
 } // namespace texsplat::render::cpu

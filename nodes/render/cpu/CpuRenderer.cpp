@@ -7,10 +7,14 @@
 #include "nodes/render/cpu/MeshRasterizer.h"
 #include "nodes/render/cpu/SplatRaster.h"
 #include "nodes/render/cpu/SplatSpans.h"
+#include "nodes/render/cpu/VoxelRaster.h"
+#include "nodes/render/cpu/VoxelSpans.h"
 #include "nodes/render/cpu/detail/SamplerCache.h"
-#include "octree/Splat.h"
-#include "scenegraph/Error.h"
 #include "nodes/render/detail/DepthOrderedRuns.h"
+#include "octree/Splat.h"
+#include "octree/SplatEmission.h"
+#include "octree/VoxelSplats.h"
+#include "scenegraph/Error.h"
 #include "scenegraph/actions/Seconds.h"
 
 #include <tbb/blocked_range.h>
@@ -42,6 +46,21 @@ struct Bands {
     int count;
     Bands(int height, int threads)
         : rows(std::max(4, (height + 4 * threads - 1) / (4 * threads))),
+          count((height + rows - 1) / rows) {}
+    int begin(int band) const { return band * rows; }
+    int end(int band, int height) const { return std::min(height, (band + 1) * rows); }
+};
+
+// Rows of the image split into bands for voxel batches (compositeVoxels()): each band
+// composites every slice while its rows stay in the caches, so bands are no taller than
+// kVoxelBandRows; and many per thread, taken as threads free up, as the volume covers the
+// image's rows unevenly.
+struct VoxelBands {
+    static constexpr int kVoxelBandRows = 64;
+    int rows;
+    int count;
+    VoxelBands(int height, int threads)
+        : rows(std::clamp((height + 8 * threads - 1) / (8 * threads), 4, kVoxelBandRows)),
           count((height + rows - 1) / rows) {}
     int begin(int band) const { return band * rows; }
     int end(int band, int height) const { return std::min(height, (band + 1) * rows); }
@@ -79,7 +98,7 @@ std::vector<PreparedBatch> prepareBatches(const Frame& frame, detail::SamplerCac
             auto setup =
                 std::make_unique<SplatSetup>(splats.view, static_cast<float>(footprint.extent),
                                              frame.width, frame.height, discRadius);
-            setup->stampFootprint(*batch.sampler);
+            setup->setStamps(cache.stamps(splats.footprint, *setup));
             batch.setup = std::move(setup);
         }
         batches.push_back(std::move(batch));
@@ -142,6 +161,22 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                 }
             });
         }
+        if (frame.splats.size() == 1 && frame.splats.front().voxels && batches.front().setup &&
+            batches.front().setup->stamps() != nullptr) {
+            // One batch of voxels, stamped: band by band through every slice, no list.
+            const PreparedBatch& batch = batches.front();
+            const VoxelRaster voxels(*batch.splats->voxels, *batch.setup, *batch.sampler,
+                                     frame.width, frame.height);
+            const VoxelBands voxelBands(frame.height, mThreads);
+            tbb::parallel_for(tbb::blocked_range<int>(0, voxelBands.count, 1),
+                              [&](const tbb::blocked_range<int>& range) {
+                                  for (int band = range.begin(); band < range.end(); ++band) {
+                                      compositeVoxels(voxels, planes, voxelBands.begin(band),
+                                                      voxelBands.end(band, frame.height));
+                                  }
+                              });
+            return;
+        }
         // The splats of all batches in one depth order, as GlRenderer draws them.
         const std::vector<render::detail::SplatRun> runs =
             render::detail::frameRuns(frame, statistics);
@@ -150,9 +185,62 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
         std::vector<MarkRaster> markRasters;
         std::vector<RowSpan> markRows;
         std::vector<std::uint32_t> markBegins;
+        // Composites splats [first, first + count) of `list` of `batch` (set up in chunks).
+        const auto compositeList = [&](const PreparedBatch& batch, const octree::SplatList& list,
+                                       std::size_t first, std::size_t end) {
+            const octree::Splat* splats = list.splats().data();
+            for (std::size_t chunk = first; chunk < end; chunk += kChunk) {
+                const std::size_t count = std::min(kChunk, end - chunk);
+                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
+                                  [&](const tbb::blocked_range<std::size_t>& range) {
+                                      batch.setup->setUp(splats + chunk + range.begin(),
+                                                         range.size(),
+                                                         rasters.data() + range.begin());
+                                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
+                                          rows[i] = rowSpanOf(rasters[i]);
+                                      }
+                                  });
+                // Combined splats: each splat's marks right after it.
+                std::optional<FollowingMarks> following;
+                if (list.hasMarks()) {
+                    const std::size_t marksFirst = list.markBegin(chunk);
+                    setUpMarks(batch, frame, marksFirst, list.markBegin(chunk + count) - marksFirst,
+                               markRasters, markRows);
+                    markBegins.resize(count + 1);
+                    for (std::size_t i = 0; i <= count; ++i) {
+                        markBegins[i] =
+                            static_cast<std::uint32_t>(list.markBegin(chunk + i) - marksFirst);
+                    }
+                    following = FollowingMarks{markRasters.data(), markRows.data(),
+                                               markBegins.data(), batch.style};
+                }
+                tbb::parallel_for(0, bands.count, [&](int band) {
+                    compositeSplats(rasters.data(), rows.data(), count, batch.sampler.get(),
+                                    batch.setup->stamps(), following ? &*following : nullptr,
+                                    planes, bands.begin(band), bands.end(band, frame.height));
+                });
+            }
+        };
         for (const render::detail::SplatRun& run : runs) {
             const PreparedBatch& batch = batches[run.batch];
-            const octree::SplatList& list = *batch.splats->splats;
+            if (batch.splats->voxels && runs.size() == 1) {
+                // One batch of voxels, not stamped (perspective, another footprint): listed a
+                // few slices at a time, never whole.
+                const octree::VoxelSplats& voxels = *batch.splats->voxels;
+                const octree::SliceOrder& order = voxels.order();
+                const glm::u64vec3 dims = voxels.grid().dims();
+                const std::uint64_t sliceVoxels = dims[order.axes()[1]] * dims[order.axes()[2]];
+                const std::size_t step = static_cast<std::size_t>(std::max<std::uint64_t>(
+                    1, 4 * kChunk / std::max<std::uint64_t>(sliceVoxels, 1)));
+                octree::SplatList slices;
+                for (std::size_t slice = 0; slice < order.sliceCount(); slice += step) {
+                    octree::emitVoxelSplats(order, voxels.drawn(), slice,
+                                            std::min(slice + step, order.sliceCount()), slices);
+                    compositeList(batch, slices, 0, slices.size());
+                }
+                continue;
+            }
+            const octree::SplatList& list = *batch.splats->list();
             if (!batch.setup) {
                 // Marks only: their own chunks, in the list's order.
                 const std::size_t end = list.markBegin(run.end);
@@ -166,38 +254,7 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                 }
                 continue;
             }
-            const octree::Splat* splats = list.splats().data();
-            for (std::size_t chunk = run.begin; chunk < run.end; chunk += kChunk) {
-                const std::size_t count = std::min(kChunk, run.end - chunk);
-                tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 1024),
-                                  [&](const tbb::blocked_range<std::size_t>& range) {
-                                      batch.setup->setUp(splats + chunk + range.begin(),
-                                                         range.size(),
-                                                         rasters.data() + range.begin());
-                                      for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                                          rows[i] = rowSpanOf(rasters[i]);
-                                      }
-                                  });
-                // Combined splats: each splat's marks right after it.
-                std::optional<FollowingMarks> following;
-                if (list.hasMarks()) {
-                    const std::size_t first = list.markBegin(chunk);
-                    setUpMarks(batch, frame, first, list.markBegin(chunk + count) - first,
-                               markRasters, markRows);
-                    markBegins.resize(count + 1);
-                    for (std::size_t i = 0; i <= count; ++i) {
-                        markBegins[i] =
-                            static_cast<std::uint32_t>(list.markBegin(chunk + i) - first);
-                    }
-                    following = FollowingMarks{markRasters.data(), markRows.data(),
-                                               markBegins.data(), batch.style};
-                }
-                tbb::parallel_for(0, bands.count, [&](int band) {
-                    compositeSplats(rasters.data(), rows.data(), count, batch.sampler.get(),
-                                    batch.setup->stamps(), following ? &*following : nullptr,
-                                    planes, bands.begin(band), bands.end(band, frame.height));
-                });
-            }
+            compositeList(batch, list, run.begin, run.end);
         }
     });
     statistics.addTime(sg::RenderPhase::Draw, secondsSince(start));

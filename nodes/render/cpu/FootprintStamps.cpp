@@ -26,25 +26,30 @@ float footprintAt(const FootprintSampler& sampler, const float (&squareFromPixel
 
 } // namespace
 
-bool FootprintStamps::suits(const FootprintSampler& sampler, const float (&halfExtent)[2]) {
-    // A stamp spans 2·halfExtent + 4 pixels at most (see the constructor).
-    const auto fits = [](float reach) { return 2.0f * reach + 4.0f <= kLargestSide; };
-    return sampler.isRadial && sampler.hasPieces && sampler.reach <= 1.0f &&
-           fits(halfExtent[0]) && fits(halfExtent[1]);
+bool StampGeometry::operator==(const StampGeometry& other) const {
+    return squareFromPixel[0][0] == other.squareFromPixel[0][0] &&
+           squareFromPixel[0][1] == other.squareFromPixel[0][1] &&
+           squareFromPixel[1][0] == other.squareFromPixel[1][0] &&
+           squareFromPixel[1][1] == other.squareFromPixel[1][1] &&
+           halfExtent[0] == other.halfExtent[0] && halfExtent[1] == other.halfExtent[1] &&
+           lengthScale == other.lengthScale;
 }
 
-FootprintStamps::FootprintStamps(const FootprintSampler& sampler,
-                                 const float (&squareFromPixel)[2][2],
-                                 const float (&halfExtent)[2], float lengthScale) {
-    // A centre q/kPhases (q <= kPhases) past the centre of pixel c0 reaches pixels c0 − reach …
-    // c0 + 1 + reach.
-    columnOffset = static_cast<int>(std::floor(-halfExtent[0]));
-    rowOffset = static_cast<int>(std::floor(-halfExtent[1]));
-    columns = static_cast<int>(std::ceil(1.0f + halfExtent[0])) - columnOffset + 1;
-    rows = static_cast<int>(std::ceil(1.0f + halfExtent[1])) - rowOffset + 1;
-    stride = (kPad + columns + kPad + 15) / 16 * 16;
-    stampSize = static_cast<std::size_t>(rows) * static_cast<std::size_t>(stride);
-    values.assign(stampSize * (kPhases + 1) * (kPhases + 1), 0.0f);
+bool FootprintStamps::suits(const FootprintSampler& sampler, const StampGeometry& geometry) {
+    // A stamp spans 2·halfExtent + 2 pixels at most (see the constructor).
+    const auto fits = [](float reach) { return 2.0f * reach + 2.0f <= kLargestSide; };
+    return sampler.isRadial && sampler.hasPieces && sampler.reach <= 1.0f &&
+           fits(geometry.halfExtent[0]) && fits(geometry.halfExtent[1]);
+}
+
+FootprintStamps::FootprintStamps(const FootprintSampler& sampler, const StampGeometry& geometry) {
+    const float(&squareFromPixel)[2][2] = geometry.squareFromPixel;
+    const float(&halfExtent)[2] = geometry.halfExtent;
+    const float lengthScale = geometry.lengthScale;
+    // A centre q/phases (0 <= q < phases) past the centre of pixel c0 reaches the centres of
+    // pixels c0 + ⌈q/phases − reach⌉ … c0 + ⌊q/phases + reach⌋.
+    columnOffset = static_cast<int>(std::ceil(-halfExtent[0]));
+    rowOffset = static_cast<int>(std::ceil(-halfExtent[1]));
     peak = sampler.peak * lengthScale;
     // The footprint with its centre (px, py) pixels past the centre of pixel (0, 0), at stamp
     // pixel (column, row).
@@ -52,54 +57,55 @@ FootprintStamps::FootprintStamps(const FootprintSampler& sampler,
         return footprintAt(sampler, squareFromPixel, lengthScale, column + columnOffset - px,
                            row + rowOffset - py);
     };
-    for (int qy = 0; qy <= kPhases; ++qy) {
-        for (int qx = 0; qx <= kPhases; ++qx) {
-            float* stamp = values.data() + static_cast<std::size_t>(phaseIndex(qx, qy)) * stampSize;
-            for (int row = 0; row < rows; ++row) {
-                for (int column = 0; column < columns; ++column) {
-                    stamp[static_cast<std::size_t>(row) * static_cast<std::size_t>(stride) +
-                          static_cast<std::size_t>(kPad + column)] =
-                        exact(static_cast<double>(qx) / kPhases, static_cast<double>(qy) / kPhases,
-                              column, row);
-                }
-            }
-        }
-    }
-    // The blend strays farthest midway between the stamps.
-    extents.resize(static_cast<std::size_t>(kPhases) * kPhases);
-    for (int qy = 0; qy < kPhases; ++qy) {
-        for (int qx = 0; qx < kPhases; ++qx) {
-            const std::int32_t phase = phaseIndex(qx, qy);
-            Extent& extent = extents[static_cast<std::size_t>(qy * kPhases + qx)];
-            extent = {columns, 0, rows, 0};
-            for (int row = 0; row < rows; ++row) {
-                for (int column = 0; column < columns; ++column) {
-                    if (at(phase, column, row) != 0.0f || at(phase + 1, column, row) != 0.0f ||
-                        at(phase + kPhases + 1, column, row) != 0.0f ||
-                        at(phase + kPhases + 2, column, row) != 0.0f) {
-                        extent.columnBegin = std::min(extent.columnBegin, column);
-                        extent.columnEnd = std::max(extent.columnEnd, column + 1);
-                        extent.rowBegin = std::min(extent.rowBegin, row);
-                        extent.rowEnd = std::max(extent.rowEnd, row + 1);
+    for (phaseBits = 4;; ++phaseBits) {
+        const int count = phases();
+        const double last = static_cast<double>(count - 1) / count;
+        const int reachedColumns =
+            static_cast<int>(std::floor(last + halfExtent[0])) - columnOffset + 1;
+        columns = (reachedColumns + kLanes - 1) / kLanes * kLanes;
+        rows = static_cast<int>(std::floor(last + halfExtent[1])) - rowOffset + 1;
+        stampSize = static_cast<std::size_t>(rows) * static_cast<std::size_t>(columns);
+        values.assign(stampSize * static_cast<std::size_t>(count * count), 0.0f);
+        extents.assign(static_cast<std::size_t>(count * count), Extent{columns, 0, rows, 0});
+        error = 0.0f;
+        // The centres a stamp stands for lie within half a phase of its own, along each axis:
+        // the footprint strays farthest from the stamp at the corners and edges of that square.
+        const double half = 0.5 / count;
+        constexpr double kAround[3] = {-1.0, 0.0, 1.0};
+        for (int qy = 0; qy < count; ++qy) {
+            for (int qx = 0; qx < count; ++qx) {
+                const std::int32_t phase = phaseIndex(qx, qy);
+                float* stamp = values.data() + static_cast<std::size_t>(phase) * stampSize;
+                Extent& extent = extents[static_cast<std::size_t>(phase)];
+                const double px = static_cast<double>(qx) / count;
+                const double py = static_cast<double>(qy) / count;
+                for (int row = 0; row < rows; ++row) {
+                    for (int column = 0; column < columns; ++column) {
+                        const float value = exact(px, py, column, row);
+                        stamp[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+                              static_cast<std::size_t>(column)] = value;
+                        if (value != 0.0f) {
+                            extent.columnBegin = std::min(extent.columnBegin, column);
+                            extent.columnEnd = std::max(extent.columnEnd, column + 1);
+                            extent.rowBegin = std::min(extent.rowBegin, row);
+                            extent.rowEnd = std::max(extent.rowEnd, row + 1);
+                        }
+                        for (const double dy : kAround) {
+                            for (const double dx : kAround) {
+                                error = std::max(
+                                    error, std::abs(value - exact(px + dx * half, py + dy * half,
+                                                                  column, row)));
+                            }
+                        }
                     }
-                    const float footprint = exact((qx + 0.5) / kPhases, (qy + 0.5) / kPhases,
-                                                  column, row);
-                    error = std::max(
-                        error, std::abs(blend(phase, 0.5f, 0.5f, column, row) - footprint));
                 }
             }
         }
+        const std::size_t doubled = values.size() * 4;
+        if (error <= kTolerance * peak || doubled > kLargestTable) {
+            return;
+        }
     }
-}
-
-float FootprintStamps::blend(std::int32_t phase, float fx, float fy, int column, int row) const {
-    const float s00 = at(phase, column, row);
-    const float s10 = at(phase + 1, column, row);
-    const float s01 = at(phase + kPhases + 1, column, row);
-    const float s11 = at(phase + kPhases + 2, column, row);
-    const float bottom = fx * (s10 - s00) + s00;
-    const float top = fx * (s11 - s01) + s01;
-    return fy * (top - bottom) + bottom;
 }
 
 } // namespace texsplat::render::cpu

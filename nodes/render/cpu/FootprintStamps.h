@@ -2,6 +2,7 @@
 
 #include "nodes/render/cpu/detail/CacheLineAllocator.h"
 
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
@@ -10,85 +11,129 @@ namespace texsplat::render::cpu {
 
 struct FootprintSampler;
 
+/// @brief How an orthographic view lays out a unit-size splat in pixels: what FootprintStamps
+/// are made for (and kept while it stays the same).
+struct StampGeometry {
+    float squareFromPixel[2][2]{}; ///< pixel offset (x, y) from the centre → the square's (a, b)
+    float halfExtent[2]{};         ///< pixels the footprint reaches from the centre, x and y
+    float lengthScale = 1.0f;      ///< footprint → line integral
+
+    /// @brief Whether every member is equal (floats compared exactly).
+    bool operator==(const StampGeometry& other) const;
+    bool operator!=(const StampGeometry& other) const { return !(*this == other); }
+};
+
 /// @brief The footprint of an orthographic batch's unit-size splats as pixel stamps, one per
-/// sub-pixel phase of the splat's centre.
+/// sub-pixel phase of the splat's centre: a splat takes the stamp of the phase nearest its
+/// centre and nothing else per pixel.
 ///
 /// Through an orthographic camera every splat of one size covers the same pixels alike, up to
 /// where its centre falls within a pixel: the footprint times the length scale is tabulated
-/// once per frame at every pixel of the box for kPhases × kPhases centre positions in a pixel
-/// (and the next pixel's first, so that neighbours always exist), and a splat's footprint is the
-/// bilinear blend of the four stamps around its centre's phase. That replaces the per-pixel map
-/// to the square, the square root and the register lookup of the cubic pieces by four loads and
-/// three multiply-adds. `error` is the blend's largest difference from the footprint it stands
-/// for, measured when made.
+/// once per batch at every pixel of the box for `phases()` × `phases()` centre positions in a
+/// pixel. A splat whose centre lies within half a phase of a stamp's draws that stamp, its
+/// footprint moved by at most 1/(2·phases()) of a pixel along each axis: one load per vector of
+/// pixels instead of the per-pixel map to the square, the square root and the cubic pieces.
+/// `error` is the largest difference between a stamp and the footprint of any centre it stands
+/// for, measured when made; the phases are doubled from kPhases until it is within kTolerance
+/// of the peak (narrow footprints bend more within a phase) or the table would outgrow
+/// kLargestTable.
+///
+/// A stamp is `rows` rows of `columns` floats, a whole number of kLanes, rows one after the
+/// other: one SIMD vector of 8 lanes holds a row, one of 16 (AVX-512) two rows of an 8-column
+/// stamp. A splat's row is composited at any column (unaligned), so each of its vectors is one
+/// load and one store per plane.
 ///
 /// Made only for a radial footprint with cubic pieces whose disc lies inside the square (the
-/// paper's kernel): there the footprint falls smoothly to 0 at its reach, and the blend follows
-/// it; where the square cuts the disc, or the footprint falls like a square root at its edge
-/// (the truncated Gaussian), the blend would smear an edge, and those splats keep the exact
-/// lookup.
+/// paper's kernel): there the footprint falls smoothly to 0 at its reach; where the square cuts
+/// the disc, or the footprint falls like a square root at its edge (the truncated Gaussian), a
+/// stamp would smear an edge, and those splats keep the exact lookup.
 struct FootprintStamps {
-    /// @brief Centre positions per pixel and axis (the stamps are 1/16 pixel apart).
+    /// @brief The fewest centre positions per pixel and axis (a power of two).
     static constexpr int kPhases = 16;
-    /// @brief The blend's error allowed, relative to the footprint's peak: larger and the
-    /// stamps are not used (a footprint narrower than a few pixels bends too much between
-    /// phases).
-    static constexpr double kTolerance = 1e-3;
+    /// @brief The error allowed relative to the footprint's peak before the phases are doubled.
+    static constexpr double kTolerance = 0.025;
+    /// @brief The largest table made when doubling the phases (floats).
+    static constexpr std::size_t kLargestTable = std::size_t{1} << 18;
+    /// @brief Stamp rows are whole multiples of this many floats.
+    static constexpr int kLanes = 8;
+    /// @brief The widest and tallest stamp made, in pixels: wider splats gain nothing from
+    /// stamps (the exact lookup's 16-lane vectors are as cheap per pixel there), and the table
+    /// grows with the square of the width (a zoomed view's splats may be thousands of pixels
+    /// wide). ColorPlanes::kPadding holds a row this wide starting left of the image.
+    static constexpr int kLargestSide = 32;
 
-    int columns = 0;       ///< pixels of a stamp's row
+    int phaseBits = 4;     ///< log2 of phases()
+    int columns = 0;       ///< floats of a stamp's row (a multiple of kLanes)
     int rows = 0;          ///< rows of a stamp
-    /// @brief Floats from one stamp row to the next: kPad zeros, the row's columns, zeros to a
-    /// whole cache line and at least kPad more, so that a vector of up to kPad lanes starting at
-    /// any column of the row within kPad before it reads inside the row.
-    int stride = 0;
-    static constexpr int kPad = 8;
     int columnOffset = 0;  ///< the stamp's first column relative to the pixel holding the centre
     int rowOffset = 0;     ///< the stamp's first row relative to the pixel holding the centre
-    std::size_t stampSize = 0; ///< floats per stamp: rows × stride
-    /// @brief (kPhases + 1)² stamps, phase y major: stamp (qx, qy) is the footprint (times the
-    /// length scale) of a splat whose centre lies qx/kPhases, qy/kPhases of a pixel past the
-    /// pixel's centre.
+    std::size_t stampSize = 0; ///< floats per stamp: rows × columns
+    /// @brief phases()² stamps, phase y major: stamp (qx, qy) is the footprint (times the length
+    /// scale) of a splat whose centre lies qx/phases(), qy/phases() of a pixel past the centre of
+    /// the pixel holding it.
     std::vector<float, detail::CacheLineAllocator<float>> values;
-    /// @brief The pixels a blend of the stamps of one phase cell can reach: stamp columns and
-    /// rows [begin, end) of the four stamps' values that are not 0.
+    /// @brief The pixels a stamp reaches: its rows and columns [begin, end) holding a value that
+    /// is not 0.
     struct Extent {
         std::int32_t columnBegin = 0, columnEnd = 0, rowBegin = 0, rowEnd = 0;
     };
-    /// @brief Per phase cell (qx, qy < kPhases, qy major) the Extent of its blends.
+    /// @brief Per stamp (phaseIndex()), its Extent.
     std::vector<Extent> extents;
-    float error = 0.0f; ///< the blend's largest |difference| from the footprint, times the scale
+    float error =
+        0.0f; ///< the largest |stamp − footprint| of a centre it stands for, times the scale
     float peak = 0.0f;  ///< the footprint's peak times the scale
 
-    /// @brief The widest and tallest stamp made, in pixels: wider splats gain nothing from
-    /// stamps (the exact lookup's 16-lane vectors are as cheap per pixel there), and the
-    /// table grows with the square of the width (289 stamps of 32² floats: 1.2 MiB; a zoomed
-    /// view's splats may be thousands of pixels wide).
-    static constexpr int kLargestSide = 32;
+    /// @brief Centre positions per pixel and axis.
+    int phases() const { return 1 << phaseBits; }
 
-    /// @brief Whether a batch with `sampler`, whose unit-size footprint reaches `halfExtent`
-    /// pixels from its centre, may be stamped (see above).
-    static bool suits(const FootprintSampler& sampler, const float (&halfExtent)[2]);
+    /// @brief Whether a batch with `sampler` seen with `geometry` may be stamped (see above).
+    static bool suits(const FootprintSampler& sampler, const StampGeometry& geometry);
 
-    /// @brief The stamps of unit-size splats whose pixel offset (x, y) from the centre maps to
-    /// the square's (a, b) = squareFromPixel · (x, y), whose footprint reaches at most
-    /// halfExtent pixels from the centre, and whose line integrals are `lengthScale` times the
-    /// footprint.
-    FootprintStamps(const FootprintSampler& sampler, const float (&squareFromPixel)[2][2],
-                    const float (&halfExtent)[2], float lengthScale);
+    /// @brief The stamps of `sampler`'s unit-size splats laid out by `geometry`.
+    FootprintStamps(const FootprintSampler& sampler, const StampGeometry& geometry);
 
     /// @brief The index of stamp (qx, qy).
-    static std::int32_t phaseIndex(int qx, int qy) { return qy * (kPhases + 1) + qx; }
+    std::int32_t phaseIndex(int qx, int qy) const { return (qy << phaseBits) + qx; }
 
     /// @brief Stamp `phase`'s value at (column, row) of the stamp.
     float at(std::int32_t phase, int column, int row) const {
         return values[static_cast<std::size_t>(phase) * stampSize +
-                      static_cast<std::size_t>(row) * static_cast<std::size_t>(stride) +
-                      static_cast<std::size_t>(kPad + column)];
+                      static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+                      static_cast<std::size_t>(column)];
     }
 
-    /// @brief The blend at (column, row) of a splat whose centre lies in phase `phase` plus
-    /// fractions (fx, fy) of a phase, as the SIMD loop computes it.
-    float blend(std::int32_t phase, float fx, float fy, int column, int row) const;
+    /// @brief Where a splat centred at pixel coordinates (x, y) (pixel c's centre at c + ½) is
+    /// stamped: the pixel of its stamp's first column and row, and the stamp.
+    struct Place {
+        std::int32_t column, row, phase;
+    };
+
+    /// @brief The Place of a splat centred at (`centreX`, `centreY`): the nearest phase, ⌊(x −
+    /// ½)·phases + ½⌋ (the product is exact, so every caller places a centre alike); false where
+    /// the centre is too far out for an int (|coordinate| ≥ 2^26 pixels), with `place`
+    /// unchanged.
+    bool place(double centreX, double centreY, Place& place) const {
+        return placeInPhases(std::floor((centreX - 0.5) * phases() + 0.5),
+                             std::floor((centreY - 0.5) * phases() + 0.5), place);
+    }
+
+    /// @brief place() of a centre already in phases: the nearest phase's whole numbers (x, y)
+    /// = ⌊(centre − ½)·phases + ½⌋.
+    bool placeInPhases(double nearestX, double nearestY, Place& place) const {
+        constexpr double kLimit = 1 << 30;
+        if (!(std::abs(nearestX) < kLimit && std::abs(nearestY) < kLimit)) {
+            return false;
+        }
+        const auto wholeX = static_cast<std::int32_t>(nearestX);
+        const auto wholeY = static_cast<std::int32_t>(nearestY);
+        const std::int32_t mask = phases() - 1;
+        // An arithmetic shift is a floor division by phases() (C++20 defines it; GCC, Clang
+        // and MSVC always have): the pixel holding the centre.
+        place.column = (wholeX >> phaseBits) + columnOffset;
+        place.row = (wholeY >> phaseBits) + rowOffset;
+        place.phase = phaseIndex(wholeX & mask, wholeY & mask);
+        return true;
+    }
 };
 
 } // namespace texsplat::render::cpu

@@ -179,24 +179,24 @@ SplatSetup::SplatSetup(const SplatView& view, float extent, int width, int heigh
         mIsAffine = false; // the projective set-up finds the degenerate square
         return;
     }
-    mSquareFromPixel[0][0] = p11 / determinant;
-    mSquareFromPixel[0][1] = -p01 / determinant;
-    mSquareFromPixel[1][0] = -p10 / determinant;
-    mSquareFromPixel[1][1] = p00 / determinant;
+    mUnit.squareFromPixel[0][0] = p11 / determinant;
+    mUnit.squareFromPixel[0][1] = -p01 / determinant;
+    mUnit.squareFromPixel[1][0] = -p10 / determinant;
+    mUnit.squareFromPixel[1][1] = p00 / determinant;
     // The square's box, or the box of the ellipse the footprint's disc projects to where that
     // is smaller (ProjectiveRows::discRadius).
-    mHalfExtent[0] = std::abs(p00) + std::abs(p01);
-    mHalfExtent[1] = std::abs(p10) + std::abs(p11);
+    mUnit.halfExtent[0] = std::abs(p00) + std::abs(p01);
+    mUnit.halfExtent[1] = std::abs(p10) + std::abs(p11);
     if (discRadius > 0.0f) {
-        mHalfExtent[0] = std::min(mHalfExtent[0], discRadius * std::hypot(p00, p01));
-        mHalfExtent[1] = std::min(mHalfExtent[1], discRadius * std::hypot(p10, p11));
+        mUnit.halfExtent[0] = std::min(mUnit.halfExtent[0], discRadius * std::hypot(p00, p01));
+        mUnit.halfExtent[1] = std::min(mUnit.halfExtent[1], discRadius * std::hypot(p10, p11));
     }
     for (int axis = 0; axis < 2; ++axis) {
         mDepthGradient[axis] =
-            cu.z * mSquareFromPixel[0][axis] + cv.z * mSquareFromPixel[1][axis];
+            cu.z * mUnit.squareFromPixel[0][axis] + cv.z * mUnit.squareFromPixel[1][axis];
     }
     mDepthReach = std::abs(cu.z) + std::abs(cv.z);
-    mLengthScale = 1.0f / frame.eLength;
+    mUnit.lengthScale = 1.0f / frame.eLength;
 }
 
 void SplatSetup::setUp(const octree::Splat* splats, std::size_t count, SplatRaster* out) const {
@@ -212,38 +212,35 @@ void SplatSetup::setUp(const octree::Splat* splats, std::size_t count, SplatRast
 SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
     // The centre's pixel and depth, by the rows of pixelFromLocal (W = 1 in an affine view),
     // written out: glm's mat4 × vec4 stayed a call at -O2, a fifth of the set-up's time.
-    const auto apply = [&](const float (&row)[4]) {
-        return row[0] * splat.position.x + row[1] * splat.position.y +
-               row[2] * splat.position.z + row[3];
-    };
-    const float centreX = apply(mRows.pixelFromLocal[0]);
-    const float centreY = apply(mRows.pixelFromLocal[1]);
-    const float z = apply(mRows.pixelFromLocal[3]);
-    const float size = splat.size;
-    if (z - size * mDepthReach > 1.0f || z + size * mDepthReach < -1.0f) {
+    const Centre centre = centreOf(splat.position);
+    const double size = splat.size;
+    if (centre.z - size * mDepthReach > 1.0 || centre.z + size * mDepthReach < -1.0) {
         return {};
     }
-    const bool crossesPlanes = z - size * mDepthReach < -1.0f || z + size * mDepthReach > 1.0f;
+    const bool crossesPlanes =
+        centre.z - size * mDepthReach < -1.0 || centre.z + size * mDepthReach > 1.0;
     SplatRaster raster{};
     raster.flags = crossesPlanes ? SplatRaster::kClipped : 0;
-    if (!(mStamps && size == 1.0f && !crossesPlanes && stamp(raster, centreX, centreY))) {
-        const float reachX = size * mHalfExtent[0];
-        const float reachY = size * mHalfExtent[1];
-        raster.columnBegin = toPixel(std::floor(centreX - reachX), 0, mRows.width);
-        raster.columnEnd = toPixel(std::ceil(centreX + reachX) + 1.0, 0, mRows.width);
-        raster.rowBegin = toPixel(std::floor(centreY - reachY), 0, mRows.height);
-        raster.rowEnd = toPixel(std::ceil(centreY + reachY) + 1.0, 0, mRows.height);
+    if (!(mStamps && size == 1.0 && !crossesPlanes && stamp(raster, centre))) {
+        const double reachX = size * mUnit.halfExtent[0];
+        const double reachY = size * mUnit.halfExtent[1];
+        raster.columnBegin = toPixel(std::floor(centre.x - reachX), 0, mRows.width);
+        raster.columnEnd = toPixel(std::ceil(centre.x + reachX) + 1.0, 0, mRows.width);
+        raster.rowBegin = toPixel(std::floor(centre.y - reachY), 0, mRows.height);
+        raster.rowEnd = toPixel(std::ceil(centre.y + reachY) + 1.0, 0, mRows.height);
     }
     if (raster.isEmpty()) {
         return {};
     }
     // (a, b) at pixel centre (x + ½, y + ½): S⁻¹/size · (x + ½ − centreX, y + ½ − centreY).
-    const float dx = 0.5f - centreX;
-    const float dy = 0.5f - centreY;
+    const auto dx = static_cast<float>(0.5 - centre.x);
+    const auto dy = static_cast<float>(0.5 - centre.y);
     for (int row = 0; row < 2; ++row) {
         // Most splats are voxels (size 1): no division, whose latency the set-up waited on.
-        const float sx = size == 1.0f ? mSquareFromPixel[row][0] : mSquareFromPixel[row][0] / size;
-        const float sy = size == 1.0f ? mSquareFromPixel[row][1] : mSquareFromPixel[row][1] / size;
+        const float sx = size == 1.0 ? mUnit.squareFromPixel[row][0]
+                                     : mUnit.squareFromPixel[row][0] / splat.size;
+        const float sy = size == 1.0 ? mUnit.squareFromPixel[row][1]
+                                     : mUnit.squareFromPixel[row][1] / splat.size;
         raster.square[3 * row] = sx;
         raster.square[3 * row + 1] = sy;
         raster.square[3 * row + 2] = sx * dx + sy * dy;
@@ -251,55 +248,42 @@ SplatRaster SplatSetup::orthographic(const octree::Splat& splat) const {
     raster.square[8] = 1.0f;
     raster.depth[0] = mDepthGradient[0];
     raster.depth[1] = mDepthGradient[1];
-    raster.depth[2] = z + mDepthGradient[0] * dx + mDepthGradient[1] * dy;
+    raster.depth[2] =
+        static_cast<float>(centre.z) + mDepthGradient[0] * dx + mDepthGradient[1] * dy;
     raster.color[0] = splat.color.r;
     raster.color[1] = splat.color.g;
     raster.color[2] = splat.color.b;
     raster.extinction = splat.extinction;
-    raster.lengthScale = size * mLengthScale;
+    raster.lengthScale = splat.size * mUnit.lengthScale;
     return raster;
 }
 
-const FootprintStamps* SplatSetup::stampFootprint(const FootprintSampler& sampler) {
-    mStamps.reset();
-    if (mIsAffine && FootprintStamps::suits(sampler, mHalfExtent)) {
-        auto stamps = std::make_unique<const FootprintStamps>(sampler, mSquareFromPixel,
-                                                              mHalfExtent, mLengthScale);
-        if (stamps->error <= FootprintStamps::kTolerance * stamps->peak) {
-            mStamps = std::move(stamps);
-        }
+std::shared_ptr<const FootprintStamps>
+SplatSetup::stampsFor(const FootprintSampler& sampler) const {
+    if (!mIsAffine || !FootprintStamps::suits(sampler, mUnit)) {
+        return nullptr;
     }
-    return mStamps.get();
+    auto stamps = std::make_shared<const FootprintStamps>(sampler, mUnit);
+    if (!(stamps->error <= FootprintStamps::kTolerance * stamps->peak)) {
+        return nullptr;
+    }
+    return stamps;
 }
 
-bool SplatSetup::stamp(SplatRaster& raster, float centreX, float centreY) const {
-    // The centre's continuous pixel coordinate (pixel c's centre at c) in phases, exact in
-    // float while it is below 2^20 pixels (then so are c − ½, the product by 16 and the floor).
-    constexpr int kPhases = FootprintStamps::kPhases;
-    const float inPhasesX = (centreX - 0.5f) * kPhases;
-    const float inPhasesY = (centreY - 0.5f) * kPhases;
-    const float phaseX = std::floor(inPhasesX);
-    const float phaseY = std::floor(inPhasesY);
-    constexpr float kLimit = 1 << 24;
-    if (!(std::abs(phaseX) < kLimit && std::abs(phaseY) < kLimit)) {
+bool SplatSetup::stamp(SplatRaster& raster, const Centre& centre) const {
+    FootprintStamps::Place place;
+    if (!mStamps->place(centre.x, centre.y, place)) {
         return false;
     }
-    const auto wholeX = static_cast<std::int32_t>(phaseX);
-    const auto wholeY = static_cast<std::int32_t>(phaseY);
-    const std::int32_t qx = wholeX & (kPhases - 1);
-    const std::int32_t qy = wholeY & (kPhases - 1);
-    raster.stampColumn = (wholeX - qx) / kPhases + mStamps->columnOffset;
-    raster.stampRow = (wholeY - qy) / kPhases + mStamps->rowOffset;
-    raster.stampPhase = FootprintStamps::phaseIndex(qx, qy);
-    raster.stampFraction[0] = inPhasesX - phaseX;
-    raster.stampFraction[1] = inPhasesY - phaseY;
-    // The pixels the blends of this phase cell reach.
-    const FootprintStamps::Extent& reach =
-        mStamps->extents[static_cast<std::size_t>(qy * kPhases + qx)];
-    raster.columnBegin = std::clamp(raster.stampColumn + reach.columnBegin, 0, mRows.width);
-    raster.columnEnd = std::clamp(raster.stampColumn + reach.columnEnd, 0, mRows.width);
-    raster.rowBegin = std::clamp(raster.stampRow + reach.rowBegin, 0, mRows.height);
-    raster.rowEnd = std::clamp(raster.stampRow + reach.rowEnd, 0, mRows.height);
+    raster.stampColumn = place.column;
+    raster.stampRow = place.row;
+    raster.stampPhase = place.phase;
+    // The pixels the stamp reaches.
+    const FootprintStamps::Extent& reach = mStamps->extents[static_cast<std::size_t>(place.phase)];
+    raster.columnBegin = std::clamp(place.column + reach.columnBegin, 0, mRows.width);
+    raster.columnEnd = std::clamp(place.column + reach.columnEnd, 0, mRows.width);
+    raster.rowBegin = std::clamp(place.row + reach.rowBegin, 0, mRows.height);
+    raster.rowEnd = std::clamp(place.row + reach.rowEnd, 0, mRows.height);
     raster.flags |= SplatRaster::kStamped;
     return true;
 }

@@ -4,6 +4,8 @@
 #include "nodes/render/SplatView.h"
 #include "nodes/render/cpu/FootprintStamps.h"
 
+#include <glm/vec3.hpp>
+
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -85,11 +87,10 @@ struct SplatRaster {
     std::int32_t columnBegin, columnEnd; ///< pixels [begin, end) the square may cover
     std::int32_t rowBegin, rowEnd;       ///< rows [begin, end), top row first
     std::int32_t flags;                  ///< kProjective | kClipped | kStamped
-    // Stamped splats only (kStamped, see FootprintStamps): the pixel of the stamps' first column
-    // and row, the stamp below the centre's phase and the fractions of a phase past it.
+    // Stamped splats only (kStamped, see FootprintStamps): the pixel of the stamp's first column
+    // and row, and the stamp of the centre's nearest phase.
     std::int32_t stampColumn, stampRow;
     std::int32_t stampPhase;
-    float stampFraction[2];
 
     static constexpr std::int32_t kProjective = 1; ///< w′ varies over the pixels
     static constexpr std::int32_t kClipped = 2; ///< crosses the near or far plane: clip per pixel
@@ -142,31 +143,77 @@ public:
 
     /// @brief For an orthographic view of scalar splats whose footprint `sampler` suits stamps
     /// (FootprintStamps::suits(): the paper's kernel, splats at most kLargestSide pixels
-    /// wide), tabulates it per sub-pixel phase: unit-size splats that do
-    /// not cross the near or far plane are then set up as stamped. Returns the stamps, or null
-    /// where they do not apply or would stray from the footprint by more than
-    /// FootprintStamps::kTolerance of its peak.
-    const FootprintStamps* stampFootprint(const FootprintSampler& sampler);
+    /// wide), `stamps` is its footprint tabulated per sub-pixel phase (made for this view:
+    /// stampsFor()): unit-size splats that do not cross the near or far plane are then set up
+    /// as stamped. Null: none are.
+    void setStamps(std::shared_ptr<const FootprintStamps> stamps) { mStamps = std::move(stamps); }
 
-    /// @brief The stamps of stampFootprint(), or null.
+    /// @brief The stamps of `sampler` for this view, or null where they do not apply
+    /// (FootprintStamps::suits()) or stray from the footprint by more than
+    /// FootprintStamps::kTolerance of its peak at the most phases made.
+    std::shared_ptr<const FootprintStamps> stampsFor(const FootprintSampler& sampler) const;
+
+    /// @brief Whether the view maps every splat alike (orthographic, affine): then
+    /// stampGeometry() says how.
+    bool isAffine() const { return mIsAffine; }
+
+    /// @brief How a unit-size splat lies in pixels (isAffine() only).
+    const StampGeometry& stampGeometry() const { return mUnit; }
+
+    /// @brief The stamps of setStamps(), or null.
     const FootprintStamps* stamps() const { return mStamps.get(); }
 
-private:
+    /// @brief One splat of an affine view (isAffine()) set up, as setUp() sets it up: an empty
+    /// raster where it covers no pixel or lies wholly outside the near/far planes.
     SplatRaster orthographic(const octree::Splat& splat) const;
-    // Sets `raster` (of a unit-size splat centred at pixel coordinates (centreX, centreY)) up
-    // as stamped; false (nothing changed) where the centre is too far out for an int.
-    bool stamp(SplatRaster& raster, float centreX, float centreY) const;
+
+    /// @brief Where a splat's centre lies: pixel coordinates x, y (pixel c's centre at c + ½)
+    /// and window depth z_ndc.
+    struct Centre {
+        double x, y, z;
+    };
+
+    /// @brief The Centre of a splat at `position` (local space) in an affine view (isAffine()),
+    /// each coordinate the sum ((c + r_z·p_z) + r_y·p_y) + r_x·p_x over its row of
+    /// pixelFromLocal, in double and in this order. Its products are exact (floats), so only the
+    /// order of the sums decides the bits: a voxel's splat placed without a list (VoxelRaster,
+    /// which sums a row of voxels' common terms once) lands exactly where the list's splat of it
+    /// does, on the same stamp.
+    Centre centreOf(const glm::vec3& position) const {
+        const auto sum = [&](const float(&row)[4]) {
+            return (double(row[3]) + double(row[2]) * double(position.z) +
+                    double(row[1]) * double(position.y)) +
+                   double(row[0]) * double(position.x);
+        };
+        return {sum(mRows.pixelFromLocal[0]), sum(mRows.pixelFromLocal[1]),
+                sum(mRows.pixelFromLocal[3])};
+    }
+
+    /// @brief How far z_ndc reaches from a unit-size splat's centre over its square (isAffine()):
+    /// orthographic() leaves a splat out that lies wholly outside [−1, 1] by it, and does not
+    /// stamp one that crosses ±1.
+    float depthReach() const { return mDepthReach; }
+
+    /// @brief How z_ndc changes per pixel along x and y over a splat's square (isAffine()).
+    float depthGradient(int axis) const { return mDepthGradient[axis]; }
+
+    /// @brief What the set-up knows of the view.
+    const ProjectiveRows& rows() const { return mRows; }
+
+private:
+    // Sets `raster` (of a unit-size splat centred at `centre`) up as stamped; false (nothing
+    // changed) where the centre is too far out for an int.
+    bool stamp(SplatRaster& raster, const Centre& centre) const;
 
     SplatView mView;
     ProjectiveRows mRows;
-    // Orthographic views: the square at size 1 and the centre's pixel.
+    // Orthographic views: the square at size 1 (its map from pixels, its box and length scale)
+    // and its depth.
     bool mIsAffine = false;
-    float mSquareFromPixel[2][2]{}; // pixel offset → unit a, b
-    float mHalfExtent[2]{};         // pixels the square reaches from its centre, x and y
+    StampGeometry mUnit;
     float mDepthGradient[2]{};      // z_ndc per pixel, x and y
     float mDepthReach = 0.0f;       // |z_ndc| the square reaches from its centre
-    float mLengthScale = 1.0f;      // lengthScale at size 1
-    std::unique_ptr<const FootprintStamps> mStamps;
+    std::shared_ptr<const FootprintStamps> mStamps;
 };
 
 } // namespace texsplat::render::cpu

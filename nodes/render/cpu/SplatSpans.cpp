@@ -7,7 +7,9 @@
 #include <hwy/highway.h>
 
 #include "nodes/render/cpu/MarkSpans-inl.h"
+#include "nodes/render/cpu/MediumSpans-inl.h"
 #include "nodes/render/cpu/SplatSpans.h"
+#include "nodes/render/cpu/StampSpans-inl.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -82,42 +84,6 @@ HWY_INLINE V Footprint(D d, const FootprintSampler& sampler, V a, V b) {
             sampler.values.data());
     }
 }
-
-// φ(x) = (1 − e^(−x))/x = Σ (−x)^k/(k+1)!, k ≤ 8: below 1.2e-8 for 0 ≤ x ≤ ½. Estrin's
-// scheme: four dependent multiply-adds instead of Horner's eight (the compositing's longest
-// chain; 1.4× on thin splats, CpuRasterizerBenchmark). The terms from x² on take x no smaller
-// than 1e-4, where they add below 2e-9, so that no power of a tiny x is a denormal: on x86 a
-// denormal result costs a micro-code assist, which made a plain Estrin slower than Horner.
-template <class D, class V> HWY_INLINE V PhiSeries(D d, V x) {
-    const V clamped = hn::Max(x, hn::Set(d, 1e-4f));
-    const auto term = [&](V at, float high, float low) {
-        return hn::MulAdd(hn::Set(d, high), at, hn::Set(d, low));
-    };
-    const V x2 = hn::Mul(clamped, clamped);
-    const V x4 = hn::Mul(x2, x2);
-    const V low = hn::MulAdd(term(clamped, -1.0f / 24.0f, 1.0f / 6.0f), x2, term(x, -0.5f, 1.0f));
-    const V high = hn::MulAdd(term(clamped, -1.0f / 40320.0f, 1.0f / 5040.0f), x2,
-                              term(clamped, -1.0f / 720.0f, 1.0f / 120.0f));
-    const V highest = hn::MulAdd(hn::Set(d, 1.0f / 362880.0f), x4, high);
-    return hn::MulAdd(highest, x4, low);
-}
-
-// φ(x) for 0 ≤ x ≤ kShortSeriesDepth: the series to k = 4, below 1.4e-8 there (the first term
-// left out, x⁵/720), as close as PhiSeries. Horner's rule, four multiply-adds against
-// PhiSeries' eleven operations: every intermediate is near a coefficient, so a tiny x makes no
-// denormal. Most splats of a volume are this thin (Marschner–Lobb 128³: all of them).
-constexpr float kShortSeriesDepth = 0.1f;
-template <class D, class V> HWY_INLINE V PhiShortSeries(D d, V x) {
-    const V q = hn::MulAdd(hn::MulAdd(hn::MulAdd(hn::Set(d, 1.0f / 120.0f), x,
-                                                 hn::Set(d, -1.0f / 24.0f)),
-                                      x, hn::Set(d, 1.0f / 6.0f)),
-                           x, hn::Set(d, -0.5f));
-    return hn::MulAdd(q, x, hn::Set(d, 1.0f));
-}
-
-// How a splat's opacity α = 1 − e^(−x) and colour weight f·φ(x) are computed, from the largest
-// optical depth x its footprint reaches: a short or a long series of φ, or Expm1.
-enum class Depth { Short, Series, Expm1 };
 
 // The radial footprint at ρ = a² + b² from the sampler's cubic pieces in r = √ρ, looked up in
 // registers: each coefficient's 16 values fill 16 / lanes vectors, one permute each and a
@@ -197,11 +163,6 @@ template <class D, class V> HWY_INLINE V ReciprocalEstimate(D /*d*/, V w) {
 // What a batch's footprint is: a radial profile, radial cubic pieces or a texture.
 enum class Kind { Radial, RadialPieces, Texture };
 
-// A colour below this (per unit of footprint) can be added to any pixel without a clamp: the
-// sum of it and a pixel no larger than FLT_MAX rounds to at most FLT_MAX, whose half ulp
-// (1e31) it stays below, so min(…, FLT_MAX) would change nothing.
-constexpr float kUnclampedColour = 1e29f;
-
 // What every splat of a batch shares.
 template <class D> struct Batch {
     D d;
@@ -211,51 +172,6 @@ template <class D> struct Batch {
     bool squareTest; // the square's edges cut the footprint (else its reach lies inside)
     std::optional<PieceLookup<D>> pieces;
     const FootprintStamps* stamps; // for the kStamped splats
-};
-
-template <bool kClamp, class D, class V> HWY_INLINE V Clamp(D d, V value) {
-    if constexpr (kClamp) {
-        return hn::Min(value, hn::Set(d, FLT_MAX));
-    } else {
-        return value;
-    }
-}
-
-// dst = source + transmitted · dst on `plane` at `column` (clamped with kClamp).
-template <bool kClamp, class D, class V>
-HWY_INLINE void Over(D d, float* plane, int column, V transmitted, V source) {
-    const V destination = hn::LoadU(d, plane + column);
-    hn::StoreU(Clamp<kClamp>(d, hn::MulAdd(transmitted, destination, source)), d, plane + column);
-}
-
-// A splat's medium in vectors: its emission C, extinction τ and 1/τ.
-template <class D> struct Medium {
-    using V = hn::Vec<D>;
-    V red, green, blue, tau, inverseTau;
-    // C·f·φ(τf) = C·α/τ; below 1e-30 the medium is pure emission, C·f (φ = 1 − τf/2 + …).
-    bool absorbs;
-
-    Medium(D d, const SplatRaster& splat)
-        : red(hn::Set(d, splat.color[0])), green(hn::Set(d, splat.color[1])),
-          blue(hn::Set(d, splat.color[2])), tau(hn::Set(d, splat.extinction)),
-          inverseTau(hn::Set(d, splat.extinction > 1e-30f ? 1.0f / splat.extinction : 0.0f)),
-          absorbs(splat.extinction > 1e-30f) {}
-
-    // α = 1 − e^(−τf) and the colour weight f·φ(τf) = α/τ of footprint f (times the length
-    // scale), by φ's series as far as kDepth allows, else Expm1 (weight f where the medium does
-    // not absorb).
-    template <Depth kDepth> HWY_INLINE void attenuate(D d, V f, V& alpha, V& weight) const {
-        const V opticalDepth = hn::Mul(tau, f);
-        if constexpr (kDepth != Depth::Expm1) {
-            const V phi = kDepth == Depth::Short ? PhiShortSeries(d, opticalDepth)
-                                                 : PhiSeries(d, opticalDepth);
-            alpha = hn::Mul(opticalDepth, phi);
-            weight = hn::Mul(f, phi);
-        } else {
-            alpha = hn::Neg(hn::Expm1(d, hn::Neg(opticalDepth)));
-            weight = absorbs ? hn::Mul(alpha, inverseTau) : f;
-        }
-    }
 };
 
 // Composites rows [first, last) of one splat; with kClamp, every sum is clamped to FLT_MAX
@@ -273,7 +189,7 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
     ColorPlanes& planes = batch.planes;
     const bool projective = (splat.flags & SplatRaster::kProjective) != 0;
     const bool clipped = (splat.flags & SplatRaster::kClipped) != 0;
-    const Medium<D> medium(d, splat);
+    const Medium<D> medium(d, splat.color, splat.extinction);
     const auto lengthScale = hn::Set(d, splat.lengthScale);
     const auto reach = hn::Set(d, sampler != nullptr ? sampler->reach : 2.0f);
     const auto ax = hn::Set(d, splat.square[0]);
@@ -361,84 +277,48 @@ HWY_INLINE void CompositeSplat(const Batch<D>& batch, const SplatRaster& splat, 
 }
 
 // Composites rows [first, last) of a stamped splat (SplatRaster::kStamped): its footprint is
-// the bilinear blend of the four stamps around its centre's phase, nothing else per pixel but
-// the depth test; pixels the footprint does not reach get α = 0 and keep their value.
+// the stamp of its centre's nearest phase, nothing else per pixel but the depth test; pixels the
+// footprint does not reach get α = 0 and keep their value (CompositeStamp()).
 template <bool kClamp, Depth kDepth, class D>
 HWY_INLINE void CompositeStampedSplat(const Batch<D>& batch, const SplatRaster& splat, int first,
                                       int last) {
-    const D d = batch.d;
-    const int lanes = static_cast<int>(hn::Lanes(d));
+    const StampTag d;
     const FootprintStamps& stamps = *batch.stamps;
     ColorPlanes& planes = batch.planes;
-    const auto one = hn::Set(d, 1.0f);
-    const Medium<D> medium(d, splat);
-    const auto fx = hn::Set(d, splat.stampFraction[0]);
-    const auto fy = hn::Set(d, splat.stampFraction[1]);
-    const auto zx = hn::Set(d, splat.depth[0]);
-    // Vectors at columns that are multiples of their width (rows start on a cache line).
-    const int columnBegin = splat.columnBegin / lanes * lanes;
-    const auto firstX = hn::Add(hn::Set(d, static_cast<float>(columnBegin)), hn::Iota(d, 0.0f));
-    const std::size_t nextX = stamps.stampSize;
-    const std::size_t nextY = (FootprintStamps::kPhases + 1) * stamps.stampSize;
-    const float* phase =
-        stamps.values.data() + static_cast<std::size_t>(splat.stampPhase) * stamps.stampSize +
-        static_cast<std::size_t>(FootprintStamps::kPad + columnBegin - splat.stampColumn);
-    for (int row = first; row < last; ++row) {
-        const float* s00 =
-            phase + static_cast<std::size_t>(row - splat.stampRow) * stamps.stride;
-        float* redRow = planes.red(row);
-        float* greenRow = planes.green(row);
-        float* blueRow = planes.blue(row);
-        float* alphaRow = planes.alpha(row);
-        const float* depthRow = batch.depthTest ? planes.depth(row) : nullptr;
-        const auto z0 = hn::Set(d, splat.depth[1] * static_cast<float>(row) + splat.depth[2]);
-        auto x = firstX;
-        for (int column = columnBegin, offset = 0; column < splat.columnEnd;
-             column += lanes, offset += lanes, x = hn::Add(x, hn::Set(d, lanes))) {
-            const auto v00 = hn::LoadU(d, s00 + offset);
-            const auto v10 = hn::LoadU(d, s00 + nextX + offset);
-            const auto v01 = hn::LoadU(d, s00 + nextY + offset);
-            const auto v11 = hn::LoadU(d, s00 + nextY + nextX + offset);
-            const auto bottom = hn::MulAdd(fx, hn::Sub(v10, v00), v00);
-            const auto top = hn::MulAdd(fx, hn::Sub(v11, v01), v01);
-            auto f = hn::MulAdd(fy, hn::Sub(top, bottom), bottom);
-            if (batch.depthTest) {
-                const auto window =
-                    hn::MulAdd(hn::MulAdd(zx, x, z0), hn::Set(d, 0.5f), hn::Set(d, 0.5f));
-                f = hn::IfThenElseZero(hn::Lt(window, hn::LoadU(d, depthRow + column)), f);
-            }
-            hn::Vec<D> alpha;
-            hn::Vec<D> weight;
-            medium.template attenuate<kDepth>(d, f, alpha, weight);
-            const auto transmitted = hn::Sub(one, alpha);
-            Over<kClamp>(d, redRow, column, transmitted,
-                         Clamp<kClamp>(d, hn::Mul(medium.red, weight)));
-            Over<kClamp>(d, greenRow, column, transmitted,
-                         Clamp<kClamp>(d, hn::Mul(medium.green, weight)));
-            Over<kClamp>(d, blueRow, column, transmitted,
-                         Clamp<kClamp>(d, hn::Mul(medium.blue, weight)));
-            Over<kClamp>(d, alphaRow, column, transmitted, alpha);
-        }
+    const StampRows rows{stamps.values.data() +
+                             static_cast<std::size_t>(splat.stampPhase) * stamps.stampSize +
+                             static_cast<std::size_t>(first - splat.stampRow) *
+                                 static_cast<std::size_t>(stamps.columns),
+                         planes.red(first) + splat.stampColumn,
+                         planes.planeStride(),
+                         planes.stride(),
+                         stamps.columns,
+                         last - first};
+    if (!batch.depthTest && IsThin(splat.color, splat.extinction, stamps.peak)) {
+        CompositeThinStamp(d, rows, ThinMedium<StampTag>(d, splat.color, splat.extinction));
+        return;
     }
+    const StampDepth depth{splat.depth, splat.stampColumn, first};
+    CompositeStamp<kClamp, kDepth>(d, rows, Medium<StampTag>(d, splat.color, splat.extinction),
+                                   batch.depthTest ? &depth : nullptr);
 }
 
-// Whether no colour `splat` adds reaches kUnclampedColour (nor is NaN): its medium is finite
-// and its colour times the largest footprint stays below it.
-bool isUnclamped(const SplatRaster& splat, const FootprintSampler& sampler) {
-    const float largest = std::max({std::abs(splat.color[0]), std::abs(splat.color[1]),
-                                    std::abs(splat.color[2])});
-    return largest * sampler.peak * splat.lengthScale <= kUnclampedColour &&
-           splat.extinction >= 0.0f && splat.extinction <= FLT_MAX;
+// Whether no colour `splat` adds reaches kUnclampedColour (IsUnclamped()).
+bool isUnclamped(const SplatRaster& splat, const FootprintSampler& sampler,
+                 const FootprintStamps* stamps) {
+    const bool stamped = (splat.flags & SplatRaster::kStamped) != 0;
+    return IsUnclamped(splat.color, splat.extinction,
+                       stamped ? stamps->peak : sampler.peak * splat.lengthScale);
 }
 
-// How α and the colour weight of `splat` are computed: the series of φ as far as its largest
-// optical depth allows them (thin splats), else Expm1.
-Depth depthOf(const SplatRaster& splat, const FootprintSampler* sampler) {
-    const float largest =
-        sampler != nullptr ? splat.extinction * splat.lengthScale * sampler->peak : HUGE_VALF;
-    return largest <= kShortSeriesDepth ? Depth::Short
-           : largest <= 0.5f            ? Depth::Series
-                                        : Depth::Expm1;
+// How α and the colour weight of `splat` are computed (DepthOf()).
+Depth depthOf(const SplatRaster& splat, const FootprintSampler* sampler,
+              const FootprintStamps* stamps) {
+    if ((splat.flags & SplatRaster::kStamped) != 0) {
+        return DepthOf(splat.extinction * stamps->peak);
+    }
+    return DepthOf(sampler != nullptr ? splat.extinction * splat.lengthScale * sampler->peak
+                                      : HUGE_VALF);
 }
 
 // Composites one splat with the instantiation its clamps and optical depth call for.
@@ -455,7 +335,7 @@ HWY_INLINE void CompositeSplatAtDepth(const Batch<D>& batch, const SplatRaster& 
         }
         CompositeSplat<kKind, kClamp, kDepth>(batch, splat, first, last);
     };
-    switch (depthOf(splat, batch.sampler)) {
+    switch (depthOf(splat, batch.sampler, batch.stamps)) {
     case Depth::Short:
         at(std::integral_constant<Depth, Depth::Short>{});
         break;
@@ -496,7 +376,7 @@ void CompositeSplatsWith(const SplatRaster* splats, const RowSpan* rows, std::si
         if (first < last) {
             const SplatRaster& splat = splats[i];
             // Clamps only where they change something (seven of a pixel's operations).
-            const bool clamp = !isUnclamped(splat, *sampler);
+            const bool clamp = !isUnclamped(splat, *sampler, stamps);
             const auto composite = [&](const auto& batch) {
                 if (clamp) {
                     CompositeSplatAtDepth<kKind, true>(batch, splat, first, last);

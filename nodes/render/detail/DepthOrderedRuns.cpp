@@ -9,7 +9,7 @@ namespace texsplat::render::detail {
 
 std::vector<SplatRun> frameRuns(const Frame& frame, sg::RenderStatistics& statistics) {
     if (frame.splats.size() == 1) {
-        return {{0, 0, frame.splats.front().splats->size()}};
+        return {{0, 0, frame.splats.front().splatCount()}};
     }
     const sg::TimingClock::time_point start = sg::TimingClock::now();
     std::vector<std::vector<float>> depths;

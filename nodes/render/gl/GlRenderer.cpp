@@ -140,6 +140,10 @@ GlRenderer::Prepared GlRenderer::prepare(const Frame& frame, sg::RenderStatistic
     for (const FrameSplats& splats : frame.splats) {
         SplatBatch& batch = mBatches->batch(splats.footprint, context);
         statistics.memory.textures += batch.textureBytes();
+        if (splats.voxels) {
+            // GL draws a list: a batch of voxels is listed here (the CPU backend walks them).
+            statistics.memory.splats += splats.list()->memoryBytes();
+        }
         prepared.batches.push_back(&batch);
     }
     statistics.builds.splatBatches += mBatches->made() - madeBefore;
@@ -208,9 +212,9 @@ void GlRenderer::drawPasses(const Frame& frame, Prepared& prepared, const Tile* 
                     upload += secondsSince(uploadStart);
                     uploaded = &splats;
                 }
-            } else if (!batch.isUploaded(splats.splats)) {
+            } else if (!batch.isUploaded(splats.list())) {
                 const Clock::time_point uploadStart = Clock::now();
-                batch.upload(splats.splats);
+                batch.upload(splats.list());
                 upload += secondsSince(uploadStart);
             }
             SplatView view = splats.view;
