@@ -28,3 +28,22 @@ def test_png_files_and_notebooks(tmp_path, volume):
     with pytest.raises(ValueError, match="colorbar_position: "):
         image.save(str(tmp_path / "x.png"), colorbar=True, colorbar_position="middle")
     assert repr(image) == "<texsplat.Image 40x30>"
+
+
+def test_the_colour_bar_says_what_the_values_are(tmp_path, volume):
+    def bar(name, data=volume, **labels):
+        texsplat.render(data, size=(40, 30), **labels).save(str(tmp_path / name), colorbar=True)
+        return (tmp_path / name).read_bytes()
+
+    untitled = bar("untitled.png")
+    titled = bar("titled.png", title="Density", units="g/cm³")
+    assert titled != untitled and bar("again.png", title="Density", units="g/cm³") == titled
+    with pytest.raises(TypeError, match="^title: expected a string, got 3"):
+        texsplat.render(volume, title=3)
+    # An xarray's long_name and units label its bar, as xarray's own plots do.
+    xarray = pytest.importorskip("xarray")
+    data = xarray.DataArray(volume, dims=("z", "y", "x"), name="rho",
+                            attrs={"long_name": "Density", "units": "g/cm³"})
+    assert bar("xarray.png", data) == titled
+    named = xarray.DataArray(volume, dims=("z", "y", "x"), name="Density")
+    assert bar("named.png", named) == bar("density.png", title="Density")

@@ -126,7 +126,8 @@ def render(volume, size=(512, 512), colormap: str = "viridis", opacity=None,
            elevation: float = 0.0, zoom: float = 1.0, background=None, backend: str = "auto",
            max_splats: Optional[int] = None, *, spacing: Optional[Sequence[float]] = None,
            origin: Optional[Sequence[float]] = None, threads: int = 0,
-           memory_limit: Union[None, int, str] = None, progress: Progress = None) -> Image:
+           memory_limit: Union[None, int, str] = None, progress: Progress = None,
+           title: Optional[str] = None, units: Optional[str] = None) -> Image:
     """A NumPy array rendered with texture splats, in one call.
 
     ``volume``: a 3-D array of a real dtype indexed (z, y, x), as NumPy holds a volume; a
@@ -139,22 +140,31 @@ def render(volume, size=(512, 512), colormap: str = "viridis", opacity=None,
     ``opacity``: extinction per voxel length over the value range: a number (constant), or
     numbers at evenly spaced points from the range's low to its high end; None: 0 rising to 1.
     ``value_range``: (low, high) mapped onto the colour map; None: the data's range.
-    ``max_splats``: the octree's splat budget (coarser splats where it must). The other
+    ``max_splats``: the octree's splat budget (coarser splats where it must).
+    ``title`` and ``units``: what the values are, for the colour bar ("Temperature", "K" gives
+    "Temperature (K)"); an xarray's ``long_name`` (or name) and ``units`` attributes by default,
+    as xarray's own plots label theirs. The other
     arguments are Scene.render()'s. Returns a texsplat.Image: ``numpy.asarray(image)``, or
     ``image.save("figure.png", colorbar=True)``.
     """
     scene = Scene(_array_scene(volume, colormap, opacity, value_range, max_splats, spacing,
-                               origin), "volume")
+                               origin, title, units), "volume")
     return scene.render(size, backend=backend, background=background, azimuth=azimuth,
                         elevation=elevation, zoom=zoom, threads=threads,
                         memory_limit=memory_limit, progress=progress)
 
 
-def _array_scene(volume, colormap, opacity, value_range, max_splats, spacing, origin) -> Node:
+def _array_scene(volume, colormap, opacity, value_range, max_splats, spacing, origin, title,
+                 units) -> Node:
     if type(volume).__module__.startswith("xarray"):
         values, coordinate_spacing, coordinate_origin = _from_xarray(volume)
         spacing = coordinate_spacing if spacing is None else spacing
         origin = coordinate_origin if origin is None else origin
+        label = volume.attrs.get("long_name", volume.name)
+        if title is None and label is not None:
+            title = str(label)
+        if units is None and "units" in volume.attrs:
+            units = str(volume.attrs["units"])
     else:
         values = volume
     values = _array(values)
@@ -178,6 +188,11 @@ def _array_scene(volume, colormap, opacity, value_range, max_splats, spacing, or
             raise ValueError(f"value_range: expected finite (low, high) with low < high, got "
                              f"{tuple(value_range)!r}")
         transfer.range = (low, high)
+    for field, text in (("title", title), ("units", units)):
+        if text is not None:
+            if not isinstance(text, str):
+                raise TypeError(f"{field}: expected a string, got {text!r}")
+            setattr(transfer, field, text)
     splat = Node("VectorSplat" if np.ndim(values) == 4 else "TextureSplat")
     if max_splats is not None:
         splat.maxSplats = int(max_splats)
