@@ -289,8 +289,19 @@ TEST(CpuBackend, aGridsVoxelsDrawTheBytesTheirListDraws) {
     // which the CPU backend walks without a list (stamped, band by band) or lists a few slices at
     // a time: the same splats in the same order as the list, so the same bytes.
     registerNodeTypes();
+    std::vector<Scene> walks = scenes();
+    // Orthographic with the near plane through the volume's middle: the rows of voxels near it
+    // are placed one voxel at a time, the near plane testing each, not a vector at a time.
+    const Camera::Ptr cut = camera(false, glm::vec3(-0.6f, -0.35f, -1.0f));
+    VolumeData::Ptr marschnerLobb = VolumeData::create();
+    marschnerLobb->source.setValue(VolumeSource::MarschnerLobb);
+    marschnerLobb->resolution.setValue(glm::vec3(24.0f));
+    walks.push_back({"orthographic, the near plane through the volume",
+                     test::framedScene(cut, {warmTransfer(8.0f), marschnerLobb,
+                                             TextureSplat::create()})});
+    cut->nearDistance.setValue(0.5f * (cut->nearDistance.value() + cut->farDistance.value()));
     std::size_t walked = 0;
-    for (const Scene& scene : scenes()) {
+    for (const Scene& scene : walks) {
         for (const glm::ivec2 size : {glm::ivec2(83, 61), glm::ivec2(400, 300)}) {
             walked += expectVoxelsDrawTheBytesOfTheirLists(scene, size, {1, 2});
         }
