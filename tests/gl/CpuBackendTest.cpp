@@ -30,9 +30,11 @@
 #include "scenegraph/io/SceneReader.h"
 
 #include <gtest/gtest.h>
+#include <hwy/targets.h>
 
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -250,39 +252,76 @@ TEST(CpuBackend, theImageIsTheSameForAnyThreadCount) {
     }
 }
 
+// Draws `scene` at `size` on each of `threadCounts` threads from the grids' voxels and from
+// their lists, expecting the same bytes: the number of batches of voxels listed.
+std::size_t expectVoxelsDrawTheBytesOfTheirLists(const Scene& scene, glm::ivec2 size,
+                                                 std::initializer_list<int> threadCounts) {
+    render::FrameAction action(size.x, size.y);
+    const render::Frame& frame = action.collect(*scene.root);
+    render::Frame listed = frame;
+    std::size_t walked = 0;
+    for (render::FrameSplats& splats : listed.splats) {
+        if (splats.voxels) {
+            splats.splats = splats.voxels->list();
+            splats.voxels = nullptr;
+            ++walked;
+        }
+    }
+    for (const int threads : threadCounts) {
+        const render::cpu::CpuRenderer renderer(threads);
+        const image::Image voxels = renderer.draw(frame, action.statistics(), true);
+        const image::Image list = renderer.draw(listed, action.statistics(), true);
+        EXPECT_EQ(voxels.pixels().size(), list.pixels().size());
+        if (voxels.pixels().size() == list.pixels().size()) {
+            EXPECT_EQ(std::memcmp(voxels.pixels().data(), list.pixels().data(),
+                                  list.pixels().size() * sizeof(glm::vec4)),
+                      0)
+                << scene.name << ", " << size.x << "x" << size.y << ", " << threads
+                << " threads";
+        }
+        EXPECT_EQ(voxels.depths(), list.depths()) << scene.name;
+    }
+    return walked;
+}
+
 TEST(CpuBackend, aGridsVoxelsDrawTheBytesTheirListDraws) {
     // A full-resolution batch comes as the grid's voxels in slice order (FrameSplats::voxels),
     // which the CPU backend walks without a list (stamped, band by band) or lists a few slices at
     // a time: the same splats in the same order as the list, so the same bytes.
     registerNodeTypes();
+    std::vector<Scene> walks = scenes();
+    // Orthographic with the near plane through the volume's middle: the rows of voxels near it
+    // are placed one voxel at a time, the near plane testing each, not a vector at a time.
+    const Camera::Ptr cut = camera(false, glm::vec3(-0.6f, -0.35f, -1.0f));
+    VolumeData::Ptr marschnerLobb = VolumeData::create();
+    marschnerLobb->source.setValue(VolumeSource::MarschnerLobb);
+    marschnerLobb->resolution.setValue(glm::vec3(24.0f));
+    walks.push_back({"orthographic, the near plane through the volume",
+                     test::framedScene(cut, {warmTransfer(8.0f), marschnerLobb,
+                                             TextureSplat::create()})});
+    cut->nearDistance.setValue(0.5f * (cut->nearDistance.value() + cut->farDistance.value()));
     std::size_t walked = 0;
-    for (const Scene& scene : scenes()) {
+    for (const Scene& scene : walks) {
         for (const glm::ivec2 size : {glm::ivec2(83, 61), glm::ivec2(400, 300)}) {
-            render::FrameAction action(size.x, size.y);
-            const render::Frame& frame = action.collect(*scene.root);
-            render::Frame listed = frame;
-            for (render::FrameSplats& splats : listed.splats) {
-                if (splats.voxels) {
-                    splats.splats = splats.voxels->list();
-                    splats.voxels = nullptr;
-                    ++walked;
-                }
-            }
-            for (const int threads : {1, 2}) {
-                const render::cpu::CpuRenderer renderer(threads);
-                const image::Image voxels = renderer.draw(frame, action.statistics(), true);
-                const image::Image list = renderer.draw(listed, action.statistics(), true);
-                ASSERT_EQ(voxels.pixels().size(), list.pixels().size());
-                EXPECT_EQ(std::memcmp(voxels.pixels().data(), list.pixels().data(),
-                                      list.pixels().size() * sizeof(glm::vec4)),
-                          0)
-                    << scene.name << ", " << size.x << "x" << size.y << ", " << threads
-                    << " threads";
-                EXPECT_EQ(voxels.depths(), list.depths()) << scene.name;
-            }
+            walked += expectVoxelsDrawTheBytesOfTheirLists(scene, size, {1, 2});
         }
     }
     EXPECT_GE(walked, 8u) << "the scenes should bring batches of voxels";
+}
+
+TEST(CpuBackend, aGridsVoxelsDrawTheBytesTheirListDrawsOnEveryInstructionSet) {
+    // The walk places a vector of voxels at a time (2, 4 or 8 lanes of doubles), compiled for
+    // every x86 target and picked at run time: each target this CPU runs must draw its list's
+    // bytes. Stamped: the orthographic scene at 400 x 300.
+    const Scene scene = scenes().front();
+    const std::vector<std::int64_t> targets = hwy::SupportedAndGeneratedTargets();
+    for (const std::int64_t target : targets) {
+        hwy::SetSupportedTargetsForTest(target);
+        SCOPED_TRACE(hwy::TargetName(target));
+        EXPECT_EQ(expectVoxelsDrawTheBytesOfTheirLists(scene, glm::ivec2(400, 300), {1}), 1u);
+    }
+    hwy::SetSupportedTargetsForTest(0);
+    EXPECT_GT(targets.size(), 1u);
 }
 
 TEST(CpuBackend, drawsAnyImageSizeAndSplatsPartlyOutsideIt) {

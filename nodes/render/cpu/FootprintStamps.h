@@ -117,11 +117,13 @@ struct FootprintStamps {
                              std::floor((centreY - 0.5) * phases() + 0.5), place);
     }
 
+    /// @brief The bound on a centre in phases (|x| and |y|) below which placeInPhases() places it.
+    static constexpr double kPhaseLimit = 1 << 30;
+
     /// @brief place() of a centre already in phases: the nearest phase's whole numbers (x, y)
     /// = ⌊(centre − ½)·phases + ½⌋.
     bool placeInPhases(double nearestX, double nearestY, Place& place) const {
-        constexpr double kLimit = 1 << 30;
-        if (!(std::abs(nearestX) < kLimit && std::abs(nearestY) < kLimit)) {
+        if (!(std::abs(nearestX) < kPhaseLimit && std::abs(nearestY) < kPhaseLimit)) {
             return false;
         }
         const auto wholeX = static_cast<std::int32_t>(nearestX);

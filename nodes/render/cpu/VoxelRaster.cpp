@@ -1,5 +1,6 @@
 #include "nodes/render/cpu/VoxelRaster.h"
 
+#include "nodes/render/cpu/VoxelSpans.h"
 #include "scenegraph/Assert.h"
 
 #include <algorithm>
@@ -55,6 +56,9 @@ VoxelRaster::VoxelRaster(const octree::VoxelSplats& voxels, const SplatSetup& se
             mStep[k][axis] = double(row[axis]) * spacing[axis];
         }
         mReach[k] = setup.stampGeometry().halfExtent[k] + kMargin;
+    }
+    if (grid.storage() == octree::ClassifiedGrid::Storage::Palette && setup.stamps() != nullptr) {
+        mThinEntries = cpu::thinEntries(grid.palette(), setup.stamps()->peak);
     }
 }
 

@@ -50,6 +50,10 @@ public:
     /// (octree::SliceOrder's axes).
     RowPlace rowPlace(std::uint64_t slice, std::uint64_t row) const;
 
+    /// @brief Per entry of the grid's palette (none without one), whether its stamped splats are
+    /// thin (cpu::thinEntries()): found once for the frame's bands.
+    const std::vector<std::uint8_t>& thinEntries() const { return mThinEntries; }
+
     /// @brief The voxel centres' coordinate along `axis` (local space, float as a list holds
     /// them: octree::voxelSplat()), per voxel index.
     const float* positions(int axis) const {
@@ -75,6 +79,7 @@ private:
     double mOrigin[2]{};
     double mStep[2][3]{};
     double mReach[2]{}; // pixels a splat reaches from its centre, x and y, with the margin
+    std::vector<std::uint8_t> mThinEntries; // thinEntries()
 };
 
 } // namespace texsplat::render::cpu

@@ -73,33 +73,37 @@ struct PlacedSplat {
         kStamped, // stamped otherwise: CompositeStampOf()
         kListed,  // across the near or far plane: CompositeVoxelAsListed()
     };
-    glm::vec4 value;
-    const float* weights; // the stamp's first row to composite
-    float* red;           // its pixel in the red plane
-    std::int32_t rows;    // rows to composite
-    std::int32_t column;  // the stamp's first column
-    std::int32_t first;   // the first row composited
+    const glm::vec4* value; // its medium, in the palette or the block (read as composited)
+    const float* weights;   // the stamp's first row to composite
+    float* red;             // its pixel in the red plane
+    std::int32_t rows;      // rows to composite
     Kind kind;
-    std::uint64_t coordinate;                   // the voxel's inner coordinate
-    octree::ClassifiedGrid::StorageIndex block; // kListed: its block's storage
+    std::int32_t column;                        // kStamped: the stamp's first column
+    std::int32_t first;                         // kStamped: the first row composited
+    std::uint64_t coordinate;                   // not kThin: the voxel's inner coordinate
+    octree::ClassifiedGrid::StorageIndex block; // not kThin: its block's storage
 };
 
-// Where the voxels of one row go in one band: their splats placed (PlaceRun()) before any is
-// composited, so that the reads of the voxels' media (from blocks and the palette, all over the
-// caches) do not wait on each other or on the compositing.
+// Where the voxels of one row go in one band: their splats placed (placeRun()) before any is
+// composited, so that the reads of the voxels' blocks (all over the caches) do not wait on each
+// other or on the compositing. A splat keeps a pointer to its medium: the compositing reads it
+// (a palette's entry, all over the caches too) while the splats before it are still stored.
 template <octree::ClassifiedGrid::Storage kStorage> class RowPlacer {
 public:
+    using StorageIndex = octree::ClassifiedGrid::StorageIndex;
+
     RowPlacer(const VoxelRaster& voxels, ColorPlanes& planes, int rowBegin, int rowEnd)
         : mVoxels(voxels), mGrid(voxels.voxels().grid()), mStamps(voxels.stamps()),
           mRowBegin(rowBegin), mRowEnd(rowEnd), mWidth(voxels.width()),
           mReach(voxels.setup().depthReach()), mPeak(mStamps.peak), mStride(planes.stride()),
-          mPlaneStride(planes.planeStride()), mRed(planes.red(0)), mDepthTest(planes.hasDepth()) {
-        const int inner = voxels.voxels().order().axes()[2];
-        mInnerPositions = voxels.positions(inner);
+          mRed(planes.red(0)), mDepthTest(planes.hasDepth()),
+          mThinEntries(voxels.thinEntries().data()) {
+        const octree::SliceOrder& order = voxels.voxels().order();
+        const int inner = order.axes()[2];
+        const float* positions = voxels.positions(inner);
+        mInnerPositions.assign(positions, positions + mGrid.dims()[inner]);
         constexpr std::uint64_t kSize = octree::ClassifiedGrid::kBlockSize;
         mInnerStride = inner == 0 ? 1 : inner == 1 ? kSize : kSize * kSize;
-        mInnerEnds[0] = mInnerPositions[0];
-        mInnerEnds[1] = mInnerPositions[mGrid.dims()[inner] - 1];
         mPlaced.resize(static_cast<std::size_t>(mGrid.dims()[inner]));
     }
 
@@ -110,8 +114,7 @@ public:
         // rounding): where they are well inside the near and far planes, no splat is tested.
         double ends[2];
         for (int end = 0; end < 2; ++end) {
-            const double head = mRow.head[2] + mRow.step[2] * mInnerEnds[end];
-            ends[end] = mRow.tailed ? head + mRow.tail[2] : head;
+            ends[end] = centre(2, mInnerPositions[end == 0 ? 0 : mInnerPositions.size() - 1]);
         }
         const double low = std::min(ends[0], ends[1]);
         const double high = std::max(ends[0], ends[1]);
@@ -121,9 +124,38 @@ public:
 
     // Places the `count` voxels of a run of the row within one block (inner coordinates
     // `coordinates`, storage `block` + `rowOffset` + (c mod 8)·innerStride) whose splats reach
-    // the band.
-    void placeRun(octree::ClassifiedGrid::StorageIndex block, std::uint64_t rowOffset,
-                  const std::uint64_t* coordinates, std::size_t count);
+    // the band: a vector of them at a time (placeLanes()) in a row far from the near and far
+    // planes, else (and from a vector with a centre too far out for an int on) one at a time.
+    void placeRun(StorageIndex block, std::uint64_t rowOffset, const std::uint64_t* coordinates,
+                  std::size_t count) {
+        Run run{block, rowOffset, mInnerStride, nullptr, nullptr};
+        if constexpr (kStorage == Storage::Direct) {
+            run.values = mGrid.directBlock(block);
+        } else {
+            run.values = mGrid.palette().data();
+            run.indices = mGrid.paletteBlock(block);
+        }
+        // The cursor in a local, not mCount: the compiler keeps it in a register across the
+        // stores of the placed splats, which it cannot tell apart from the members.
+        PlacedSplat* out = mPlaced.data() + mCount;
+        std::size_t i = 0;
+        if (!mNearPlanes) {
+            const hn::ScalableTag<double> dd;
+            const std::size_t lanes = hn::Lanes(dd);
+            for (; i < count; i += lanes) {
+                PlacedSplat* end =
+                    placeLanes(dd, run, coordinates + i, std::min(lanes, count - i), out);
+                if (end == nullptr) {
+                    break;
+                }
+                out = end;
+            }
+        }
+        for (; i < count; ++i) {
+            out = placeOne(run, coordinates[i], out);
+        }
+        mCount = static_cast<std::size_t>(out - mPlaced.data());
+    }
 
     // Forgets the row's placed splats.
     void clear() { mCount = 0; }
@@ -134,6 +166,211 @@ public:
 
 private:
     using Storage = octree::ClassifiedGrid::Storage;
+
+    // The block a run reads: its storage, the row's offset in it, and the media (Direct: the
+    // block's; Palette: the palette, and the block's indices into it).
+    struct Run {
+        StorageIndex block;
+        std::uint64_t rowOffset;
+        std::uint64_t innerStride;
+        const glm::vec4* values;
+        const std::uint16_t* indices;
+    };
+
+    // A voxel's medium, and (Palette) its entry in the palette.
+    struct VoxelMedium {
+        const glm::vec4* value;
+        std::uint16_t entry;
+    };
+
+    // The medium of the run's voxel of inner coordinate `c`; false where it is empty.
+    bool mediumOf(const Run& run, std::uint64_t c, VoxelMedium& medium) const {
+        constexpr std::uint64_t kSize = octree::ClassifiedGrid::kBlockSize;
+        const std::uint64_t at = run.rowOffset + (c % kSize) * run.innerStride;
+        if constexpr (kStorage == Storage::Direct) {
+            medium.value = run.values + at;
+            return *medium.value != glm::vec4(0.0f);
+        } else {
+            medium.entry = run.indices[at];
+            if (medium.entry == 0) {
+                return false;
+            }
+            medium.value = run.values + medium.entry;
+            return true;
+        }
+    }
+
+    // Whether a splat of `medium` is thin (IsThin()): of a palette's entry, as the frame's
+    // VoxelRaster found it.
+    bool isThin(const VoxelMedium& medium) const {
+        if constexpr (kStorage == Storage::Direct) {
+            const glm::vec4& value = *medium.value;
+            const float color[3] = {value.r, value.g, value.b};
+            return IsThin(color, value.w, mPeak);
+        } else {
+            return mThinEntries[medium.entry] != 0;
+        }
+    }
+
+    // Places the voxel of inner coordinate `c` at `out` (SplatSetup::orthographic() of its
+    // splat, near and far planes and all): the end of the placed splats.
+    HWY_INLINE PlacedSplat* placeOne(const Run& run, std::uint64_t c, PlacedSplat* out) {
+        VoxelMedium medium;
+        if (!mediumOf(run, c, medium)) {
+            return out;
+        }
+        const double p = mInnerPositions[c];
+        if (mNearPlanes) {
+            const double z = centre(2, p);
+            if (z - mReach > 1.0 || z + mReach < -1.0) {
+                return out;
+            }
+            if (z - mReach < -1.0 || z + mReach > 1.0) {
+                return recordListed(run, medium.value, c, out);
+            }
+        }
+        const double phases = mStamps.phases();
+        FootprintStamps::Place place;
+        if (!mStamps.placeInPhases(std::floor((centre(0, p) - 0.5) * phases + 0.5),
+                                   std::floor((centre(1, p) - 0.5) * phases + 0.5), place)) {
+            return recordListed(run, medium.value, c, out);
+        }
+        const FootprintStamps::Extent& extent =
+            mStamps.extents[static_cast<std::size_t>(place.phase)];
+        const int first = std::max(place.row + extent.rowBegin, mRowBegin);
+        const int last = std::min(place.row + extent.rowEnd, mRowEnd);
+        if (first >= last || place.column + extent.columnEnd <= 0 ||
+            place.column + extent.columnBegin >= mWidth) {
+            return out;
+        }
+        return record(run, medium, c, place, first, last, out);
+    }
+
+    // Places the `count` (at most a vector's) voxels of inner coordinates `coordinates` of a
+    // row far from the near and far planes at `out` as placeOne() does, the centres, their
+    // stamps and their rows in the band one voxel per lane of `dd`: the end of the placed
+    // splats, or null, with none placed, where a centre is too far out for an int (placeOne()
+    // lists its splat).
+    template <class DD>
+    HWY_INLINE PlacedSplat* placeLanes(DD dd, const Run& run, const std::uint64_t* coordinates,
+                                       std::size_t count, PlacedSplat* out) {
+        const hn::RebindToSigned<DD> di64;
+        const hn::Rebind<std::int32_t, DD> di;
+        constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
+        static_assert(kMaxLanes <= 8, "a vector's mask bits fit in a byte");
+        // A short run through a full vector of its coordinates, the last repeated.
+        HWY_ALIGN std::uint64_t padded[kMaxLanes];
+        const std::uint64_t* at = coordinates;
+        if (count < hn::Lanes(dd)) {
+            std::fill(padded, padded + kMaxLanes, coordinates[count - 1]);
+            std::copy(coordinates, coordinates + count, padded);
+            at = padded;
+        }
+        const auto c = hn::BitCast(di64, hn::LoadU(hn::RebindToUnsigned<DD>(), at));
+        const auto p = hn::GatherIndex(dd, mInnerPositions.data(), c);
+        // centre() and placeInPhases()'s sums: the products are exact (a float's by a float's
+        // in double, and by a power of two), so a contracted multiply-add rounds as they do.
+        const auto nearest = [&](int k) {
+            auto sum = hn::MulAdd(hn::Set(dd, mRow.step[k]), p, hn::Set(dd, mRow.head[k]));
+            if (mRow.tailed) {
+                sum = hn::Add(sum, hn::Set(dd, mRow.tail[k]));
+            }
+            const auto half = hn::Set(dd, 0.5);
+            return hn::Floor(hn::MulAdd(hn::Sub(sum, half), hn::Set(dd, mStamps.phases()), half));
+        };
+        const auto x = nearest(0);
+        const auto y = nearest(1);
+        const auto limit = hn::Set(dd, FootprintStamps::kPhaseLimit);
+        if (!hn::AllTrue(dd, hn::And(hn::Lt(hn::Abs(x), limit), hn::Lt(hn::Abs(y), limit)))) {
+            return nullptr;
+        }
+        // FootprintStamps::placeInPhases() and the rows of the band, per lane.
+        const auto wholeX = hn::DemoteTo(di, x);
+        const auto wholeY = hn::DemoteTo(di, y);
+        const int bits = mStamps.phaseBits;
+        const auto mask = hn::Set(di, mStamps.phases() - 1);
+        const auto column =
+            hn::Add(hn::ShiftRightSame(wholeX, bits), hn::Set(di, mStamps.columnOffset));
+        const auto row = hn::Add(hn::ShiftRightSame(wholeY, bits), hn::Set(di, mStamps.rowOffset));
+        const auto phase =
+            hn::Add(hn::ShiftLeftSame(hn::And(wholeY, mask), bits), hn::And(wholeX, mask));
+        // The stamps' extents, four int32 each.
+        static_assert(sizeof(FootprintStamps::Extent) == 4 * sizeof(std::int32_t));
+        const std::int32_t* extents = &mStamps.extents.front().columnBegin;
+        const auto field = hn::ShiftLeft<2>(phase);
+        const auto columnBegin = hn::GatherIndex(di, extents, field);
+        const auto columnEnd = hn::GatherIndex(di, extents + 1, field);
+        const auto first =
+            hn::Max(hn::Add(row, hn::GatherIndex(di, extents + 2, field)), hn::Set(di, mRowBegin));
+        const auto last =
+            hn::Min(hn::Add(row, hn::GatherIndex(di, extents + 3, field)), hn::Set(di, mRowEnd));
+        const auto inImage = hn::And(hn::Gt(hn::Add(column, columnEnd), hn::Zero(di)),
+                                     hn::Lt(hn::Add(column, columnBegin), hn::Set(di, mWidth)));
+        const auto shown = hn::And(hn::Lt(first, last), inImage);
+        HWY_ALIGN std::int32_t places[3][kMaxLanes], rows[2][kMaxLanes];
+        hn::Store(column, di, places[0]);
+        hn::Store(row, di, places[1]);
+        hn::Store(phase, di, places[2]);
+        hn::Store(first, di, rows[0]);
+        hn::Store(last, di, rows[1]);
+        std::uint8_t shownBits[8] = {};
+        hn::StoreMaskBits(di, shown, shownBits);
+        for (unsigned lanes = shownBits[0] & ((1u << count) - 1); lanes != 0; lanes &= lanes - 1) {
+            const auto lane = static_cast<std::size_t>(hwy::Num0BitsBelowLS1Bit_Nonzero32(lanes));
+            VoxelMedium medium;
+            if (mediumOf(run, coordinates[lane], medium)) {
+                out = record(run, medium, coordinates[lane],
+                             {places[0][lane], places[1][lane], places[2][lane]}, rows[0][lane],
+                             rows[1][lane], out);
+            }
+        }
+        return out;
+    }
+
+    // Records at `out` the splat of `medium` of the voxel of inner coordinate `c`, stamped at
+    // `place`, rows [first, last) of it in the band: the end of the placed splats.
+    PlacedSplat* record(const Run& run, const VoxelMedium& medium, std::uint64_t c,
+                        const FootprintStamps::Place& place, int first, int last,
+                        PlacedSplat* out) {
+        PlacedSplat& splat = *out;
+        splat.value = medium.value;
+        splat.weights = mStamps.values.data() +
+                        static_cast<std::size_t>(place.phase) * mStamps.stampSize +
+                        static_cast<std::size_t>(first - place.row) *
+                            static_cast<std::size_t>(mStamps.columns);
+        splat.red = mRed + first * mStride + place.column;
+        splat.rows = last - first;
+        if (!mDepthTest && isThin(medium)) {
+            splat.kind = PlacedSplat::kThin;
+        } else {
+            splat.kind = PlacedSplat::kStamped;
+            splat.column = place.column;
+            splat.first = first;
+            splat.coordinate = c;
+            splat.block = run.block;
+        }
+        return out + 1;
+    }
+
+    // Records at `out` the splat of medium `value` of the voxel of inner coordinate `c` as
+    // listed: the end of the placed splats.
+    PlacedSplat* recordListed(const Run& run, const glm::vec4* value, std::uint64_t c,
+                              PlacedSplat* out) {
+        PlacedSplat& splat = *out;
+        splat.value = value;
+        splat.coordinate = c;
+        splat.kind = PlacedSplat::kListed;
+        splat.block = run.block;
+        return out + 1;
+    }
+
+    // Coordinate k of the centre (SplatSetup::centreOf(), summed as RowPlace says) of the
+    // row's voxel at inner position `p`.
+    double centre(int k, double p) const {
+        const double head = mRow.head[k] + mRow.step[k] * p;
+        return mRow.tailed ? head + mRow.tail[k] : head;
+    }
+
     const VoxelRaster& mVoxels;
     const octree::ClassifiedGrid& mGrid;
     const FootprintStamps& mStamps;
@@ -143,120 +380,16 @@ private:
     double mReach;
     float mPeak;
     std::ptrdiff_t mStride;
-    std::ptrdiff_t mPlaneStride;
     float* mRed;
     bool mDepthTest;
     std::uint64_t mInnerStride = 1;
-    const float* mInnerPositions = nullptr;
-    double mInnerEnds[2]{}; // the inner positions of a row's first and last voxel
+    std::vector<double> mInnerPositions; // the voxel centres' inner coordinate, per voxel index
     VoxelRaster::RowPlace mRow{};
     bool mNearPlanes = true; // a splat of the row may come near the near or far plane
     std::vector<PlacedSplat> mPlaced;
     std::size_t mCount = 0;
+    const std::uint8_t* mThinEntries; // Palette: VoxelRaster::thinEntries()
 };
-
-template <octree::ClassifiedGrid::Storage kStorage>
-void RowPlacer<kStorage>::placeRun(octree::ClassifiedGrid::StorageIndex block,
-                                   std::uint64_t rowOffset, const std::uint64_t* coordinates,
-                                   std::size_t count) {
-    constexpr std::uint64_t kSize = octree::ClassifiedGrid::kBlockSize;
-    const float* const stampValues = mStamps.values.data();
-    const auto columns = static_cast<std::size_t>(mStamps.columns);
-    const FootprintStamps::Extent* extents = mStamps.extents.data();
-    // The block's media, or its indices into the palette.
-    const glm::vec4* values = nullptr;
-    const std::uint16_t* indices = nullptr;
-    if constexpr (kStorage == Storage::Direct) {
-        values = mGrid.directBlock(block);
-    } else {
-        values = mGrid.palette().data();
-        indices = mGrid.paletteBlock(block);
-    }
-    // Members in locals: the compiler keeps them in registers across the stores below.
-    const VoxelRaster::RowPlace row = mRow;
-    const std::uint64_t innerStride = mInnerStride;
-    const bool nearPlanes = mNearPlanes;
-    const double reach = mReach;
-    const FootprintStamps& stamps = mStamps;
-    const double phases = stamps.phases();
-    const float* const innerPositions = mInnerPositions;
-    const int rowBegin = mRowBegin;
-    const int rowEnd = mRowEnd;
-    const int width = mWidth;
-    const float peak = mPeak;
-    const bool depthTest = mDepthTest;
-    const std::size_t stampSize = mStamps.stampSize;
-    const std::ptrdiff_t stride = mStride;
-    float* const red = mRed;
-    PlacedSplat* const placed = mPlaced.data();
-    std::size_t placedCount = mCount;
-    for (std::size_t i = 0; i < count; ++i) {
-        const std::uint64_t c = coordinates[i];
-        const std::uint64_t at = rowOffset + (c % kSize) * innerStride;
-        PlacedSplat& splat = placed[placedCount];
-        if constexpr (kStorage == Storage::Direct) {
-            splat.value = values[at];
-            if (splat.value == glm::vec4(0.0f)) {
-                continue;
-            }
-        } else {
-            if (indices[at] == 0) {
-                continue;
-            }
-            splat.value = values[indices[at]];
-        }
-        splat.coordinate = c;
-        // SplatSetup::orthographic() of the voxel's splat (SplatSetup::centreOf(), summed as
-        // RowPlace says).
-        const double p = innerPositions[c];
-        const auto centre = [&](int k) {
-            const double head = row.head[k] + row.step[k] * p;
-            return row.tailed ? head + row.tail[k] : head;
-        };
-        if (nearPlanes) {
-            const double z = centre(2);
-            if (z - reach > 1.0 || z + reach < -1.0) {
-                continue;
-            }
-            if (z - reach < -1.0 || z + reach > 1.0) {
-                splat.kind = PlacedSplat::kListed;
-                splat.block = block;
-                ++placedCount;
-                continue;
-            }
-        }
-        FootprintStamps::Place place;
-        if (!stamps.placeInPhases(std::floor((centre(0) - 0.5) * phases + 0.5),
-                                  std::floor((centre(1) - 0.5) * phases + 0.5), place)) {
-            splat.kind = PlacedSplat::kListed;
-            splat.block = block;
-            ++placedCount;
-            continue;
-        }
-        const FootprintStamps::Extent& extent = extents[place.phase];
-        const int first = std::max(place.row + extent.rowBegin, rowBegin);
-        const int last = std::min(place.row + extent.rowEnd, rowEnd);
-        if (first >= last || place.column + extent.columnEnd <= 0 ||
-            place.column + extent.columnBegin >= width) {
-            continue;
-        }
-        splat.weights = stampValues + static_cast<std::size_t>(place.phase) * stampSize +
-                        static_cast<std::size_t>(first - place.row) * columns;
-        splat.red = red + first * stride + place.column;
-        splat.rows = last - first;
-        splat.column = place.column;
-        splat.first = first;
-        const float color[3] = {splat.value.r, splat.value.g, splat.value.b};
-        if (!depthTest && IsThin(color, splat.value.w, peak)) {
-            splat.kind = PlacedSplat::kThin;
-        } else {
-            splat.kind = PlacedSplat::kStamped;
-            splat.block = block;
-        }
-        ++placedCount;
-    }
-    mCount = placedCount;
-}
 
 // CompositeVoxels() for a grid of `kStorage` (octree::ClassifiedGrid::storage()): row by row of
 // each slice, the row's voxels placed, then composited in order.
@@ -282,8 +415,9 @@ void CompositeVoxelsIn(const VoxelRaster& voxels, ColorPlanes& planes, int rowBe
             rows.red = splat.red;
             rows.rows = splat.rows;
             if (splat.kind == PlacedSplat::kThin) {
-                const float color[3] = {splat.value.r, splat.value.g, splat.value.b};
-                CompositeThinStamp(d, rows, ThinMedium<StampTag>(d, color, splat.value.w));
+                const glm::vec4& value = *splat.value;
+                const float color[3] = {value.r, value.g, value.b};
+                CompositeThinStamp(d, rows, ThinMedium<StampTag>(d, color, value.w));
             } else if (splat.kind == PlacedSplat::kStamped) {
                 // As the list's splat: its depth plane from SplatSetup.
                 glm::u64vec3 voxel = rowVoxel;
@@ -292,7 +426,7 @@ void CompositeVoxelsIn(const VoxelRaster& voxels, ColorPlanes& planes, int rowBe
                     octree::voxelSplat(voxels.voxels().grid(), voxel,
                                        splat.block + octree::ClassifiedGrid::offsetInBlock(voxel)));
                 const StampDepth depth{raster.depth, splat.column, splat.first};
-                CompositeStampOf(rows, splat.value, peak, planes.hasDepth() ? &depth : nullptr);
+                CompositeStampOf(rows, *splat.value, peak, planes.hasDepth() ? &depth : nullptr);
             } else {
                 glm::u64vec3 voxel = rowVoxel;
                 voxel[axes[2]] = splat.coordinate;
@@ -334,6 +468,16 @@ void CompositeVoxels(const VoxelRaster& voxels, ColorPlanes& planes, int rowBegi
     }
 }
 
+std::vector<std::uint8_t> ThinEntries(const std::vector<glm::vec4>& palette, float peak) {
+    std::vector<std::uint8_t> thin(palette.size());
+    for (std::size_t entry = 0; entry < palette.size(); ++entry) {
+        const glm::vec4& value = palette[entry];
+        const float color[3] = {value.r, value.g, value.b};
+        thin[entry] = IsThin(color, value.w, peak) ? 1 : 0;
+    }
+    return thin;
+}
+
 } // namespace texsplat::render::cpu::HWY_NAMESPACE
 HWY_AFTER_NAMESPACE();
 
@@ -341,9 +485,14 @@ HWY_AFTER_NAMESPACE();
 namespace texsplat::render::cpu {
 
 HWY_EXPORT(CompositeVoxels);
+HWY_EXPORT(ThinEntries);
 
 void compositeVoxels(const VoxelRaster& voxels, ColorPlanes& planes, int rowBegin, int rowEnd) {
     HWY_DYNAMIC_DISPATCH(CompositeVoxels)(voxels, planes, rowBegin, rowEnd);
+}
+
+std::vector<std::uint8_t> thinEntries(const std::vector<glm::vec4>& palette, float peak) {
+    return HWY_DYNAMIC_DISPATCH(ThinEntries)(palette, peak);
 }
 
 } // namespace texsplat::render::cpu

@@ -3,6 +3,11 @@
 #include "nodes/render/cpu/ColorPlanes.h"
 #include "nodes/render/cpu/VoxelRaster.h"
 
+#include <glm/vec4.hpp>
+
+#include <cstdint>
+#include <vector>
+
 namespace texsplat::render::cpu {
 
 /// @brief Composites the voxel splats of `voxels` that reach rows [rowBegin, rowEnd) of `planes`,
@@ -18,5 +23,10 @@ namespace texsplat::render::cpu {
 /// same splats (octree::emitVoxelSplats()) set up by the same SplatSetup: the same splats, in the
 /// same order, with the same arithmetic. Bands may be drawn in parallel.
 void compositeVoxels(const VoxelRaster& voxels, ColorPlanes& planes, int rowBegin, int rowEnd);
+
+/// @brief Per entry of `palette` (octree::ClassifiedGrid::palette()), 1 where a stamped splat
+/// of its medium whose footprint (times its length scale) peaks at `peak` is thin, 0 elsewhere:
+/// composited by the thin loop unless depth-tested, as compositeSplats() chooses it.
+std::vector<std::uint8_t> thinEntries(const std::vector<glm::vec4>& palette, float peak);
 
 } // namespace texsplat::render::cpu
