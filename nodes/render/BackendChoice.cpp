@@ -8,6 +8,7 @@
 #endif
 
 #include <chrono>
+#include <cstddef>
 
 namespace texsplat::render {
 #ifdef TEXSPLAT_WITH_GL
@@ -54,6 +55,13 @@ BackendChoice BackendChoice::resolve(BackendRequest request) {
         choice.contextSeconds = secondsSince(start);
         choice.backend = Backend::Gl;
         choice.reason = "asked for";
+        return choice;
+    }
+    // Where EGL lists no GPU, GL could only be a software rasterizer: the CPU, without
+    // loading one to ask its name.
+    if (gl::EglContext::gpuDeviceCount() == std::size_t{0}) {
+        choice.contextSeconds = secondsSince(start);
+        choice.reason = "auto: no GPU among EGL's devices";
         return choice;
     }
     try {

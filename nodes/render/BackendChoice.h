@@ -37,8 +37,9 @@ struct BackendChoice {
     std::string reason; ///< for reports: why `auto` chose it, or "asked for"
 
     /// @brief Resolves `request`: Cpu makes no context; Gl makes one (throws GlError when it
-    /// cannot, Error in a build without GL); Auto makes one and keeps it unless it fails or its
-    /// renderer is a software rasterizer, then takes the CPU (always, without GL).
+    /// cannot, Error in a build without GL); Auto takes the CPU where EGL lists no GPU device,
+    /// else makes a context and keeps it unless it fails or its renderer is a software
+    /// rasterizer, then takes the CPU (always, without GL).
     static BackendChoice resolve(BackendRequest request);
 };
 

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -127,12 +128,11 @@ bool isSoftwareDevice(EGLDeviceEXT device) {
            std::string_view(extensions).find("EGL_MESA_device_software") != std::string_view::npos;
 }
 
-// The device platform: GPU devices first; software devices only when `allowSoftware`.
-Created createOnDevice(bool allowSoftware, bool debug, std::string& platform) {
-    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device") ||
-        !epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration")) {
-        throw PlatformFailure(
-            "EGL_EXT_platform_device or EGL_EXT_device_enumeration not supported");
+// The devices EGL lists (EGL_EXT_device_enumeration). Listing them initializes no display, so
+// it loads no driver.
+std::vector<EGLDeviceEXT> listDevices() {
+    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration")) {
+        throw PlatformFailure("EGL_EXT_device_enumeration not supported");
     }
     EGLint count = 0;
     if (!eglQueryDevicesEXT(0, nullptr, &count)) {
@@ -143,6 +143,17 @@ Created createOnDevice(bool allowSoftware, bool debug, std::string& platform) {
         throw callFailed("eglQueryDevicesEXT");
     }
     devices.resize(static_cast<std::size_t>(count));
+    return devices;
+}
+
+// The device platform: GPU devices first; software devices only when `allowSoftware`.
+Created createOnDevice(bool allowSoftware, bool debug, std::string& platform) {
+    if (!epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_platform_device") ||
+        !epoxy_has_egl_extension(EGL_NO_DISPLAY, "EGL_EXT_device_enumeration")) {
+        throw PlatformFailure(
+            "EGL_EXT_platform_device or EGL_EXT_device_enumeration not supported");
+    }
+    std::vector<EGLDeviceEXT> devices = listDevices();
     std::stable_partition(devices.begin(), devices.end(),
                           [](EGLDeviceEXT device) { return !isSoftwareDevice(device); });
     const auto softwareCount = std::count_if(devices.begin(), devices.end(), isSoftwareDevice);
@@ -236,6 +247,17 @@ EglContext::~EglContext() {
     }
     eglDestroyContext(mDisplay, mContext);
     clearCurrent();
+}
+
+std::optional<std::size_t> EglContext::gpuDeviceCount() {
+    try {
+        const std::vector<EGLDeviceEXT> devices = listDevices();
+        return static_cast<std::size_t>(std::count_if(
+            devices.begin(), devices.end(),
+            [](EGLDeviceEXT device) { return !isSoftwareDevice(device); }));
+    } catch (const PlatformFailure&) {
+        return std::nullopt;
+    }
 }
 
 EglPlatform EglContext::parsePlatform(std::string_view value) {

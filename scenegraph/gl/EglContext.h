@@ -2,6 +2,8 @@
 
 #include "scenegraph/gl/Context.h"
 
+#include <cstddef>
+#include <optional>
 #include <string_view>
 
 namespace texsplat::gl {
@@ -46,6 +48,12 @@ public:
 
     /// @brief Destroys the EGL context (releasing it first if it is current).
     ~EglContext() override;
+
+    /// @brief How many of the devices EGL lists (`eglQueryDevicesEXT`) are not software
+    /// rasterizers, found without initializing a display: no driver is loaded (a context on
+    /// llvmpipe costs about 55 MiB resident and a tenth of a second or more). nullopt where EGL
+    /// cannot list devices.
+    static std::optional<std::size_t> gpuDeviceCount();
 
     /// @brief Parses a `TEXSPLAT_EGL_PLATFORM` value: "device", "surfaceless", "auto" or "".
     /// @throws GlError "TEXSPLAT_EGL_PLATFORM: unknown EGL platform '<value>' ..." otherwise.

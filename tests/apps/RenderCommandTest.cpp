@@ -398,8 +398,8 @@ TEST_F(RenderCommandTest, rendersWithEitherBackendAndNamesItInTheTimeReport) {
     }
     EXPECT_LE(largest, 1.0f / 255.0f + 1e-6f);
     EXPECT_GT(a.statistics().maximum.r, 0.1);
-    // auto: the CPU on a software rasterizer or without GL, GL on a GPU, and the report says
-    // which and why.
+    // auto: the CPU where EGL lists no GPU, on a software rasterizer or without GL, GL on a
+    // GPU, and the report says which and why.
     const auto automatic =
         runTexsplat("render " + scene + " -o " + path("auto.png") + options);
     ASSERT_EQ(automatic.exitCode, 0) << automatic.standardError;
@@ -407,8 +407,10 @@ TEST_F(RenderCommandTest, rendersWithEitherBackendAndNamesItInTheTimeReport) {
     const bool software = report.find("(auto: GL is a software rasterizer (") != std::string::npos;
     const bool noGl = report.find("(auto: no GL context (") != std::string::npos;
     const bool device = report.find("(auto: GL device ") != std::string::npos;
-    EXPECT_EQ(software + noGl + device, 1) << report;
-    EXPECT_EQ(report.find("  backend    CPU (") != std::string::npos, software || noGl) << report;
+    const bool noGpu = report.find("(auto: no GPU among EGL's devices)") != std::string::npos;
+    EXPECT_EQ(software + noGl + device + noGpu, 1) << report;
+    EXPECT_EQ(report.find("  backend    CPU (") != std::string::npos, software || noGl || noGpu)
+        << report;
 }
 
 TEST_F(RenderCommandTest, vectorSplatsRenderOnTheCpuBackendAsOnGl) {

@@ -112,6 +112,14 @@ TEST(EglContext, noContextNamesEachPlatformAndWhyItFailed) {
         "EGL_MESA_platform_surfaceless not supported\\]");
 }
 
+TEST(EglContext, countsTheGpuDevicesTheAutoPlatformWouldUse) {
+    const std::optional<std::size_t> gpus = EglContext::gpuDeviceCount();
+    EglContext context(EglContextOptions{EglPlatform::Auto, false});
+    // Auto makes its context on the device platform exactly where EGL lists a GPU device.
+    EXPECT_EQ(context.info().platform == "EGL device", gpus.value_or(0) > 0)
+        << context.info().platform;
+}
+
 TEST(EglContext, platformVariableSelectsThePlatform) {
     ScopedEnvironment platform("TEXSPLAT_EGL_PLATFORM", "surfaceless");
     EglContext context;
