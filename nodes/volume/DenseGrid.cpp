@@ -5,6 +5,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <utility>
 
 namespace texsplat::volume {
 namespace {
@@ -29,6 +30,13 @@ std::vector<T> allocateVoxels(const GridGeometry& geometry, const T& fill) {
 template <typename T>
 DenseGrid<T>::DenseGrid(const GridGeometry& geometry, const T& fill)
     : Grid<T>(geometry, T(0.0f)), mValues(allocateVoxels(geometry, fill)) {}
+
+template <typename T>
+DenseGrid<T>::DenseGrid(const GridGeometry& geometry, std::vector<T> values)
+    : Grid<T>(geometry, T(0.0f)), mValues(std::move(values)) {
+    TEXSPLAT_ASSERT(mValues.size() == static_cast<std::size_t>(geometry.voxelCount()),
+                    "DenseGrid: one value per voxel");
+}
 
 template <typename T>
 T DenseGrid<T>::value(const glm::i64vec3& index) const {

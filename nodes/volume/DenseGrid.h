@@ -19,6 +19,10 @@ public:
     /// @throws DataError if the voxel count cannot be held in memory on this platform.
     explicit DenseGrid(const GridGeometry& geometry, const T& fill = T(0.0f));
 
+    /// @brief A grid of `geometry` holding `values`, one per voxel in linearIndex() order, taken
+    /// without a copy (a reader's buffer becomes the grid: no second grid's worth at its peak).
+    DenseGrid(const GridGeometry& geometry, std::vector<T> values);
+
     /// @brief Sets voxel `index` (inside the grid); a non-finite value makes the voxel empty.
     void setValue(const glm::i64vec3& index, const T& value) {
         TEXSPLAT_ASSERT(this->geometry().contains(index), "DenseGrid::setValue(): index outside");

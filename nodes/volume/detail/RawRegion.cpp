@@ -183,9 +183,7 @@ AnyGrid readRawRegion(const RawDataView& data, const IndexBox& region,
     }
     std::vector<float>& values = target.values();
     if (layout.components == 1) {
-        auto grid = std::make_shared<DenseScalarGrid>(geometry);
-        grid->values() = std::move(values);
-        return ScalarGridPtr(grid);
+        return ScalarGridPtr(std::make_shared<DenseScalarGrid>(geometry, std::move(values)));
     }
     auto grid = std::make_shared<DenseVectorGrid>(geometry);
     for (std::size_t voxel = 0; voxel < grid->values().size(); ++voxel) {
