@@ -156,11 +156,17 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
             "classifying", [&] { return classify(*mCache, state, volume, transfer, model); });
     }
     mDrewPreview = isPreview;
+    // A budget that holds every non-empty voxel draws them all, in slice order: the
+    // full-resolution image is within the budget, and its order costs about a quarter of an
+    // octree cut's as fine (the viewer's last refinement steps of a big volume).
+    const bool fullResolution = !mayCut || (errorThreshold.value() == 0.0f &&
+                                            static_cast<std::uint64_t>(maxSplats.value()) >=
+                                                classified->nonEmptyVoxelCount());
     const detail::SplatMemory memory = detail::withNodeContext(*this, [&] {
         const detail::SplatMemory estimate = detail::estimateSplats(
             classifiedMemory, classified->memoryBytes() + mCache->dataSummaryBytes(),
             classified->nonEmptyVoxelCount(), withMarks, mayCut,
-            static_cast<std::uint64_t>(maxSplats.value()),
+            static_cast<std::uint64_t>(maxSplats.value()), !fullResolution || withMarks,
             isShaded ? detail::shadingBytesFor(*classified) : 0);
         detail::checkSplatMemory(estimate);
         return estimate;
@@ -186,12 +192,6 @@ render::FrameSplats ScalarSplat::frameSplats(sg::Action& action, const render::C
         }
         return isPreview ? mCache->previewOctree() : mCache->octree();
     };
-    // A budget that holds every non-empty voxel draws them all, in slice order: the
-    // full-resolution image is within the budget, and its order costs about a quarter of an
-    // octree cut's as fine (the viewer's last refinement steps of a big volume).
-    const bool fullResolution = !mayCut || (errorThreshold.value() == 0.0f &&
-                                            static_cast<std::uint64_t>(maxSplats.value()) >=
-                                                classified->nonEmptyVoxelCount());
     mDrewEveryVoxel = fullResolution && !isPreview;
     render::FrameSplats result;
     result.view = render::SplatView::fromMatrices(model, camera.view, camera.projection,

@@ -1,5 +1,8 @@
 #include "octree/VoxelSplats.h"
 
+#include "scenegraph/MemoryLimit.h"
+
+#include <string>
 #include <utility>
 
 namespace texsplat::octree {
@@ -36,6 +39,13 @@ VoxelSplats::VoxelSplats(std::shared_ptr<const ClassifiedGrid> grid, const View&
 
 const std::shared_ptr<const SplatList>& VoxelSplats::list() const {
     std::call_once(mListed, [&] {
+        // A splat node's frame estimate left the list out (the CPU backend walks the voxels):
+        // asked here, where a backend or a merge of batches needs it.
+        checkMemory("listing the " + std::to_string(mCount) +
+                            " splats of a full-resolution frame",
+                        byteProduct(mCount, sizeof(Splat)),
+                        "draw with --backend cpu, which walks the voxels without a list, give a "
+                        "splat budget (maxSplats, or --max-splats), or a larger --memory-limit");
         if (!mStorage) {
             mStorage = std::make_shared<SplatList>();
         }

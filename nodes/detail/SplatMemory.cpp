@@ -76,7 +76,7 @@ void checkClassificationMemory(const SplatMemory& memory, const std::string& pur
 
 SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
                            std::uint64_t nonEmptyVoxels, bool withVectors, bool withOctree,
-                           std::uint64_t maxSplats, std::uint64_t shadingBytes) {
+                           std::uint64_t maxSplats, bool listed, std::uint64_t shadingBytes) {
     memory.classified = classifiedBytes;
     memory.shading = shadingBytes;
     // Records exist for non-empty nodes of level >= 1: at most one per 7 non-empty voxels
@@ -84,7 +84,7 @@ SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
     memory.octree =
         withOctree ? byteProduct(nonEmptyVoxels / 7 + 1, sizeof(octree::OctreeNode)) : 0;
     const std::uint64_t splats =
-        maxSplats > 0 ? std::min(nonEmptyVoxels, maxSplats) : nonEmptyVoxels;
+        !listed ? 0 : maxSplats > 0 ? std::min(nonEmptyVoxels, maxSplats) : nonEmptyVoxels;
     memory.splats =
         byteProduct(splats, kBytesPerSplat + (withVectors ? kBytesPerVectorSplat : 0));
     return memory;

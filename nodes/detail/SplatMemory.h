@@ -51,11 +51,13 @@ void checkClassificationMemory(const SplatMemory& memory, const std::string& pur
 
 /// @brief `memory` with the octree and the splats of the classified grid, which holds
 /// `nonEmptyVoxels` (what can become a splat) in `classifiedBytes`: `withOctree`, a cut is asked
-/// for (an error threshold or a budget); `maxSplats` > 0 bounds the splats; `shadingBytes`, what
-/// shading the grid takes (shadingBytesFor(), 0 unshaded).
+/// for (an error threshold or a budget); `maxSplats` > 0 bounds the splats; `listed`, whether the
+/// frame lists its splats (not for a full-resolution frame without marks: the CPU backend walks
+/// its voxels, and octree::VoxelSplats::list() asks for a list where one is made);
+/// `shadingBytes`, what shading the grid takes (shadingBytesFor(), 0 unshaded).
 SplatMemory estimateSplats(SplatMemory memory, std::uint64_t classifiedBytes,
                            std::uint64_t nonEmptyVoxels, bool withVectors, bool withOctree,
-                           std::uint64_t maxSplats, std::uint64_t shadingBytes = 0);
+                           std::uint64_t maxSplats, bool listed, std::uint64_t shadingBytes = 0);
 
 /// @brief What shading `classified` takes (TransferFunction::shade): a gradient per voxel of its
 /// allocated blocks and the lit copy of the grid.

@@ -38,17 +38,29 @@ protected:
 };
 
 TEST_F(HostileInputTest, aFrameAboveTheMemoryLimitIsRefusedBeforeClassifying) {
-    // The grid (1 MiB of floats) fits; the splats of its opaque voxels (84 bytes each) would not.
-    // Before the estimate, a 1200^3 grid of zeros passed the grid's check and died of
-    // std::bad_alloc in classification, as "internal error".
+    // The grid (1 MiB of floats) fits; the octree cut of 200 000 of its opaque voxels (84 bytes
+    // a splat) would not. Before the estimate, a 1200^3 grid of zeros passed the grid's check and
+    // died of std::bad_alloc in classification, as "internal error".
     const std::string opaque = writeVolumeScene('\xff');
-    expectError(opaque + " --memory-limit 8M",
+    expectError(opaque + " --memory-limit 8M --max-splats 200000",
                 opaque + ":5:1: TextureSplat: classifying and splatting 64x64x64 voxels would "
-                         "need 23109664 bytes (22 MiB), more than the memory limit of 8388608 "
-                         "bytes (8 MiB); the classified grid takes 1.04 MiB, the octree 0 KiB, the "
-                         "splats 21 MiB; use a volume of lower resolution, a splat budget "
+                         "need 19387568 bytes (18.5 MiB), more than the memory limit of 8388608 "
+                         "bytes (8 MiB); the classified grid takes 1.04 MiB, the octree 1.43 MiB, "
+                         "the splats 16 MiB; use a volume of lower resolution, a splat budget "
                          "(maxSplats, or --max-splats) to bound the splats, or a larger "
                          "--memory-limit");
+    // Every voxel at full resolution: the CPU backend walks the classified voxels and makes no
+    // list (the frame was refused here for 21 MiB of splats it never made); GL draws from a list
+    // of 32 bytes a splat, asked for where it is made.
+    const auto walked = runTexsplat("render " + opaque + " --memory-limit 6M --backend cpu -o " +
+                                    path("out.png"));
+    EXPECT_EQ(walked.exitCode, 0) << walked.standardError;
+    fs::remove(path("out.png"));
+    expectError(opaque + " --memory-limit 6M --backend gl",
+                "listing the 262144 splats of a full-resolution frame would need 8388608 bytes "
+                "(8 MiB), more than the memory limit of 6291456 bytes (6 MiB); draw with "
+                "--backend cpu, which walks the voxels without a list, give a splat budget "
+                "(maxSplats, or --max-splats), or a larger --memory-limit");
     // The classified grid is asked before classifying, as if every voxel were visible.
     const std::string scene = writeZeroVolumeScene();
     expectError(scene + " --memory-limit 1M --size 64x64",
