@@ -63,11 +63,13 @@ def dense_volume(path, n):
     volume.flush()
 
 
-def scene(path, volume):
+def scene(path, data, opacity_values="0, 1", opacities="1, 6"):
+    """Writes texture splats of the VolumeData fields `data` through a HOT transfer function."""
     with open(path, "w") as out:
         out.write("#Inventor V2.1 ascii\nSeparator {\n"
-                  "    TransferFunction { preset HOT opacityValues [ 0, 1 ] opacities [ 1, 6 ] }\n"
-                  f"    VolumeData {{ source FILE_NPY fileName \"{volume}\" }}\n"
+                  f"    TransferFunction {{ preset HOT opacityValues [ {opacity_values} ] "
+                  f"opacities [ {opacities} ] }}\n"
+                  f"    VolumeData {{ {data} }}\n"
                   "    TextureSplat { }\n}\n")
 
 
@@ -94,7 +96,7 @@ def dense_runs(texsplat, out, rows):
         volume = os.path.join(out, f"dense{n}.npy")
         dense_volume(volume, n)
         path = os.path.join(out, f"dense{n}.iv")
-        scene(path, volume)
+        scene(path, f"source FILE_NPY fileName \"{volume}\"")
         alone = os.path.join(out, f"dense{n}-alone.exr")
         times, alone_peak = report(run([texsplat, "render", path, "-o", alone, "--size", SIZE,
                                         "--direction", DIRECTION, "--threads", "1",
@@ -124,11 +126,7 @@ def compositing_runs(texsplat, out, rows):
     print("\n| image | ranks | radix-k | MPI_Reduce |")
     print("|---|---|---|---|")
     path = os.path.join(out, "blob.iv")
-    with open(path, "w") as scene_file:
-        scene_file.write("#Inventor V2.1 ascii\nSeparator {\n"
-                         "    TransferFunction { preset HOT opacityValues [ 0, 1 ] "
-                         "opacities [ 0, 6 ] }\n    VolumeData { source BLOB resolution 64 64 64 }"
-                         "\n    TextureSplat { }\n}\n")
+    scene(path, "source BLOB resolution 64 64 64", opacities="0, 6")
     for side in (256, 512, 1024, 2048):
         for ranks in (2, 4):
             seconds = {}
@@ -153,11 +151,8 @@ def split_runs(texsplat, example, out, rows):
           "blocks (in situ) |")
     print("|---|---|---|")
     path = os.path.join(out, "ml.iv")
-    with open(path, "w") as scene_file:
-        scene_file.write("#Inventor V2.1 ascii\nSeparator {\n"
-                         "    TransferFunction { preset HOT opacityValues [ 0, 0.35, 1 ] "
-                         "opacities [ 0, 0, 6 ] }\n    VolumeData { source BLOB resolution 48 48 48 }"
-                         "\n    TextureSplat { }\n}\n")
+    scene(path, "source BLOB resolution 48 48 48", opacity_values="0, 0.35, 1",
+          opacities="0, 0, 6")
     for name, direction in (("along z", "0,0,-1"), ("2.9° off z", "0.05,0,-1"),
                             ("oblique", "-1,-0.6,-0.45")):
         alone = os.path.join(out, "split-alone.exr")
