@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 #include <vector>
 
 namespace texsplat::test {
@@ -124,6 +125,19 @@ double inSituPsnr(std::int64_t ghost) {
     return image::ImageComparison(alone.render(*root), *picture).rgb().psnr;
 }
 
+// The message of the DataError that rendering `local` in situ throws on this rank.
+std::string inSituRefusal(const distributed::LocalBlock& local) {
+    distributed::InSituOptions options;
+    options.image = testImage();
+    try {
+        distributed::render(MPI_COMM_WORLD, local, kWhole, makeScene(), makeCamera(), options);
+    } catch (const DataError& error) {
+        return error.what();
+    }
+    ADD_FAILURE() << "expected DataError";
+    return {};
+}
+
 TEST(InSitu, givesTheOneProcessPictureOfBlocksWithOrWithoutGhostCells) {
     // Each voxel is drawn by the rank that owns it, its whole footprint: no ghost layer is too
     // thin, and none shows.
@@ -146,15 +160,9 @@ TEST(InSitu, refusesBlocksWhoseGhostCellsAreNotDeclared) {
         local.voxels = std::make_shared<volume::ExternalScalarGrid>(
             volume::boxGeometry(kWhole, block.held), block.values.data(), block.values.size());
     }
-    distributed::InSituOptions options;
-    options.image = testImage();
-    try {
-        distributed::render(MPI_COMM_WORLD, local, kWhole, makeScene(), makeCamera(), options);
-        FAIL() << "expected DataError";
-    } catch (const DataError& error) {
-        EXPECT_NE(std::string(error.what()).find("overlap"), std::string::npos) << error.what();
-        EXPECT_NE(std::string(error.what()).find("leave ghost cells out"), std::string::npos);
-    }
+    const std::string refusal = inSituRefusal(local);
+    EXPECT_NE(refusal.find("overlap"), std::string::npos) << refusal;
+    EXPECT_NE(refusal.find("leave ghost cells out"), std::string::npos);
 }
 
 TEST(InSitu, refusesABlockOffTheWholeGridsVoxels) {
@@ -164,16 +172,8 @@ TEST(InSitu, refusesABlockOffTheWholeGridsVoxels) {
     local.voxels = std::make_shared<volume::ExternalScalarGrid>(
         volume::GridGeometry({2, 2, 2}, kWhole.origin() + 0.5 * kWhole.spacing(), kWhole.spacing()),
         values.data(), values.size());
-    distributed::InSituOptions options;
-    options.image = testImage();
-    try {
-        distributed::render(MPI_COMM_WORLD, local, kWhole, makeScene(), makeCamera(), options);
-        FAIL() << "expected DataError";
-    } catch (const DataError& error) {
-        EXPECT_NE(std::string(error.what()).find("is not a voxel of the whole grid"),
-                  std::string::npos)
-            << error.what();
-    }
+    const std::string refusal = inSituRefusal(local);
+    EXPECT_NE(refusal.find("is not a voxel of the whole grid"), std::string::npos) << refusal;
 }
 
 } // namespace
