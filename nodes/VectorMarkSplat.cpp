@@ -126,19 +126,15 @@ bool VectorMarkSplat::isInMask(float value) const {
 const std::vector<octree::SplatMark>*
 VectorMarkSplat::frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>& classified,
                             render::FrameSplats& batch, int width, int height) {
-    // A brick's marks are a sequence of their own: the same sequence in every brick would
-    // repeat one pattern of marks brick after brick.
-    const auto seedValue =
-        static_cast<std::uint32_t>(seed.value()) ^ (mWhole ? mWhole->brick * 0x9e3779b9u : 0u);
-    if (mMarks.of.lock() != classified) {
+    // A brick's marks are those of the whole grid's cells it holds (octree::MarkSource): the
+    // bricks together draw the one-process marks.
+    const glm::u64vec3 offset = mWhole ? mWhole->offset : glm::u64vec3(0);
+    if (mMarks.of.lock() != classified || mMarks.offset != offset) {
         mMarks.shadows = std::make_shared<const octree::VoxelShadows>(*classified);
-        mMarks.source = std::make_shared<const octree::MarkSource>(classified);
+        mMarks.source = std::make_shared<const octree::MarkSource>(classified, offset);
         mMarks.of = classified;
-        mMarks.marks.clear();
-    }
-    if (mMarks.seed != seedValue) {
-        mMarks.seed = seedValue;
-        mMarks.marks.clear();
+        mMarks.offset = offset;
+        mMarks.marksPerVoxel = -1.0;
     }
     // How deep the data is behind a pixel, seen from here towards the grid's centre, and how
     // large a voxel's mark is on screen there: marks per voxel = coverage / (area · depth).
@@ -162,27 +158,43 @@ VectorMarkSplat::frameMarks(const std::shared_ptr<const octree::ClassifiedGrid>&
         const double area = render::markArea(batch.marks, pixels);
         batch.marks.marksPerVoxel = double(markDensity.value()) / (area * depth);
     }
+    const auto seedValue = static_cast<std::uint32_t>(seed.value());
+    if (mMarks.seed == seedValue && mMarks.marksPerVoxel == batch.marks.marksPerVoxel) {
+        return &mMarks.marks; // the marks of the last frame
+    }
     const double count =
         std::round(batch.marks.marksPerVoxel * static_cast<double>(mMarks.source->voxels()));
+    const auto tooMany = [&](double marks) {
+        return DataError(detail::nodeContext(*this) + ": " + sg::formatFloat(float(marks)) +
+                         " marks are more than a splat list holds (" +
+                         std::to_string(octree::SplatList::kMaxMarks) + "); lower markDensity");
+    };
     if (count > static_cast<double>(octree::SplatList::kMaxMarks)) {
-        throw DataError(detail::nodeContext(*this) + ": " + sg::formatFloat(float(count)) +
-                        " marks are more than a splat list holds (" +
-                        std::to_string(octree::SplatList::kMaxMarks) + "); lower markDensity");
+        throw tooMany(count);
     }
     // Each mark is held here, in the frame's list (with a splat of its own in a VectorSplat's)
-    // and as the renderer places it on screen.
+    // and as the renderer places it on screen. The count drawn is about `count`: a few more are
+    // let through the check.
     constexpr std::uint64_t kBytesPerMark = 2 * sizeof(octree::SplatMark) + sizeof(octree::Splat) +
                                             sizeof(std::uint32_t) + sizeof(render::ScreenMark);
     const auto marks = static_cast<std::uint64_t>(count);
-    if (marks > mMarks.marks.size()) {
-        checkMemory(detail::nodeContext(*this) + ": drawing " + std::to_string(marks) +
-                        " vector marks",
-                    byteProduct(marks, kBytesPerMark),
-                    "lower markDensity, render a smaller image, or give a larger --memory-limit");
-    }
+    checkMemory(detail::nodeContext(*this) + ": drawing " + std::to_string(marks) +
+                    " vector marks",
+                byteProduct(marks, kBytesPerMark),
+                "lower markDensity, render a smaller image, or give a larger --memory-limit");
     withMemoryStage("drawing vector marks", byteProduct(marks, kBytesPerMark),
-                    "lower markDensity or render a smaller image",
-                    [&] { mMarks.source->drawMarks(seedValue, marks, mMarks.marks); });
+                    "lower markDensity or render a smaller image", [&] {
+                        mMarks.source->drawMarks(seedValue, batch.marks.marksPerVoxel,
+                                                 mMarks.marks);
+                    });
+    if (mMarks.marks.size() > octree::SplatList::kMaxMarks) {
+        const auto drawn = static_cast<double>(mMarks.marks.size());
+        mMarks.marks.clear();
+        mMarks.marksPerVoxel = -1.0;
+        throw tooMany(drawn);
+    }
+    mMarks.seed = seedValue;
+    mMarks.marksPerVoxel = batch.marks.marksPerVoxel;
     return &mMarks.marks;
 }
 

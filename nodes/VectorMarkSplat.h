@@ -9,6 +9,7 @@
 
 #include <glm/ext/vector_double3.hpp>
 #include <glm/ext/vector_float3.hpp>
+#include <glm/ext/vector_uint3_sized.hpp>
 
 #include <cstdint>
 #include <memory>
@@ -103,7 +104,7 @@ public:
         glm::dvec3 centre{0.0};                              ///< its centre (local space)
         glm::vec3 low{0.0f};     ///< its box's smallest corner (local space): marks are cut to it
         glm::vec3 high{0.0f};    ///< its box's largest corner
-        std::uint32_t brick = 0; ///< the brick's number, mixed into the seed
+        glm::u64vec3 offset{0}; ///< the brick's voxel (0, 0, 0) in the whole grid
     };
     /// @brief Sets the whole volume this node's grid is a brick of; nullptr: its own.
     void setWholeVolume(std::shared_ptr<const WholeVolume> whole) { mWhole = std::move(whole); }
@@ -138,12 +139,14 @@ protected:
 
 private:
     // What the marks of the last classified grid come from, kept while it is the one drawn, and
-    // the marks drawn last: a prefix of the seed's sequence, which a closer view extends.
+    // the marks drawn last, for that seed and marks per voxel (negative: none drawn yet).
     struct MarkCache {
         std::weak_ptr<const octree::ClassifiedGrid> of;
+        glm::u64vec3 offset{0};
         std::shared_ptr<const octree::VoxelShadows> shadows;
         std::shared_ptr<const octree::MarkSource> source;
         std::uint32_t seed = 0;
+        double marksPerVoxel = -1.0;
         std::vector<octree::SplatMark> marks;
     };
     MarkCache mMarks;

@@ -12,46 +12,62 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 #include <utility>
 
 namespace texsplat::octree {
 namespace {
 
-// Mark `index` of `seed`'s sequence of `grid`'s marks (see MarkSource).
-SplatMark drawMark(const ClassifiedGrid& grid, const std::vector<glm::u64vec3>& blocks,
-                   const std::vector<std::uint64_t>& firsts, std::uint32_t seed,
-                   std::uint64_t index) {
+constexpr std::uint64_t kCellVoxels =
+    MarkSource::kCellSize * MarkSource::kCellSize * MarkSource::kCellSize;
+
+// The random numbers of candidate `index` of the whole grid's `cell` for `seed` (see MarkSource).
+sg::Random candidateRandom(glm::u64vec3 cell, std::uint64_t index, std::uint32_t seed) {
     constexpr std::uint64_t kMarkStream = 0x6d61726b73ull; // apart from other uses of the seed
-    sg::Random random(
-        sg::Random::mix(index ^ (static_cast<std::uint64_t>(seed) << 32) ^ kMarkStream));
-    constexpr std::uint64_t kSize = ClassifiedGrid::kBlockSize;
-    const glm::u64vec3 dims = grid.dims();
-    for (int attempt = 0; attempt < MarkSource::kMaxTries; ++attempt) {
-        const auto block = static_cast<std::size_t>(random.nextBits() % blocks.size());
-        const std::uint64_t offset = random.nextBits() % ClassifiedGrid::kBlockVoxels;
-        const glm::u64vec3 voxel =
-            blocks[block] * kSize +
-            glm::u64vec3(offset % kSize, (offset / kSize) % kSize, offset / (kSize * kSize));
-        if (glm::any(glm::greaterThanEqual(voxel, dims))) {
-            continue; // a block clipped by the grid's far faces
+    const std::uint64_t cellKey = cell.x ^ (cell.y << 21U) ^ (cell.z << 42U);
+    return sg::Random(sg::Random::mix(
+        cellKey ^ sg::Random::mix(index ^ (static_cast<std::uint64_t>(seed) << 32) ^ kMarkStream)));
+}
+
+// Appends to `marks` the marks of the whole grid's `cell` that lie in `grid` (at `offset` in the
+// whole): `whole` candidates, and one more when its first draw falls below `part`.
+void drawCellMarks(const ClassifiedGrid& grid, glm::u64vec3 offset, glm::u64vec3 cell,
+                   std::uint32_t seed, std::uint64_t whole, double part,
+                   std::vector<SplatMark>& marks) {
+    constexpr std::uint64_t kSize = MarkSource::kCellSize;
+    for (std::uint64_t index = 0; index <= whole; ++index) {
+        sg::Random random = candidateRandom(cell, index, seed);
+        // Drawn for every candidate, so that its other numbers do not depend on the count.
+        const double presence = random.uniform();
+        if (index == whole && presence >= part) {
+            break;
         }
-        const glm::vec4 medium = grid.storedVoxel(firsts[block] + offset);
+        const std::uint64_t slot = random.nextBits() % kCellVoxels;
+        const glm::u64vec3 voxel =
+            cell * kSize + glm::u64vec3(slot % kSize, (slot / kSize) % kSize, slot / (kSize * kSize));
+        glm::dvec3 jitter;
+        for (int axis = 0; axis < 3; ++axis) {
+            jitter[axis] = random.uniform(-0.5, 0.5);
+        }
+        const auto phase = static_cast<float>(random.uniform());
+        // Another brick's voxel, or past the grid's far faces.
+        if (glm::any(glm::lessThan(voxel, offset)) ||
+            glm::any(glm::greaterThanEqual(voxel - offset, grid.dims()))) {
+            continue;
+        }
+        const glm::u64vec3 local = voxel - offset;
+        const glm::vec4 medium = grid.voxel(local);
         if (medium == glm::vec4(0.0f)) {
             continue;
         }
-        glm::dvec3 at(voxel);
-        for (int axis = 0; axis < 3; ++axis) {
-            at[axis] += random.uniform(-0.5, 0.5);
-        }
         SplatMark mark;
-        mark.position = glm::vec3(grid.toWorld(at));
-        mark.phase = static_cast<float>(random.uniform());
-        mark.vector = grid.storedVector(firsts[block] + offset);
+        mark.position = glm::vec3(grid.toWorld(glm::dvec3(local) + jitter));
+        mark.phase = phase;
+        mark.vector = grid.vector(local);
         mark.extinction = medium.w;
         mark.color = glm::vec3(medium);
-        return mark;
+        marks.push_back(mark);
     }
-    return SplatMark{}; // nothing found: no direction, draws nothing
 }
 
 // A mark's or a splat's distance along the view (larger: farther), as sortByDepth() orders.
@@ -62,25 +78,64 @@ double depthOf(const View& view, const glm::vec3& position) {
 
 } // namespace
 
-MarkSource::MarkSource(std::shared_ptr<const ClassifiedGrid> grid) : mGrid(std::move(grid)) {
+MarkSource::MarkSource(std::shared_ptr<const ClassifiedGrid> grid, glm::u64vec3 offset)
+    : mGrid(std::move(grid)), mOffset(offset) {
     TEXSPLAT_ASSERT(mGrid && mGrid->hasVectors(), "MarkSource: needs a grid with vectors");
+    // The whole grid's cells that the grid's blocks holding a non-empty voxel meet: one a block
+    // when the grid starts on a cell boundary, up to eight for a brick that does not.
+    constexpr std::uint64_t kSize = ClassifiedGrid::kBlockSize;
     mGrid->forEachBlock([&](glm::u64vec3 block, ClassifiedGrid::StorageIndex first) {
-        mBlocks.push_back(block);
-        mFirsts.push_back(first);
+        if (mGrid->storedBlockCount(first) == 0) {
+            return;
+        }
+        const glm::u64vec3 low = (block * kSize + mOffset) / kCellSize;
+        const glm::u64vec3 last = glm::min(block * kSize + kSize, mGrid->dims()) - std::uint64_t{1};
+        const glm::u64vec3 high = (last + mOffset) / kCellSize;
+        for (std::uint64_t z = low.z; z <= high.z; ++z) {
+            for (std::uint64_t y = low.y; y <= high.y; ++y) {
+                for (std::uint64_t x = low.x; x <= high.x; ++x) {
+                    mCells.emplace_back(x, y, z);
+                }
+            }
+        }
     });
+    const auto before = [](const glm::u64vec3& a, const glm::u64vec3& b) {
+        return std::tie(a.z, a.y, a.x) < std::tie(b.z, b.y, b.x);
+    };
+    std::sort(mCells.begin(), mCells.end(), before);
+    mCells.erase(std::unique(mCells.begin(), mCells.end()), mCells.end());
     mVoxels = mGrid->nonEmptyVoxelCount();
 }
 
-void MarkSource::drawMarks(std::uint32_t seed, std::size_t count,
+void MarkSource::drawMarks(std::uint32_t seed, double marksPerVoxel,
                            std::vector<SplatMark>& marks) const {
-    const std::size_t drawn = std::min(marks.size(), count);
-    marks.resize(mVoxels > 0 ? count : 0);
+    marks.clear();
+    const double candidates = marksPerVoxel * static_cast<double>(kCellVoxels);
+    if (mVoxels == 0 || !(candidates > 0.0) || !std::isfinite(candidates)) {
+        return;
+    }
+    const auto whole = static_cast<std::uint64_t>(std::floor(candidates));
+    const double part = candidates - std::floor(candidates);
+    // Runs of cells drawn in parallel into lists of their own, joined in the cells' order.
+    constexpr std::size_t kCellsPerRun = 64;
+    std::vector<std::vector<SplatMark>> runs((mCells.size() + kCellsPerRun - 1) / kCellsPerRun);
     using Range = tbb::blocked_range<std::size_t>;
-    tbb::parallel_for(Range(drawn, marks.size(), 1024), [&](const Range& range) {
-        for (std::size_t i = range.begin(); i < range.end(); ++i) {
-            marks[i] = drawMark(*mGrid, mBlocks, mFirsts, seed, i);
+    tbb::parallel_for(Range(0, runs.size()), [&](const Range& range) {
+        for (std::size_t run = range.begin(); run < range.end(); ++run) {
+            const std::size_t end = std::min(mCells.size(), (run + 1) * kCellsPerRun);
+            for (std::size_t c = run * kCellsPerRun; c < end; ++c) {
+                drawCellMarks(*mGrid, mOffset, mCells[c], seed, whole, part, runs[run]);
+            }
         }
     });
+    std::size_t count = 0;
+    for (const std::vector<SplatMark>& run : runs) {
+        count += run.size();
+    }
+    marks.reserve(count);
+    for (const std::vector<SplatMark>& run : runs) {
+        marks.insert(marks.end(), run.begin(), run.end());
+    }
 }
 
 void emitMarkSplats(const std::vector<SplatMark>& marks, const View& view, SplatList& splats) {

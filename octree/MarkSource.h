@@ -14,24 +14,32 @@ namespace texsplat::octree {
 
 /// @brief Where the vector marks of a classified grid come from (Crawfis & Max 1993, "Combined
 /// Vector and Scalar Textures": "tiny vector particles, or scratch marks"; docs/vector-splats.md):
-/// marks drawn one by one at random among the grid's non-empty voxels, each at a random point of
-/// its voxel's cell with the voxel's vector, extinction and colour.
+/// marks at random among the grid's non-empty voxels, each at a random point of its voxel's cell
+/// with the voxel's vector, extinction and colour.
 ///
-/// Mark i of a seed's sequence depends on the seed and i alone, so a frame that needs more marks
-/// (a closer view) keeps the ones drawn before and adds to them, and frame after frame the same
-/// marks are drawn. Their count follows the image, not the grid: the marks a frame draws cover a
-/// chosen part of the image (render::ScreenMarks), a few per pixel at most, so drawing them
-/// costs what the picture needs however large the volume. Voxels are picked uniformly: a block
-/// of the grid's storage at random, a voxel of it at random, again while it is empty (at most
-/// kMaxTries times; a mark that finds none has a zero vector and draws nothing).
+/// Marks are drawn per cell of kCellSize³ voxels of the whole grid (the grid itself, or the grid
+/// a brick of a render split over processes is part of: `offset`): candidate j of a cell sits in
+/// a random voxel of the cell and is a mark when that voxel is the grid's and not empty, and the
+/// cell has candidates 0 … ⌊λ⌋, the last one only with probability frac(λ), λ = marks per voxel
+/// × kCellSize³. Everything about a candidate depends on the seed, the cell and j alone. So:
+/// - each non-empty voxel has `marksPerVoxel` marks on average, wherever it lies;
+/// - a frame that needs more marks per voxel (a closer view) keeps the marks drawn before and
+///   adds to them, and frame after frame the same marks are drawn;
+/// - the bricks of a grid split over processes draw, together, exactly the whole grid's marks
+///   (each those of its own voxels), so the split picture is the one-process picture.
+/// The count follows the image, not the grid: the caller asks for the marks per voxel that cover
+/// a chosen part of the image (render::ScreenMarks), a few per pixel at most; a frame costs the
+/// grid's non-empty cells and the candidates, not its voxels.
 class MarkSource {
 public:
-    /// @brief How often one mark tries a random stored voxel before it gives up: enough for
-    /// blocks holding a single non-empty voxel each (512 tries on average).
-    static constexpr int kMaxTries = 8192;
+    /// @brief The side of the cells of the whole grid that marks are drawn per, in voxels (the
+    /// ClassifiedGrid's blocks, when the grid is the whole).
+    static constexpr std::uint64_t kCellSize = 8;
 
-    /// @brief The marks of `grid`'s non-empty voxels (the grid must have vectors).
-    explicit MarkSource(std::shared_ptr<const ClassifiedGrid> grid);
+    /// @brief The marks of `grid`'s non-empty voxels (the grid must have vectors); `offset`: the
+    /// index in the whole grid of `grid`'s voxel (0, 0, 0) when it is a brick of it.
+    explicit MarkSource(std::shared_ptr<const ClassifiedGrid> grid,
+                        glm::u64vec3 offset = glm::u64vec3(0));
 
     /// @brief The grid the marks are drawn from.
     [[nodiscard]] const ClassifiedGrid& grid() const { return *mGrid; }
@@ -39,17 +47,16 @@ public:
     /// @brief Non-empty voxels of the grid.
     [[nodiscard]] std::uint64_t voxels() const { return mVoxels; }
 
-    /// @brief Makes `marks` the first `count` marks of `seed`'s sequence, given that it holds
-    /// the first marks.size() of them already (none, or what an earlier call left): a frame that
-    /// needs more marks draws only the new ones, in parallel (the same for any number of
-    /// threads), and one that needs fewer drops the last.
-    void drawMarks(std::uint32_t seed, std::size_t count, std::vector<SplatMark>& marks) const;
+    /// @brief Makes `marks` the marks of `seed` at `marksPerVoxel` marks per non-empty voxel on
+    /// average (about marksPerVoxel · voxels() of them), in the order of the whole grid's cells
+    /// (z slowest), then of their candidates: the same for any number of threads.
+    void drawMarks(std::uint32_t seed, double marksPerVoxel, std::vector<SplatMark>& marks) const;
 
 private:
     std::shared_ptr<const ClassifiedGrid> mGrid;
-    // The allocated blocks: coordinates and the storage index of their voxel (0, 0, 0).
-    std::vector<glm::u64vec3> mBlocks;
-    std::vector<std::uint64_t> mFirsts;
+    glm::u64vec3 mOffset;
+    // The whole grid's cells that hold a non-empty voxel of the grid, ordered z, y, x.
+    std::vector<glm::u64vec3> mCells;
     std::uint64_t mVoxels = 0;
 };
 

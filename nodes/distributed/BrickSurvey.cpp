@@ -83,8 +83,8 @@ private:
             const nodes::VolumeData& volume = *state().get<nodes::VolumeElement>().volume;
             const volume::IndexBox brick = volume.brick().value_or(volume::IndexBox{});
             const volume::GridGeometry whole = volume.wholeGeometry();
-            markColumns(*grid, glm::u64vec3(brick.isEmpty() ? glm::i64vec3(0) : brick.lo),
-                        glm::u64vec3(whole.dims()), result);
+            result.offset = glm::u64vec3(brick.isEmpty() ? glm::i64vec3(0) : brick.lo);
+            markColumns(*grid, result.offset, glm::u64vec3(whole.dims()), result);
             result.spacing = grid->spacing();
             result.wholeCentre = whole.indexToWorld((glm::dvec3(whole.dims()) - 1.0) * 0.5);
             result.wholeLow = whole.indexToWorld(glm::dvec3(-0.5));

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <glm/ext/vector_double3.hpp>
+#include <glm/ext/vector_uint3_sized.hpp>
 
 #include <array>
 #include <cstdint>
@@ -34,6 +35,7 @@ struct SplatSurvey {
     /// and (x, y) planes, the first coordinate fastest) holding a non-empty voxel of the brick.
     std::array<std::vector<std::uint64_t>, 3> columns;
     std::uint64_t voxels = 0;    ///< marks: the brick's non-empty voxels
+    glm::u64vec3 offset{0};      ///< marks: the brick's voxel (0, 0, 0) in the whole grid
     glm::dvec3 spacing{1.0};     ///< marks: the classified grid's spacing
     glm::dvec3 wholeCentre{0.0}; ///< marks: the whole grid's centre (local space)
     glm::dvec3 wholeLow{0.0};  ///< marks: the whole grid's box's corner at voxel (-0.5, -0.5, -0.5)

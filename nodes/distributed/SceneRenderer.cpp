@@ -467,7 +467,7 @@ void SceneRenderer::applySurveys(const std::vector<SplatSurvey>& surveys, Survey
             whole->centre = survey.wholeCentre;
             whole->low = glm::vec3(survey.wholeLow);
             whole->high = glm::vec3(survey.wholeHigh);
-            whole->brick = static_cast<std::uint32_t>(rank());
+            whole->offset = survey.offset;
             static_cast<nodes::VectorMarkSplat*>(survey.splat)->setWholeVolume(std::move(whole));
         }
         if (survey.cuts) {

@@ -50,10 +50,19 @@ glm::u64vec3 cellOf(glm::vec3 position) {
     return glm::u64vec3(glm::floor(position + 0.5f));
 }
 
-std::vector<SplatMark> drawn(const MarkSource& source, std::uint32_t seed, std::size_t count) {
+std::vector<SplatMark> drawn(const MarkSource& source, std::uint32_t seed, double marksPerVoxel) {
     std::vector<SplatMark> marks;
-    source.drawMarks(seed, count, marks);
+    source.drawMarks(seed, marksPerVoxel, marks);
     return marks;
+}
+
+// Whether `part` is `whole` with some marks left out, the others in the same order.
+bool isSubsequence(const std::vector<SplatMark>& part, const std::vector<SplatMark>& whole) {
+    std::size_t next = 0;
+    for (const SplatMark& mark : whole) {
+        next += next < part.size() && part[next] == mark ? 1 : 0;
+    }
+    return next == part.size();
 }
 
 TEST(MarkSource, marksSitInNonEmptyVoxelsWithTheirVectorExtinctionAndColourEachAsOften) {
@@ -72,7 +81,7 @@ TEST(MarkSource, marksSitInNonEmptyVoxelsWithTheirVectorExtinctionAndColourEachA
     const MarkSource source(grid);
     EXPECT_EQ(source.voxels(), 16u);
     std::array<int, 16> hits{};
-    for (const SplatMark& mark : drawn(source, 1, 1600)) {
+    for (const SplatMark& mark : drawn(source, 1, 100.0)) {
         const glm::u64vec3 voxel = cellOf(mark.position);
         ASSERT_TRUE(voxel.x == voxel.y && voxel.y == voxel.z)
             << "a mark at (" << mark.position.x << ", " << mark.position.y << ", "
@@ -84,7 +93,7 @@ TEST(MarkSource, marksSitInNonEmptyVoxelsWithTheirVectorExtinctionAndColourEachA
         EXPECT_LT(mark.phase, 1.0f);
         ++hits[static_cast<std::size_t>(voxel.x)];
     }
-    // 1600 marks over 16 voxels: 100 each, within four standard deviations (sqrt(94) ≈ 9.7).
+    // 100 marks a voxel on average, within four standard deviations (sqrt(100) = 10).
     for (std::size_t i = 0; i < 16; ++i) {
         EXPECT_NEAR(hits[i], 100, 40) << "voxel " << i;
     }
@@ -94,8 +103,9 @@ TEST(MarkSource, marksFallAtRandomAcrossTheirCellsWithNoTraceOfTheGrid) {
     // Where in its cell each mark sits: uniform, so that the marks together form no lattice.
     // The offsets' mean is near 0 and their variance near 1/12 on every axis; phases average 1/2.
     const MarkSource source(vectorGrid(24, kEverywhere, kAlongX));
-    const std::vector<SplatMark> marks = drawn(source, 3, 20000);
-    ASSERT_EQ(marks.size(), 20000u);
+    const std::vector<SplatMark> marks = drawn(source, 3, 1.5);
+    // 1.5 marks a voxel of 24³: 20 736 on average, within four standard deviations.
+    ASSERT_NEAR(static_cast<double>(marks.size()), 20736.0, 600.0);
     glm::dvec3 sum(0.0);
     glm::dvec3 squares(0.0);
     double phases = 0.0;
@@ -113,43 +123,90 @@ TEST(MarkSource, marksFallAtRandomAcrossTheirCellsWithNoTraceOfTheGrid) {
     EXPECT_NEAR(phases / count, 0.5, 0.01);
 }
 
-TEST(MarkSource, aLongerSequenceKeepsTheMarksDrawnBeforeAndAnotherSeedDrawsOthers) {
+TEST(MarkSource, moreMarksPerVoxelKeepTheMarksDrawnBeforeAndAnotherSeedDrawsOthers) {
     const MarkSource source(vectorGrid(8, kEverywhere, [](std::uint64_t i, auto, std::uint64_t k) {
         return glm::vec3(static_cast<float>(i) - 3.5f, 1.0f, static_cast<float>(k));
     }));
-    const std::vector<SplatMark> whole = drawn(source, 7, 3000);
-    std::vector<SplatMark> grown = drawn(source, 7, 1000);
-    EXPECT_TRUE(std::equal(grown.begin(), grown.end(), whole.begin()));
-    source.drawMarks(7, 3000, grown); // a closer view: 2000 more
-    EXPECT_EQ(grown, whole);
-    source.drawMarks(7, 500, grown); // a farther one: the first 500 stay
-    ASSERT_EQ(grown.size(), 500u);
-    EXPECT_TRUE(std::equal(grown.begin(), grown.end(), whole.begin()));
-    const std::vector<SplatMark> reseeded = drawn(source, 8, 3000);
+    const std::vector<SplatMark> many = drawn(source, 7, 5.8);
+    const std::vector<SplatMark> fewer = drawn(source, 7, 2.3);
+    const std::vector<SplatMark> few = drawn(source, 7, 0.9);
+    ASSERT_LT(few.size(), fewer.size());
+    ASSERT_LT(fewer.size(), many.size());
+    // A closer view draws the marks of a farther one and more; a farther one keeps a part.
+    EXPECT_TRUE(isSubsequence(fewer, many));
+    EXPECT_TRUE(isSubsequence(few, fewer));
+    const std::vector<SplatMark> reseeded = drawn(source, 8, 5.8);
     std::size_t same = 0;
-    for (std::size_t i = 0; i < whole.size(); ++i) {
-        same += std::memcmp(&whole[i], &reseeded[i], sizeof(SplatMark)) == 0 ? 1 : 0;
+    for (std::size_t i = 0; i < std::min(many.size(), reseeded.size()); ++i) {
+        same += std::memcmp(&many[i], &reseeded[i], sizeof(SplatMark)) == 0 ? 1 : 0;
     }
     EXPECT_EQ(same, 0u);
+}
+
+TEST(MarkSource, theBricksOfAGridDrawTogetherExactlyItsMarks) {
+    // A 21³ grid cut at x = 5 and y = 13 (off the cells of 8³) into four bricks: each brick's
+    // marks are the whole grid's in its box, and together they are all of them.
+    const auto vectorAt = [](std::uint64_t i, std::uint64_t j, std::uint64_t k) {
+        return glm::vec3(static_cast<float>(i), static_cast<float>(j) + 1.0f,
+                         static_cast<float>(k));
+    };
+    const auto isFilled = [](std::uint64_t i, std::uint64_t j, std::uint64_t k) {
+        return (i + 2 * j + 3 * k) % 5 != 0;
+    };
+    const std::uint64_t n = 21;
+    const MarkSource whole(vectorGrid(n, isFilled, vectorAt));
+    const std::vector<SplatMark> wholeMarks = drawn(whole, 9, 0.7);
+    std::size_t inBricks = 0;
+    for (const glm::u64vec3 low : {glm::u64vec3(0, 0, 0), glm::u64vec3(5, 0, 0),
+                                   glm::u64vec3(0, 13, 0), glm::u64vec3(5, 13, 0)}) {
+        const glm::u64vec3 high(low.x == 0 ? 5 : n, low.y == 0 ? 13 : n, n);
+        const glm::u64vec3 dims = high - low;
+        auto grid = std::make_shared<ClassifiedGrid>(dims, glm::dvec3(1.0), glm::dvec3(low));
+        grid->enableVectors();
+        for (std::uint64_t k = 0; k < dims.z; ++k) {
+            for (std::uint64_t j = 0; j < dims.y; ++j) {
+                for (std::uint64_t i = 0; i < dims.x; ++i) {
+                    const glm::u64vec3 at = low + glm::u64vec3(i, j, k);
+                    if (isFilled(at.x, at.y, at.z)) {
+                        grid->setVoxel({i, j, k}, glm::vec3(0.5f), 1.0f);
+                        grid->setVector({i, j, k}, vectorAt(at.x, at.y, at.z));
+                    }
+                }
+            }
+        }
+        const std::vector<SplatMark> brickMarks = drawn(MarkSource(grid, low), 9, 0.7);
+        std::vector<SplatMark> expected;
+        for (const SplatMark& mark : wholeMarks) {
+            const glm::u64vec3 voxel = cellOf(mark.position);
+            if (glm::all(glm::greaterThanEqual(voxel, low)) && glm::all(glm::lessThan(voxel, high))) {
+                expected.push_back(mark);
+            }
+        }
+        ASSERT_EQ(brickMarks.size(), expected.size()) << "brick at x " << low.x << ", y " << low.y;
+        // The whole's order is its cells', so each brick's marks keep it.
+        EXPECT_EQ(brickMarks, expected) << "brick at x " << low.x << ", y " << low.y;
+        inBricks += brickMarks.size();
+    }
+    EXPECT_EQ(inBricks, wholeMarks.size());
 }
 
 TEST(MarkSource, theMarksAreTheSameForAnyNumberOfThreads) {
     const MarkSource source(vectorGrid(20, kEverywhere, kAlongX));
     std::vector<SplatMark> serial;
-    tbb::task_arena(1).execute([&] { source.drawMarks(4, 50000, serial); });
-    EXPECT_EQ(drawn(source, 4, 50000), serial);
+    tbb::task_arena(1).execute([&] { source.drawMarks(4, 6.0, serial); });
+    EXPECT_EQ(drawn(source, 4, 6.0), serial);
 }
 
 TEST(MarkSource, anEmptyGridHasNoMarksAndAZeroVectorsMarksHaveNone) {
     const MarkSource empty(vectorGrid(
         8, [](auto, auto, auto) { return false; }, kAlongX));
     EXPECT_EQ(empty.voxels(), 0u);
-    EXPECT_TRUE(drawn(empty, 1, 100).empty());
+    EXPECT_TRUE(drawn(empty, 1, 10.0).empty());
     // Combined splats keep voxels whose vector is zero (or masked out): their marks draw nothing.
     const MarkSource still(vectorGrid(4, kEverywhere, [](std::uint64_t i, auto, auto) {
         return i < 2 ? glm::vec3(0.0f) : glm::vec3(0.0f, 0.0f, 2.0f);
     }));
-    for (const SplatMark& mark : drawn(still, 1, 400)) {
+    for (const SplatMark& mark : drawn(still, 1, 6.0)) {
         EXPECT_EQ(mark.vector,
                   cellOf(mark.position).x < 2 ? glm::vec3(0.0f) : glm::vec3(0.0f, 0.0f, 2.0f));
     }
@@ -162,12 +219,13 @@ std::uint64_t sliceOf(glm::vec3 position) {
 
 TEST(MarkSource, aVoxelListsMarksAfterTheLastSplatOfTheirSliceFartherFirst) {
     const auto grid = vectorGrid(6, kEverywhere, kAlongX);
-    const std::vector<SplatMark> marks = drawn(MarkSource(grid), 2, 500);
+    const std::vector<SplatMark> marks = drawn(MarkSource(grid), 2, 2.3);
+    ASSERT_GT(marks.size(), 300u);
     const View view = View::orthographic({0.2, 0.1, -1.0});
     SplatList splats;
     emitVoxelSplats(*grid, view, splats, &marks);
     ASSERT_EQ(splats.size(), 216u);
-    ASSERT_EQ(splats.marks().size(), 500u);
+    ASSERT_EQ(splats.marks().size(), marks.size());
     for (std::size_t n = 0; n < splats.size(); ++n) {
         const std::uint64_t slice = sliceOf(splats.splats()[n].position);
         const bool lastOfSlice =
@@ -199,13 +257,14 @@ TEST(MarkSource, aCutListsEachMarkAfterTheLastSplatNoNearerThanIt) {
     }
     const Octree octree(grid);
     const View view = View::perspective({30.0, 20.0, 40.0}, {-0.5, -0.4, -0.8});
-    const std::vector<SplatMark> marks = drawn(MarkSource(grid), 5, 300);
+    const std::vector<SplatMark> marks = drawn(MarkSource(grid), 5, 0.07);
+    ASSERT_GT(marks.size(), 200u);
     SplatList cut;
     emitSplats(Cut::byError(octree, 0.0), view, cut);
     ASSERT_GT(cut.size(), 1u);
     sortByDepth(cut, view);
     attachMarksByDepth(marks, view, cut);
-    ASSERT_EQ(cut.marks().size(), 300u);
+    ASSERT_EQ(cut.marks().size(), marks.size());
     const auto depthOf = [&](glm::vec3 position) {
         return glm::distance(glm::dvec3(position), view.eye());
     };
@@ -224,7 +283,7 @@ TEST(MarkSource, aCutListsEachMarkAfterTheLastSplatNoNearerThanIt) {
 
 TEST(MarkSource, marksAloneAreListedBackToFrontAndThoseBehindTheEyeLeftOut) {
     const auto grid = vectorGrid(8, kEverywhere, kAlongX);
-    const std::vector<SplatMark> marks = drawn(MarkSource(grid), 6, 1000);
+    const std::vector<SplatMark> marks = drawn(MarkSource(grid), 6, 2.0);
     const View view = View::perspective({4.0, 3.5, 3.5}, {1.0, 0.0, 0.0});
     SplatList splats;
     emitMarkSplats(marks, view, splats);

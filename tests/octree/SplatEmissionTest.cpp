@@ -133,7 +133,7 @@ TEST(SplatEmission, voxelSplatsAreTheSameForAnyNumberOfThreads) {
     }
     const View view = View::perspective({-9.0, 40.0, 12.0}, {0.4, -0.8, 0.1});
     std::vector<SplatMark> marks;
-    MarkSource(grid).drawMarks(5, grid->nonEmptyVoxelCount() * 7 / 10, marks);
+    MarkSource(grid).drawMarks(5, 0.7, marks);
     const auto emitWith = [&](int threads) {
         SplatList splats;
         tbb::task_arena(threads).execute([&] { emitVoxelSplats(*grid, view, splats, &marks); });
