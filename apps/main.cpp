@@ -1,4 +1,5 @@
 #include "apps/CommandLine.h"
+#include "scenegraph/LoaderPages.h"
 
 #ifdef TEXSPLAT_WITH_MPI
 #include "apps/MpiSession.h"
@@ -19,5 +20,8 @@ int main(int argc, char** argv) {
         std::freopen("/dev/null", "w", stderr);
     }
 #endif
+    // What the loader read to bind the libraries (OpenVDB's names alone are 26 MiB) would
+    // otherwise stay in every process's resident memory, in every rank of an MPI run.
+    texsplat::releaseLoaderPages();
     return runCommandLine(argc, argv, CommandMode::Run, std::cout, std::cerr);
 }
