@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <climits>
 #include <cstring>
+#include <utility>
 
 namespace texsplat::distributed {
 namespace {
@@ -35,6 +36,18 @@ std::vector<float> pack(const ImageLayer& layer, const ImageRegion& window) {
         std::memcpy(message.data() + kHeader + 4 * width * row, source, sizeof(glm::vec4) * width);
     }
     return message;
+}
+
+// The part of `layer` inside `window`.
+ImageLayer cut(const ImageLayer& layer, const ImageRegion& window) {
+    ImageLayer part;
+    part.region = layer.isEmpty() ? ImageRegion{} : intersect(layer.region, window);
+    part.pixels.reserve(std::size_t(part.region.width) * std::size_t(part.region.height));
+    for (int y = part.region.y; y < part.region.y + part.region.height; ++y) {
+        const glm::vec4* row = &layer.at(part.region.x, y);
+        part.pixels.insert(part.pixels.end(), row, row + part.region.width);
+    }
+    return part;
 }
 
 ImageLayer unpack(const std::vector<float>& message) {
@@ -168,19 +181,18 @@ std::uint64_t Compositor::memoryBound(const ImageLayer& layer) const {
     return 3 * image + layer.pixels.size() * sizeof(glm::vec4);
 }
 
-std::vector<glm::vec4> Compositor::composite(const ImageLayer& layer,
+std::vector<glm::vec4> Compositor::composite(ImageLayer layer,
                                              const std::vector<int>& backToFront) {
     TEXSPLAT_ASSERT(static_cast<int>(backToFront.size()) == mSize,
                     "Compositor::composite(): one position per rank");
-    return mMethod == Compositing::RadixK ? compositeRadixK(layer, backToFront)
+    return mMethod == Compositing::RadixK ? compositeRadixK(std::move(layer), backToFront)
                                           : compositeReduce(layer, backToFront);
 }
 
-std::vector<glm::vec4> Compositor::compositeRadixK(const ImageLayer& mine,
+std::vector<glm::vec4> Compositor::compositeRadixK(ImageLayer layer,
                                                    const std::vector<int>& backToFront) {
     const int position = static_cast<int>(std::find(backToFront.begin(), backToFront.end(), mRank) -
                                           backToFront.begin());
-    ImageLayer layer = mine;
     int first = 0;
     int end = mHeight;
     int stride = 1;
@@ -206,10 +218,10 @@ std::vector<glm::vec4> Compositor::compositeRadixK(const ImageLayer& mine,
         }
         const ImageRegion kept = band(mWidth, first, end, k, digit);
         std::vector<ImageLayer> parts(static_cast<std::size_t>(k));
+        parts[static_cast<std::size_t>(digit)] = cut(layer, kept);
+        layer = ImageLayer{}; // all of it is in the messages and the part kept
         for (int member = 0; member < k; ++member) {
-            if (member == digit) {
-                parts[static_cast<std::size_t>(member)] = unpack(pack(layer, kept));
-            } else {
+            if (member != digit) {
                 const int rank = backToFront[static_cast<std::size_t>(base + member * stride)];
                 parts[static_cast<std::size_t>(member)] = unpack(receive(mComm, rank, tag));
             }

@@ -39,10 +39,11 @@ public:
     /// @brief Every rank calls it (a collective) with its layer and the ranks back to front
     /// (`backToFront[i]`: the rank of the i-th farthest brick): rank 0 gets the whole image's
     /// pixels (width x height, top row first), composited front over back onto transparent;
-    /// the other ranks get nothing (empty). The layer must lie inside the image.
+    /// the other ranks get nothing (empty). The layer must lie inside the image; it is taken
+    /// (moved in), so that its pixels are freed as soon as they are passed on.
     /// Cannot fail (it allocates what its first step checked, checkMemory()): no rank
     /// gives up while the others wait for it.
-    std::vector<glm::vec4> composite(const ImageLayer& layer, const std::vector<int>& backToFront);
+    std::vector<glm::vec4> composite(ImageLayer layer, const std::vector<int>& backToFront);
 
     /// @brief The bytes compositing may allocate on this rank at most, for a step that checks
     /// them (checkMemory()) before compositing starts.
@@ -53,8 +54,7 @@ public:
     static std::vector<int> radixRounds(int ranks);
 
 private:
-    std::vector<glm::vec4> compositeRadixK(const ImageLayer& layer,
-                                           const std::vector<int>& backToFront);
+    std::vector<glm::vec4> compositeRadixK(ImageLayer layer, const std::vector<int>& backToFront);
     std::vector<glm::vec4> compositeReduce(const ImageLayer& layer,
                                            const std::vector<int>& backToFront);
 

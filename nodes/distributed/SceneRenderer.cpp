@@ -25,6 +25,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <utility>
 
 #include <sched.h>
 #include <sys/resource.h>
@@ -257,7 +258,7 @@ std::optional<image::Image> SceneRenderer::render(sg::Node& root, bool withDepth
     });
     SurveyedFields restore;
     applySurveys(surveys, restore);
-    const ImageLayer layer = runAgreed(mComm, [&] { return drawBrick(root); });
+    ImageLayer layer = runAgreed(mComm, [&] { return drawBrick(root); });
     const sg::RenderStatistics& frame = mLocal.statistics();
     at(Step::Load) += frame.time(sg::RenderPhase::Load);
     at(Step::Classify) += frame.time(sg::RenderPhase::Classify);
@@ -267,20 +268,20 @@ std::optional<image::Image> SceneRenderer::render(sg::Node& root, bool withDepth
     mStatistics.splats = frame.splats;
     mStatistics.footprint = layer.region;
     Compositor compositor(mComm, mOptions.width, mOptions.height, mCompositing);
-    const std::vector<glm::vec4> composite = timed(at(Step::Composite), [&] {
+    std::vector<glm::vec4> composite = timed(at(Step::Composite), [&] {
         runAgreed(mComm, [&] {
             checkMemory("compositing a " + std::to_string(mOptions.width) + "x" +
                             std::to_string(mOptions.height) + " image",
                         compositor.memoryBound(layer), kCompositeAdvice);
         });
-        return compositor.composite(layer, mSplit->backToFront);
+        return compositor.composite(std::move(layer), mSplit->backToFront);
     });
     std::optional<image::Image> image = timed(at(Step::Finish), [&] {
         return runAgreed(mComm, [&]() -> std::optional<image::Image> {
             if (mRank != 0) {
                 return std::nullopt;
             }
-            return finish(composite, withDepth);
+            return finish(std::move(composite), withDepth);
         });
     });
     mStatistics.peakMebibytes = peakMebibytes();
@@ -515,12 +516,25 @@ ImageLayer SceneRenderer::drawBrick(sg::Node& root) {
     ImageLayer layer;
     if (mFootprint.width > 0) {
         layer.region = mFootprint;
-        layer.pixels = drawn.pixels();
+        layer.pixels = std::move(drawn).takePixels();
     }
     return layer;
 }
 
-image::Image SceneRenderer::finish(const std::vector<glm::vec4>& composite, bool withDepth) {
+image::Image SceneRenderer::finish(std::vector<glm::vec4> composite, bool withDepth) {
+    if (mMeshes.meshes.empty()) {
+        // The composite over the background, in place: no second image of the frame's size.
+        image::Image image(mOptions.width, mOptions.height, std::move(composite));
+        const glm::vec4 background = mOptions.background;
+        glm::vec4* pixels = image.data();
+        for (std::size_t i = 0; i < image.pixels().size(); ++i) {
+            pixels[i] += (1.0f - pixels[i].a) * background;
+        }
+        if (withDepth) {
+            image.addDepth(1.0f); // no mesh anywhere
+        }
+        return image;
+    }
     // The meshes (opaque, under every splat in front of them, which the bricks kept) over the
     // background, then the composite over them.
     mMeshes.width = mOptions.width;

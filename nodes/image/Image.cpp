@@ -7,18 +7,32 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace texsplat::image {
 
 Image::Image(int width, int height) : mWidth(width), mHeight(height) {
-    if (width < 1 || height < 1)
+    mPixels.assign(checkedPixelCount(), glm::vec4(0.0f));
+}
+
+Image::Image(int width, int height, std::vector<glm::vec4> pixels)
+    : mWidth(width), mHeight(height) {
+    const std::size_t count = checkedPixelCount();
+    if (pixels.size() != count)
+        throw DataError("image size " + sizeString() + " needs " + std::to_string(count) +
+                        " pixels, got " + std::to_string(pixels.size()));
+    mPixels = std::move(pixels);
+}
+
+std::size_t Image::checkedPixelCount() const {
+    if (mWidth < 1 || mHeight < 1)
         throw DataError("image size " + sizeString() +
                         " is empty: width and height must be at least 1");
-    const auto count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    const auto count = static_cast<std::size_t>(mWidth) * static_cast<std::size_t>(mHeight);
     if (count > kMaxPixels)
         throw DataError("image size " + sizeString() + " is too large: at most " +
                         std::to_string(kMaxPixels) + " pixels");
-    mPixels.assign(count, glm::vec4(0.0f));
+    return count;
 }
 
 std::size_t Image::index(int x, int y) const {
@@ -31,6 +45,13 @@ std::size_t Image::index(int x, int y) const {
 std::size_t Image::depthIndex(int x, int y) const {
     TEXSPLAT_ASSERT(hasDepth(), "Image::depth(): the image has no depth channel");
     return index(x, y);
+}
+
+std::vector<glm::vec4> Image::takePixels() && {
+    mWidth = 0;
+    mHeight = 0;
+    mDepth.clear();
+    return std::move(mPixels);
 }
 
 void Image::fill(const glm::vec4& rgba) { std::fill(mPixels.begin(), mPixels.end(), rgba); }

@@ -46,6 +46,11 @@ public:
     /// Throws DataError when a size is below 1 or the image would exceed kMaxPixels.
     Image(int width, int height);
 
+    /// @brief A width × height image of `pixels` (premultiplied RGBA, top row first, width ×
+    /// height of them), taken without a copy. Throws DataError as above, and when the count of
+    /// pixels is not width × height.
+    Image(int width, int height, std::vector<glm::vec4> pixels);
+
     /// @brief Number of columns.
     int width() const { return mWidth; }
     /// @brief Number of rows.
@@ -61,6 +66,9 @@ public:
     void setPixel(int x, int y, const glm::vec4& rgba) { mPixels[index(x, y)] = rgba; }
     /// @brief All pixels, row by row from the top row, width() per row.
     const std::vector<glm::vec4>& pixels() const { return mPixels; }
+    /// @brief Moves the pixels out, for a consumer that keeps them (a rank's layer for
+    /// compositing), without a copy; the image is left without pixels or depth, 0 x 0.
+    std::vector<glm::vec4> takePixels() &&;
     /// @brief The pixels as one writable array of pixelCount() values in the order of pixels(),
     /// for producers that fill an image in one go (a framebuffer read-back).
     glm::vec4* data() { return mPixels.data(); }
@@ -100,6 +108,8 @@ public:
     std::string sizeString() const;
 
 private:
+    // width × height, after the constructors' checks (DataError).
+    std::size_t checkedPixelCount() const;
     std::size_t index(int x, int y) const;
     std::size_t depthIndex(int x, int y) const;
 
