@@ -64,10 +64,13 @@ void writeBytes(const fs::path& path, const std::string& head, const std::vector
               static_cast<std::streamsize>(data.size() * sizeof(float)));
 }
 
-void writeNpy(const fs::path& path, bool fortran) {
+// A .npy of shape (z, y, x), or (z, y, x, 3) with `vectors`: each voxel's vector turns with x
+// and grows with the blob.
+void writeNpy(const fs::path& path, bool fortran, bool vectors = false) {
     std::string header = std::string("{'descr': '<f4', 'fortran_order': ") +
                          (fortran ? "True" : "False") + ", 'shape': (" + std::to_string(kZ) + ", " +
-                         std::to_string(kY) + ", " + std::to_string(kX) + "), }";
+                         std::to_string(kY) + ", " + std::to_string(kX) + (vectors ? ", 3" : "") +
+                         "), }";
     while ((10 + header.size() + 1) % 64 != 0) {
         header += ' ';
     }
@@ -77,7 +80,22 @@ void writeNpy(const fs::path& path, bool fortran) {
     head += '\0';
     head += static_cast<char>(length & 0xff);
     head += static_cast<char>(length >> 8);
-    writeBytes(path, head + header, values(fortran));
+    if (!vectors) {
+        writeBytes(path, head + header, values(fortran));
+        return;
+    }
+    std::vector<float> data;
+    for (int z = 0; z < kZ; ++z) {
+        for (int y = 0; y < kY; ++y) {
+            for (int x = 0; x < kX; ++x) {
+                const float size = valueAt(x, y, z);
+                const float angle = 0.3f * static_cast<float>(x + y);
+                data.insert(data.end(), {size * std::cos(angle), size * std::sin(angle),
+                                         0.2f * size});
+            }
+        }
+    }
+    writeBytes(path, head + header, data);
 }
 
 std::string nrrdHeader(const std::string& encoding) {
@@ -146,6 +164,7 @@ protected:
             writeBytes(fs::path(name) / "headerless.raw", "", values());
             writeNpy(fs::path(name) / "c.npy", false);
             writeNpy(fs::path(name) / "fortran.npy", true);
+            writeNpy(fs::path(name) / "vectors.npy", false, true);
             writeBytes(fs::path(name) / "raw.nrrd", nrrdHeader("raw"), values());
             writeGzipNrrd(fs::path(name) / "gzip.nrrd");
             hasNetCdf() = writeNetCdf(fs::path(name) / "blob.nc");
@@ -179,13 +198,14 @@ protected:
         return has;
     }
 
-    // The PSNR of `volume` (a VolumeData's fields) split over the ranks against one process.
-    static double psnrOf(const std::string& volume) {
+    // The PSNR of `volume` (a VolumeData's fields) drawn by `splat` split over the ranks against
+    // one process.
+    static double psnrOf(const std::string& volume, const std::string& splat = "TextureSplat { }") {
         const std::string scene = R"(#Inventor V2.1 ascii
 Separator {
     TransferFunction { preset HOT opacityValues [ 0, 0.3, 1.2 ] opacities [ 0, 0, 6 ] }
     VolumeData { )" + volume + R"( }
-    TextureSplat { }
+    )" + splat + R"(
 })";
         View view;
         view.direction = {-1.0f, -0.7f, -0.4f};
@@ -217,6 +237,16 @@ TEST_F(BrickReadTest, readsEachFormatsBricksAsOneProcessReadsTheWhole) {
         if (rank() == 0) {
             EXPECT_GE(psnr, kMinimumPsnr) << volume << ", " << ranks() << " ranks";
         }
+    }
+}
+
+TEST_F(BrickReadTest, readsVectorBricksAsOneProcessReadsTheWhole) {
+    // A (z, y, x, 3) .npy's bricks become vector grids (the file's floats read straight into
+    // them); combined splats draw their magnitudes and the whole grid's marks.
+    const double psnr = psnrOf(file("FILE_NPY", "vectors.npy"),
+                               "CombinedSplat { markType SCRATCHES markDensity 2 }");
+    if (rank() == 0) {
+        EXPECT_GE(psnr, kMinimumPsnr) << ranks() << " ranks";
     }
 }
 

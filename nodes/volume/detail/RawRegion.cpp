@@ -5,9 +5,12 @@
 #include "nodes/volume/detail/SourceSupport.h"
 #include "scenegraph/Error.h"
 
+#include <glm/gtc/type_ptr.hpp>
+
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 #include <vector>
 
 namespace texsplat::volume::detail {
@@ -31,12 +34,20 @@ FileOrder fileOrderOf(const RawDataView& data) {
     return {data.axes.gridAxis, data.axes.reversed, false};
 }
 
-// The region's voxels and where each file voxel of it goes.
+// The region's voxels and where each file voxel of it goes. Vectors are held as the vector
+// grid holds them, so that the grid takes them without a copy.
 class RegionTarget {
 public:
+    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "a vector is three packed floats");
+
     RegionTarget(const RawHeader& layout, const IndexBox& region, const FileOrder& order)
-        : mOrder(order), mDims(layout.dims), mRegion(region), mComponents(layout.components),
-          mValues(static_cast<std::size_t>(region.voxelCount() * layout.components)) {
+        : mOrder(order), mDims(layout.dims), mRegion(region), mComponents(layout.components) {
+        const auto voxels = static_cast<std::size_t>(region.voxelCount());
+        if (mComponents == 1) {
+            mScalars.resize(voxels);
+        } else {
+            mVectors.resize(voxels);
+        }
         for (int axis = 0; axis < 3; ++axis) {
             const int grid = order.gridAxis[axis];
             mFileDims[axis] = mDims[grid];
@@ -73,7 +84,12 @@ public:
             (local.x + size.x * (local.y + size.y * local.z)) * mComponents + component);
     }
 
-    std::vector<float>& values() { return mValues; }
+    // The values, a voxel's components after each other.
+    float* values() {
+        return mComponents == 1 ? mScalars.data() : glm::value_ptr(mVectors.front());
+    }
+    std::vector<float> takeScalars() { return std::move(mScalars); }
+    std::vector<glm::vec3> takeVectors() { return std::move(mVectors); }
 
 private:
     FileOrder mOrder;
@@ -83,7 +99,8 @@ private:
     glm::i64vec3 mFileDims{0};
     glm::i64vec3 mFileLow{0};
     glm::i64vec3 mFileHigh{0};
-    std::vector<float> mValues;
+    std::vector<float> mScalars;
+    std::vector<glm::vec3> mVectors;
 };
 
 // Reads the region's rows of a file that can seek: one read per run of values along the file's
@@ -181,16 +198,10 @@ AnyGrid readRawRegion(const RawDataView& data, const IndexBox& region,
     } else {
         streamValues(data, order, target, progress);
     }
-    std::vector<float>& values = target.values();
     if (layout.components == 1) {
-        return ScalarGridPtr(std::make_shared<DenseScalarGrid>(geometry, std::move(values)));
+        return ScalarGridPtr(std::make_shared<DenseScalarGrid>(geometry, target.takeScalars()));
     }
-    auto grid = std::make_shared<DenseVectorGrid>(geometry);
-    for (std::size_t voxel = 0; voxel < grid->values().size(); ++voxel) {
-        grid->values()[voxel] =
-            glm::vec3(values[3 * voxel], values[3 * voxel + 1], values[3 * voxel + 2]);
-    }
-    return VectorGridPtr(grid);
+    return VectorGridPtr(std::make_shared<DenseVectorGrid>(geometry, target.takeVectors()));
 }
 
 AnyGrid readRawGridRegion(const std::function<void(const RawDataDecoder&)>& with,
