@@ -98,7 +98,7 @@ public:
 
     /// @brief For a brick of a volume split over processes (nodes/distributed): the whole
     /// volume's figures that its marks follow instead of the brick's, so that every brick draws
-    /// as many marks per voxel as the whole would, each from a sequence of its own.
+    /// the whole's marks of its own voxels (octree::MarkSource: marks per cell of the whole).
     struct WholeVolume {
         std::shared_ptr<const octree::VoxelShadows> shadows; ///< of the whole classified grid
         glm::dvec3 centre{0.0};                              ///< its centre (local space)
