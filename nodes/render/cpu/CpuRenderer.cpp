@@ -53,17 +53,25 @@ struct Bands {
 
 // Rows of the image split into bands for voxel batches (compositeVoxels()): each band
 // composites every slice while its rows stay in the caches, so bands are no taller than
-// kVoxelBandRows; and many per thread, taken as threads free up, as the volume covers the
-// image's rows unevenly.
+// kVoxelBandRows. The bands cover only the rows the grid reaches (VoxelRaster::rowRange()), in
+// equal heights, and their count is a multiple of the threads: each thread draws as many rows
+// of the volume as the others and they finish together, and a band is as tall with two threads
+// as with one (a splat across two bands is placed in both: thinner bands place more).
 struct VoxelBands {
     static constexpr int kVoxelBandRows = 64;
+    int first; // the first row of the first band
+    int last;  // the end of the last band
     int rows;
     int count;
-    VoxelBands(int height, int threads)
-        : rows(std::clamp((height + 8 * threads - 1) / (8 * threads), 4, kVoxelBandRows)),
-          count((height + rows - 1) / rows) {}
-    int begin(int band) const { return band * rows; }
-    int end(int band, int height) const { return std::min(height, (band + 1) * rows); }
+    VoxelBands(std::pair<int, int> range, int threads) : first(range.first), last(range.second) {
+        const int covered = last - first;
+        const int fewest = (covered + kVoxelBandRows - 1) / kVoxelBandRows;
+        const int bands = std::max(1, (fewest + threads - 1) / threads * threads);
+        rows = std::max(4, (covered + bands - 1) / bands);
+        count = covered > 0 ? (covered + rows - 1) / rows : 0;
+    }
+    int begin(int band) const { return first + band * rows; }
+    int end(int band) const { return std::min(last, first + (band + 1) * rows); }
 };
 
 // One splat batch of the frame ready for the rasterizer.
@@ -167,12 +175,12 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             const PreparedBatch& batch = batches.front();
             const VoxelRaster voxels(*batch.splats->voxels, *batch.setup, *batch.sampler,
                                      frame.width, frame.height);
-            const VoxelBands voxelBands(frame.height, mThreads);
+            const VoxelBands voxelBands(voxels.rowRange(), mThreads);
             tbb::parallel_for(tbb::blocked_range<int>(0, voxelBands.count, 1),
                               [&](const tbb::blocked_range<int>& range) {
                                   for (int band = range.begin(); band < range.end(); ++band) {
                                       compositeVoxels(voxels, planes, voxelBands.begin(band),
-                                                      voxelBands.end(band, frame.height));
+                                                      voxelBands.end(band));
                                   }
                               });
             return;
