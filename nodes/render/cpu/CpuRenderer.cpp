@@ -27,6 +27,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace texsplat::render::cpu {
@@ -150,6 +151,7 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
     Clock::time_point start = Clock::now();
     const std::vector<PreparedBatch> batches = prepareBatches(frame, *mSamplers);
     ColorPlanes planes(frame.width, frame.height, frame.background, !frame.meshes.empty());
+    std::optional<image::Image> readBack; // the image, where the draw has read it back
     const Bands bands(frame.height, mThreads);
     // More threads than the hardware has would only wait for each other (and oneTBB warns);
     // the bands still follow mThreads, which changes nothing in the image.
@@ -176,13 +178,30 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             const VoxelRaster voxels(*batch.splats->voxels, *batch.setup, *batch.sampler,
                                      frame.width, frame.height);
             const VoxelBands voxelBands(voxels.rowRange(), mThreads);
-            tbb::parallel_for(tbb::blocked_range<int>(0, voxelBands.count, 1),
-                              [&](const tbb::blocked_range<int>& range) {
-                                  for (int band = range.begin(); band < range.end(); ++band) {
-                                      compositeVoxels(voxels, planes, voxelBands.begin(band),
-                                                      voxelBands.end(band));
-                                  }
-                              });
+            // Each band is copied into the image as soon as it is drawn, by its thread, while
+            // its rows are in that core's caches; the rows no band covers as two more pieces.
+            // A read-back after the bands would be one thread's pass over the whole image.
+            readBack.emplace(frame.width, frame.height);
+            if (withDepth) {
+                readBack->addDepth(1.0f);
+            }
+            tbb::parallel_for(
+                tbb::blocked_range<int>(0, voxelBands.count + 2, 1),
+                [&](const tbb::blocked_range<int>& range) {
+                    for (int piece = range.begin(); piece < range.end(); ++piece) {
+                        if (piece < voxelBands.count) {
+                            compositeVoxels(voxels, planes, voxelBands.begin(piece),
+                                            voxelBands.end(piece));
+                            planes.copyRows(*readBack, voxelBands.begin(piece),
+                                            voxelBands.end(piece), withDepth);
+                        } else if (piece == voxelBands.count) {
+                            planes.copyRows(*readBack, 0, voxelBands.first, withDepth);
+                        } else {
+                            planes.copyRows(*readBack, voxelBands.last, frame.height,
+                                            withDepth);
+                        }
+                    }
+                });
             return;
         }
         // The splats of all batches in one depth order, as GlRenderer draws them.
@@ -266,6 +285,9 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
         }
     });
     statistics.addTime(sg::RenderPhase::Draw, secondsSince(start));
+    if (readBack) {
+        return std::move(*readBack);
+    }
     start = Clock::now();
     image::Image image = planes.toImage(withDepth);
     statistics.addTime(sg::RenderPhase::ReadBack, secondsSince(start));

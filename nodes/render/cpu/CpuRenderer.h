@@ -34,7 +34,8 @@ public:
     CpuRenderer& operator=(CpuRenderer&&) noexcept;
 
     /// @brief Draws `frame`; the time counts as RenderPhase::Draw in `statistics`, turning the
-    /// planes into the image as ReadBack. With `withDepth`, the image carries the window-space
+    /// planes into the image as ReadBack (a grid's voxels drawn without a list: in Draw, each
+    /// band's threads copying it once drawn). With `withDepth`, the image carries the window-space
     /// depth of the meshes (1 where there is none), as the GL backend reads it back.
     image::Image draw(const Frame& frame, sg::RenderStatistics& statistics,
                       bool withDepth = false) const;
