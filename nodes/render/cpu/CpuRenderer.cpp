@@ -150,7 +150,16 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                                bool withDepth) const {
     Clock::time_point start = Clock::now();
     const std::vector<PreparedBatch> batches = prepareBatches(frame, *mSamplers);
-    ColorPlanes planes(frame.width, frame.height, frame.background, !frame.meshes.empty());
+    const bool withMeshDepth = !frame.meshes.empty();
+    if (mPlanes && mPlanes->width() == frame.width && mPlanes->height() == frame.height &&
+        mPlanes->hasDepth() == withMeshDepth) {
+        mPlanes->clear(frame.background);
+    } else {
+        mPlanes.reset();
+        mPlanes = std::make_unique<ColorPlanes>(frame.width, frame.height, frame.background,
+                                                withMeshDepth);
+    }
+    ColorPlanes& planes = *mPlanes;
     std::optional<image::Image> readBack; // the image, where the draw has read it back
     const Bands bands(frame.height, mThreads);
     // More threads than the hardware has would only wait for each other (and oneTBB warns);

@@ -8,6 +8,7 @@
 #include <string>
 
 namespace texsplat::render::cpu {
+class ColorPlanes;
 namespace detail {
 class SamplerCache;
 } // namespace detail
@@ -53,6 +54,10 @@ private:
     // (a frame after frame of the same scene lays them out once). Not thread-safe: one draw()
     // at a time.
     std::unique_ptr<detail::SamplerCache> mSamplers;
+    // The last frame's colour planes, cleared for the next frame of the same size instead of
+    // allocated again (a new allocation faults in every page of it, on one thread, each
+    // frame). Not thread-safe either.
+    mutable std::unique_ptr<ColorPlanes> mPlanes;
 };
 
 } // namespace texsplat::render::cpu
