@@ -27,6 +27,7 @@
 #include <memory>
 #include <optional>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace texsplat::render::cpu {
@@ -53,17 +54,27 @@ struct Bands {
 
 // Rows of the image split into bands for voxel batches (compositeVoxels()): each band
 // composites every slice while its rows stay in the caches, so bands are no taller than
-// kVoxelBandRows; and many per thread, taken as threads free up, as the volume covers the
-// image's rows unevenly.
+// kVoxelBandRows (128 rows of four float planes at 512 columns: 1.2 MiB, within a core's L2
+// here; measured 0.96x the frame of 64-row bands). The bands cover only the rows the grid
+// reaches (VoxelRaster::rowRange()), in equal heights, and their count is a multiple of the
+// threads: each thread draws as many rows of the volume as the others and they finish
+// together, and a band is as tall with two threads as with one (a splat across two bands is
+// placed in both: thinner bands place more).
 struct VoxelBands {
-    static constexpr int kVoxelBandRows = 64;
+    static constexpr int kVoxelBandRows = 128;
+    int first; // the first row of the first band
+    int last;  // the end of the last band
     int rows;
     int count;
-    VoxelBands(int height, int threads)
-        : rows(std::clamp((height + 8 * threads - 1) / (8 * threads), 4, kVoxelBandRows)),
-          count((height + rows - 1) / rows) {}
-    int begin(int band) const { return band * rows; }
-    int end(int band, int height) const { return std::min(height, (band + 1) * rows); }
+    VoxelBands(std::pair<int, int> range, int threads) : first(range.first), last(range.second) {
+        const int covered = last - first;
+        const int fewest = (covered + kVoxelBandRows - 1) / kVoxelBandRows;
+        const int bands = std::max(1, (fewest + threads - 1) / threads * threads);
+        rows = std::max(4, (covered + bands - 1) / bands);
+        count = covered > 0 ? (covered + rows - 1) / rows : 0;
+    }
+    int begin(int band) const { return first + band * rows; }
+    int end(int band) const { return std::min(last, first + (band + 1) * rows); }
 };
 
 // One splat batch of the frame ready for the rasterizer.
@@ -141,7 +152,17 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
                                bool withDepth) const {
     Clock::time_point start = Clock::now();
     const std::vector<PreparedBatch> batches = prepareBatches(frame, *mSamplers);
-    ColorPlanes planes(frame.width, frame.height, frame.background, !frame.meshes.empty());
+    const bool withMeshDepth = !frame.meshes.empty();
+    if (mPlanes && mPlanes->width() == frame.width && mPlanes->height() == frame.height &&
+        mPlanes->hasDepth() == withMeshDepth) {
+        mPlanes->clear(frame.background);
+    } else {
+        mPlanes.reset();
+        mPlanes = std::make_unique<ColorPlanes>(frame.width, frame.height, frame.background,
+                                                withMeshDepth);
+    }
+    ColorPlanes& planes = *mPlanes;
+    std::optional<image::Image> readBack; // the image, where the draw has read it back
     const Bands bands(frame.height, mThreads);
     // More threads than the hardware has would only wait for each other (and oneTBB warns);
     // the bands still follow mThreads, which changes nothing in the image.
@@ -167,14 +188,31 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             const PreparedBatch& batch = batches.front();
             const VoxelRaster voxels(*batch.splats->voxels, *batch.setup, *batch.sampler,
                                      frame.width, frame.height);
-            const VoxelBands voxelBands(frame.height, mThreads);
-            tbb::parallel_for(tbb::blocked_range<int>(0, voxelBands.count, 1),
-                              [&](const tbb::blocked_range<int>& range) {
-                                  for (int band = range.begin(); band < range.end(); ++band) {
-                                      compositeVoxels(voxels, planes, voxelBands.begin(band),
-                                                      voxelBands.end(band, frame.height));
-                                  }
-                              });
+            const VoxelBands voxelBands(voxels.rowRange(), mThreads);
+            // Each band is copied into the image as soon as it is drawn, by its thread, while
+            // its rows are in that core's caches; the rows no band covers as two more pieces.
+            // A read-back after the bands would be one thread's pass over the whole image.
+            readBack.emplace(frame.width, frame.height);
+            if (withDepth) {
+                readBack->addDepth(1.0f);
+            }
+            tbb::parallel_for(
+                tbb::blocked_range<int>(0, voxelBands.count + 2, 1),
+                [&](const tbb::blocked_range<int>& range) {
+                    for (int piece = range.begin(); piece < range.end(); ++piece) {
+                        if (piece < voxelBands.count) {
+                            compositeVoxels(voxels, planes, voxelBands.begin(piece),
+                                            voxelBands.end(piece));
+                            planes.copyRows(*readBack, voxelBands.begin(piece),
+                                            voxelBands.end(piece), withDepth);
+                        } else if (piece == voxelBands.count) {
+                            planes.copyRows(*readBack, 0, voxelBands.first, withDepth);
+                        } else {
+                            planes.copyRows(*readBack, voxelBands.last, frame.height,
+                                            withDepth);
+                        }
+                    }
+                });
             return;
         }
         // The splats of all batches in one depth order, as GlRenderer draws them.
@@ -258,6 +296,9 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
         }
     });
     statistics.addTime(sg::RenderPhase::Draw, secondsSince(start));
+    if (readBack) {
+        return std::move(*readBack);
+    }
     start = Clock::now();
     image::Image image = planes.toImage(withDepth);
     statistics.addTime(sg::RenderPhase::ReadBack, secondsSince(start));

@@ -8,6 +8,7 @@
 #include <string>
 
 namespace texsplat::render::cpu {
+class ColorPlanes;
 namespace detail {
 class SamplerCache;
 } // namespace detail
@@ -34,7 +35,8 @@ public:
     CpuRenderer& operator=(CpuRenderer&&) noexcept;
 
     /// @brief Draws `frame`; the time counts as RenderPhase::Draw in `statistics`, turning the
-    /// planes into the image as ReadBack. With `withDepth`, the image carries the window-space
+    /// planes into the image as ReadBack (a grid's voxels drawn without a list: in Draw, each
+    /// band's threads copying it once drawn). With `withDepth`, the image carries the window-space
     /// depth of the meshes (1 where there is none), as the GL backend reads it back.
     image::Image draw(const Frame& frame, sg::RenderStatistics& statistics,
                       bool withDepth = false) const;
@@ -52,6 +54,10 @@ private:
     // (a frame after frame of the same scene lays them out once). Not thread-safe: one draw()
     // at a time.
     std::unique_ptr<detail::SamplerCache> mSamplers;
+    // The last frame's colour planes, cleared for the next frame of the same size instead of
+    // allocated again (a new allocation faults in every page of it, on one thread, each
+    // frame). Not thread-safe either.
+    mutable std::unique_ptr<ColorPlanes> mPlanes;
 };
 
 } // namespace texsplat::render::cpu

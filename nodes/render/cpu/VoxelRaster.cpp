@@ -94,6 +94,24 @@ VoxelRaster::RowPlace VoxelRaster::rowPlace(std::uint64_t slice, std::uint64_t r
     return place;
 }
 
+std::pair<int, int> VoxelRaster::rowRange() const {
+    const glm::u64vec3 dims = mVoxels->grid().dims();
+    // Pixel y is affine in the voxel's index: its extremes lie at corners of the index box.
+    double low = mOrigin[1];
+    double high = mOrigin[1];
+    for (int axis = 0; axis < 3; ++axis) {
+        const double span = mStep[1][axis] * static_cast<double>(dims[axis] - 1);
+        low += std::min(span, 0.0);
+        high += std::max(span, 0.0);
+    }
+    low = std::max(std::floor(low - mReach[1]), 0.0);
+    high = std::min(std::ceil(high + mReach[1]) + 1.0, static_cast<double>(mHeight));
+    if (!(low < high)) {
+        return {0, 0};
+    }
+    return {static_cast<int>(low), static_cast<int>(high)};
+}
+
 std::pair<std::uint64_t, std::uint64_t>
 VoxelRaster::innerRange(std::uint64_t slice, std::uint64_t row, int rowBegin, int rowEnd) const {
     const std::array<int, 3>& axes = mVoxels->order().axes();

@@ -60,6 +60,10 @@ public:
         return mPositions[static_cast<std::size_t>(axis)].data();
     }
 
+    /// @brief The image rows [begin, end) that the grid's splats may reach (within the image; a
+    /// bound with the margin of innerRange()): where bands have work.
+    std::pair<int, int> rowRange() const;
+
     /// @brief The inner-axis coordinates [begin, end) of the voxels of slice coordinate `slice`
     /// and row coordinate `row` (octree::SliceOrder's axes) whose splats may reach image rows
     /// [`rowBegin`, `rowEnd`) within the image's columns: a bound with a margin for rounding (a

@@ -3,6 +3,7 @@
 #define HWY_TARGET_INCLUDE "nodes/render/cpu/VoxelSpans.cpp"
 #include <hwy/foreach_target.h> // IWYU pragma: keep
 
+#include <hwy/cache_control.h>
 #include <hwy/highway.h>
 
 #include "nodes/render/cpu/MediumSpans-inl.h"
@@ -10,6 +11,7 @@
 #include "nodes/render/cpu/StampSpans-inl.h"
 #include "nodes/render/cpu/VoxelSpans.h"
 #include "octree/SplatEmission.h"
+#include "scenegraph/Assert.h"
 
 #include <algorithm>
 #include <array>
@@ -91,6 +93,9 @@ struct PlacedSplat {
 template <octree::ClassifiedGrid::Storage kStorage> class RowPlacer {
 public:
     using StorageIndex = octree::ClassifiedGrid::StorageIndex;
+    // The most lanes of a vector of doubles.
+    static constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
+    static_assert(kMaxLanes <= 8, "a vector's mask bits fit in a byte");
 
     RowPlacer(const VoxelRaster& voxels, ColorPlanes& planes, int rowBegin, int rowEnd)
         : mVoxels(voxels), mGrid(voxels.voxels().grid()), mStamps(voxels.stamps()),
@@ -101,20 +106,48 @@ public:
         const octree::SliceOrder& order = voxels.voxels().order();
         const int inner = order.axes()[2];
         const float* positions = voxels.positions(inner);
-        mInnerPositions.assign(positions, positions + mGrid.dims()[inner]);
+        const auto count = static_cast<std::size_t>(mGrid.dims()[inner]);
+        // kMaxLanes more each side, the ends repeated: a vector of a run's positions is one
+        // load wherever the run lies (placeLanes()).
+        mInnerPositions.assign(count + 2 * kMaxLanes, double(positions[0]));
+        std::copy(positions, positions + count, mInnerPositions.begin() + kMaxLanes);
+        std::fill(mInnerPositions.begin() + kMaxLanes + count, mInnerPositions.end(),
+                  double(positions[count - 1]));
         constexpr std::uint64_t kSize = octree::ClassifiedGrid::kBlockSize;
         mInnerStride = inner == 0 ? 1 : inner == 1 ? kSize : kSize * kSize;
-        mPlaced.resize(static_cast<std::size_t>(mGrid.dims()[inner]));
+        const int sliceAxis = order.axes()[0];
+        const std::vector<std::uint64_t>& slices = order.axisOrder(sliceAxis);
+        mSliceAscending = slices.size() < 2 || slices[1] > slices[0];
+        const auto sliceStride = static_cast<std::ptrdiff_t>(
+            sliceAxis == 0 ? 1 : sliceAxis == 1 ? kSize : kSize * kSize);
+        mNextSlice = mSliceAscending ? sliceStride : -sliceStride;
+        // placeLanes() writes a splat for each lane and keeps those it places: room for a
+        // vector past the row's voxels.
+        mPlaced.resize(count + kMaxLanes);
+        // The stamps' extents, a byte each (at most kLargestSide): one gather a vector.
+        mPackedExtents.reserve(mStamps.extents.size());
+        for (const FootprintStamps::Extent& extent : mStamps.extents) {
+            mPackedExtents.push_back(
+                static_cast<std::int32_t>(static_cast<std::uint32_t>(extent.columnBegin) |
+                                          static_cast<std::uint32_t>(extent.columnEnd) << 8 |
+                                          static_cast<std::uint32_t>(extent.rowBegin) << 16 |
+                                          static_cast<std::uint32_t>(extent.rowEnd) << 24));
+        }
     }
 
     // Starts row `row` of slice `slice` (octree::SliceOrder's coordinates).
     void startRow(std::uint64_t slice, std::uint64_t row) {
         mRow = mVoxels.rowPlace(slice, row);
+        // Whether the next slice's voxels of this row lie in the same blocks.
+        const std::uint64_t within = slice % octree::ClassifiedGrid::kBlockSize;
+        mPrefetch = mSliceAscending ? within + 1 < octree::ClassifiedGrid::kBlockSize
+                                    : within > 0;
         // The row's window depths lie between those of its ends (with a margin for the sums'
         // rounding): where they are well inside the near and far planes, no splat is tested.
         double ends[2];
         for (int end = 0; end < 2; ++end) {
-            ends[end] = centre(2, mInnerPositions[end == 0 ? 0 : mInnerPositions.size() - 1]);
+            const std::size_t at = end == 0 ? kMaxLanes : mInnerPositions.size() - 1 - kMaxLanes;
+            ends[end] = centre(2, mInnerPositions[at]);
         }
         const double low = std::min(ends[0], ends[1]);
         const double high = std::max(ends[0], ends[1]);
@@ -131,9 +164,17 @@ public:
         Run run{block, rowOffset, mInnerStride, nullptr, nullptr};
         if constexpr (kStorage == Storage::Direct) {
             run.values = mGrid.directBlock(block);
+            if (mPrefetch) {
+                hwy::Prefetch(run.values + static_cast<std::ptrdiff_t>(rowOffset) + mNextSlice);
+            }
         } else {
             run.values = mGrid.palette().data();
             run.indices = mGrid.paletteBlock(block);
+            // The band reads each voxel once: the next slice's indices of the row, read in a
+            // slice's time, are fetched now rather than waited for then.
+            if (mPrefetch) {
+                hwy::Prefetch(run.indices + static_cast<std::ptrdiff_t>(rowOffset) + mNextSlice);
+            }
         }
         // The cursor in a local, not mCount: the compiler keeps it in a register across the
         // stores of the placed splats, which it cannot tell apart from the members.
@@ -183,7 +224,8 @@ private:
         std::uint16_t entry;
     };
 
-    // The medium of the run's voxel of inner coordinate `c`; false where it is empty.
+    // The medium of the run's voxel of inner coordinate `c` (set where it is empty too); false
+    // where it is empty.
     bool mediumOf(const Run& run, std::uint64_t c, VoxelMedium& medium) const {
         constexpr std::uint64_t kSize = octree::ClassifiedGrid::kBlockSize;
         const std::uint64_t at = run.rowOffset + (c % kSize) * run.innerStride;
@@ -192,11 +234,8 @@ private:
             return *medium.value != glm::vec4(0.0f);
         } else {
             medium.entry = run.indices[at];
-            if (medium.entry == 0) {
-                return false;
-            }
             medium.value = run.values + medium.entry;
-            return true;
+            return medium.entry != 0;
         }
     }
 
@@ -219,7 +258,7 @@ private:
         if (!mediumOf(run, c, medium)) {
             return out;
         }
-        const double p = mInnerPositions[c];
+        const double p = mInnerPositions[kMaxLanes + c];
         if (mNearPlanes) {
             const double z = centre(2, p);
             if (z - mReach > 1.0 || z + mReach < -1.0) {
@@ -246,28 +285,26 @@ private:
         return record(run, medium, c, place, first, last, out);
     }
 
-    // Places the `count` (at most a vector's) voxels of inner coordinates `coordinates` of a
-    // row far from the near and far planes at `out` as placeOne() does, the centres, their
-    // stamps and their rows in the band one voxel per lane of `dd`: the end of the placed
-    // splats, or null, with none placed, where a centre is too far out for an int (placeOne()
-    // lists its splat).
+    // Places the `count` (at most a vector's) voxels of inner coordinates `coordinates` (a
+    // run: consecutive, ascending or descending) of a row far from the near and far planes at
+    // `out` as placeOne() does, the centres, their stamps and their rows in the band one voxel
+    // per lane of `dd`: the end of the placed splats, or null, with none placed, where a centre
+    // is too far out for an int (placeOne() lists its splat). The positions are one load, the
+    // stamps' extents one gather; every lane's splat is written and kept where it is shown and
+    // not empty, so no branch waits on a voxel's medium.
     template <class DD>
     HWY_INLINE PlacedSplat* placeLanes(DD dd, const Run& run, const std::uint64_t* coordinates,
                                        std::size_t count, PlacedSplat* out) {
-        const hn::RebindToSigned<DD> di64;
         const hn::Rebind<std::int32_t, DD> di;
-        constexpr std::size_t kMaxLanes = HWY_MAX_BYTES / sizeof(double);
-        static_assert(kMaxLanes <= 8, "a vector's mask bits fit in a byte");
-        // A short run through a full vector of its coordinates, the last repeated.
-        HWY_ALIGN std::uint64_t padded[kMaxLanes];
-        const std::uint64_t* at = coordinates;
-        if (count < hn::Lanes(dd)) {
-            std::fill(padded, padded + kMaxLanes, coordinates[count - 1]);
-            std::copy(coordinates, coordinates + count, padded);
-            at = padded;
-        }
-        const auto c = hn::BitCast(di64, hn::LoadU(hn::RebindToUnsigned<DD>(), at));
-        const auto p = hn::GatherIndex(dd, mInnerPositions.data(), c);
+        const std::size_t lanes = hn::Lanes(dd);
+        const std::uint64_t c0 = coordinates[0];
+        const bool descending = count > 1 && coordinates[1] < c0;
+        TEXSPLAT_ASSERT(descending ? c0 - coordinates[count - 1] == count - 1
+                                   : coordinates[count - 1] - c0 == count - 1,
+                        "RowPlacer::placeLanes(): a run's coordinates are not consecutive");
+        const double* positions = mInnerPositions.data() + kMaxLanes + c0;
+        const auto p = descending ? hn::Reverse(dd, hn::LoadU(dd, positions - (lanes - 1)))
+                                  : hn::LoadU(dd, positions);
         // centre() and placeInPhases()'s sums: the products are exact (a float's by a float's
         // in double, and by a power of two), so a contracted multiply-add rounds as they do.
         const auto nearest = [&](int k) {
@@ -294,35 +331,57 @@ private:
         const auto row = hn::Add(hn::ShiftRightSame(wholeY, bits), hn::Set(di, mStamps.rowOffset));
         const auto phase =
             hn::Add(hn::ShiftLeftSame(hn::And(wholeY, mask), bits), hn::And(wholeX, mask));
-        // The stamps' extents, four int32 each.
-        static_assert(sizeof(FootprintStamps::Extent) == 4 * sizeof(std::int32_t));
-        const std::int32_t* extents = &mStamps.extents.front().columnBegin;
-        const auto field = hn::ShiftLeft<2>(phase);
-        const auto columnBegin = hn::GatherIndex(di, extents, field);
-        const auto columnEnd = hn::GatherIndex(di, extents + 1, field);
-        const auto first =
-            hn::Max(hn::Add(row, hn::GatherIndex(di, extents + 2, field)), hn::Set(di, mRowBegin));
+        const auto extent = hn::GatherIndex(di, mPackedExtents.data(), phase);
+        const auto byte = hn::Set(di, 0xff);
+        const auto columnBegin = hn::And(extent, byte);
+        const auto columnEnd = hn::And(hn::ShiftRight<8>(extent), byte);
+        const auto first = hn::Max(hn::Add(row, hn::And(hn::ShiftRight<16>(extent), byte)),
+                                   hn::Set(di, mRowBegin));
         const auto last =
-            hn::Min(hn::Add(row, hn::GatherIndex(di, extents + 3, field)), hn::Set(di, mRowEnd));
+            hn::Min(hn::Add(row, hn::ShiftRight<24>(extent)), hn::Set(di, mRowEnd));
         const auto inImage = hn::And(hn::Gt(hn::Add(column, columnEnd), hn::Zero(di)),
                                      hn::Lt(hn::Add(column, columnBegin), hn::Set(di, mWidth)));
         const auto shown = hn::And(hn::Lt(first, last), inImage);
-        HWY_ALIGN std::int32_t places[3][kMaxLanes], rows[2][kMaxLanes];
-        hn::Store(column, di, places[0]);
-        hn::Store(row, di, places[1]);
-        hn::Store(phase, di, places[2]);
-        hn::Store(first, di, rows[0]);
-        hn::Store(last, di, rows[1]);
+        // The stamp's first row composited and its first pixel, as addresses a lane: the
+        // loop below only copies them (where the compiler would pair their scalings in slow
+        // 64-bit vector multiplies). The stamps hold at most kLargestTable floats: an int; a
+        // pixel's offset is exact in a double.
+        const hn::RebindToSigned<DD> di64;
+        const auto weights =
+            hn::Add(hn::Mul(phase, hn::Set(di, static_cast<std::int32_t>(mStamps.stampSize))),
+                    hn::Mul(hn::Sub(first, row), hn::Set(di, mStamps.columns)));
+        const auto pixel = hn::ConvertTo(
+            di64, hn::MulAdd(hn::PromoteTo(dd, first), hn::Set(dd, static_cast<double>(mStride)),
+                             hn::PromoteTo(dd, column)));
+        const auto address = [&](const float* base, auto offset) {
+            return hn::Add(hn::Set(di64, static_cast<std::int64_t>(
+                                             reinterpret_cast<std::uintptr_t>(base))),
+                           hn::ShiftLeft<2>(offset));
+        };
+        HWY_ALIGN std::int32_t columns[kMaxLanes], firsts[kMaxLanes], rows[kMaxLanes];
+        HWY_ALIGN std::int64_t weightsAt[kMaxLanes], redAt[kMaxLanes];
+        hn::Store(column, di, columns);
+        hn::Store(first, di, firsts);
+        hn::Store(hn::Sub(last, first), di, rows);
+        hn::Store(address(mStamps.values.data(), hn::PromoteTo(di64, weights)), di64, weightsAt);
+        hn::Store(address(mRed, pixel), di64, redAt);
         std::uint8_t shownBits[8] = {};
         hn::StoreMaskBits(di, shown, shownBits);
-        for (unsigned lanes = shownBits[0] & ((1u << count) - 1); lanes != 0; lanes &= lanes - 1) {
-            const auto lane = static_cast<std::size_t>(hwy::Num0BitsBelowLS1Bit_Nonzero32(lanes));
+        for (std::size_t lane = 0; lane < count; ++lane) {
             VoxelMedium medium;
-            if (mediumOf(run, coordinates[lane], medium)) {
-                out = record(run, medium, coordinates[lane],
-                             {places[0][lane], places[1][lane], places[2][lane]}, rows[0][lane],
-                             rows[1][lane], out);
-            }
+            const bool nonEmpty = mediumOf(run, coordinates[lane], medium);
+            PlacedSplat& splat = *out;
+            splat.value = medium.value;
+            splat.weights = reinterpret_cast<const float*>(weightsAt[lane]);
+            splat.red = reinterpret_cast<float*>(redAt[lane]);
+            splat.rows = rows[lane];
+            splat.kind = !mDepthTest && isThin(medium) ? PlacedSplat::kThin
+                                                       : PlacedSplat::kStamped;
+            splat.column = columns[lane];
+            splat.first = firsts[lane];
+            splat.coordinate = coordinates[lane];
+            splat.block = run.block;
+            out += ((shownBits[0] >> lane) & 1u) & static_cast<unsigned>(nonEmpty);
         }
         return out;
     }
@@ -383,7 +442,13 @@ private:
     float* mRed;
     bool mDepthTest;
     std::uint64_t mInnerStride = 1;
-    std::vector<double> mInnerPositions; // the voxel centres' inner coordinate, per voxel index
+    // The voxel centres' inner coordinate, per voxel index, kMaxLanes on: a vector's room
+    // before the first and after the last.
+    std::vector<double> mInnerPositions;
+    std::vector<std::int32_t> mPackedExtents; // per stamp, its Extent a byte a field
+    bool mSliceAscending = true;  // the slices come in ascending coordinate
+    std::ptrdiff_t mNextSlice = 0; // storage from a voxel to the next slice's in its block
+    bool mPrefetch = false;        // the row's next slice lies in the same blocks
     VoxelRaster::RowPlace mRow{};
     bool mNearPlanes = true; // a splat of the row may come near the near or far plane
     std::vector<PlacedSplat> mPlaced;
