@@ -513,6 +513,8 @@ int SceneRenderer::budgetShare(const SplatSurvey& survey, std::uint64_t budget) 
 ImageLayer SceneRenderer::drawBrick(sg::Node& root) {
     mMeshes = render::Frame();
     image::Image drawn = mLocal.render(root);
+    // The compositing needs the memory more than a next frame its planes.
+    mLocal.releaseFrameBuffers();
     ImageLayer layer;
     if (mFootprint.width > 0) {
         layer.region = mFootprint;

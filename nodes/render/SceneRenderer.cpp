@@ -110,6 +110,12 @@ image::Image SceneRenderer::drawOnBackend(const Frame& frame, bool withDepth) {
     return renderers.cpu->draw(frame, renderers.action.statistics(), withDepth);
 }
 
+void SceneRenderer::releaseFrameBuffers() {
+    if (mRenderers->cpu) {
+        mRenderers->cpu->releasePlanes();
+    }
+}
+
 const sg::RenderStatistics& SceneRenderer::statistics() const {
     return mRenderers->action.statistics();
 }

@@ -67,6 +67,10 @@ public:
     /// meshes' depth when `withDepth`; its times go to statistics() (from zero).
     image::Image draw(const Frame& frame, bool withDepth = false);
 
+    /// @brief Frees what the backend keeps of the last frame for the next one (the CPU
+    /// backend's colour planes), for a caller that needs the memory before it draws again.
+    void releaseFrameBuffers();
+
     /// @brief The times and counts of the last render().
     const sg::RenderStatistics& statistics() const;
 

@@ -148,6 +148,8 @@ std::string CpuRenderer::description() const {
            (mThreads == 1 ? " thread)" : " threads)");
 }
 
+void CpuRenderer::releasePlanes() { mPlanes.reset(); }
+
 image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statistics,
                                bool withDepth) const {
     Clock::time_point start = Clock::now();

@@ -47,6 +47,9 @@ public:
     /// @brief What the report names the backend: "CPU (AVX2, 2 threads)".
     std::string description() const;
 
+    /// @brief Frees the colour planes kept for the next frame (one image's worth), for a caller
+    /// that draws no other frame soon and needs the memory (a rank before compositing).
+    void releasePlanes();
 
 private:
     int mThreads;
