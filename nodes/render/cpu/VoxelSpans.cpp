@@ -68,22 +68,38 @@ HWY_NOINLINE void CompositeStampOf(const StampRows& rows, const glm::vec4& value
 }
 
 // A voxel's splat placed for a band: its medium, where its stamp's rows go, and how it is
-// composited.
+// composited, in 16 bytes (the compositing reads a record a splat; the rare splat that is not
+// thin keeps the rest in a PlacedDetail).
 struct PlacedSplat {
     enum Kind : std::uint32_t {
         kThin,    // thin (IsThin()), no depth test: CompositeThinStamp() inline
         kStamped, // stamped otherwise: CompositeStampOf()
         kListed,  // across the near or far plane: CompositeVoxelAsListed()
     };
+    // The stamp's first row to composite (its offset in FootprintStamps::values, below
+    // kLargestTable), the rows to composite (at most kLargestSide) and the kind, packed.
+    static constexpr int kRowsShift = 18;
+    static constexpr int kKindShift = 24;
+    static constexpr std::uint32_t kWeightsMask = (std::uint32_t{1} << kRowsShift) - 1;
+    static constexpr std::uint32_t kRowsMask = (std::uint32_t{1} << (kKindShift - kRowsShift)) - 1;
+    static_assert(FootprintStamps::kLargestTable <= std::size_t{1} << kRowsShift);
+    static_assert(FootprintStamps::kLargestSide <= static_cast<int>(kRowsMask));
+
     const glm::vec4* value; // its medium, in the palette or the block (read as composited)
-    const float* weights;   // the stamp's first row to composite
-    float* red;             // its pixel in the red plane
-    std::int32_t rows;      // rows to composite
-    Kind kind;
+    std::uint32_t packed;   // weights | rows << kRowsShift | kind << kKindShift
+    std::int32_t red;       // its pixel in the red plane, from the plane's first row
+
+    Kind kind() const { return static_cast<Kind>(packed >> kKindShift); }
+    std::uint32_t weights() const { return packed & kWeightsMask; }
+    int rows() const { return static_cast<int>((packed >> kRowsShift) & kRowsMask); }
+};
+
+// The rest of a placed splat that is not thin, at the same index.
+struct PlacedDetail {
     std::int32_t column;                        // kStamped: the stamp's first column
     std::int32_t first;                         // kStamped: the first row composited
-    std::uint64_t coordinate;                   // not kThin: the voxel's inner coordinate
-    octree::ClassifiedGrid::StorageIndex block; // not kThin: its block's storage
+    std::uint64_t coordinate;                   // the voxel's inner coordinate
+    octree::ClassifiedGrid::StorageIndex block; // its block's storage
 };
 
 // Where the voxels of one row go in one band: their splats placed (placeRun()) before any is
@@ -101,7 +117,7 @@ public:
         : mVoxels(voxels), mGrid(voxels.voxels().grid()), mStamps(voxels.stamps()),
           mRowBegin(rowBegin), mRowEnd(rowEnd), mWidth(voxels.width()),
           mReach(voxels.setup().depthReach()), mPeak(mStamps.peak), mStride(planes.stride()),
-          mRed(planes.red(0)), mDepthTest(planes.hasDepth()),
+          mDepthTest(planes.hasDepth()),
           mThinEntries(voxels.thinEntries().data()) {
         const octree::SliceOrder& order = voxels.voxels().order();
         const int inner = order.axes()[2];
@@ -124,6 +140,11 @@ public:
         // placeLanes() writes a splat for each lane and keeps those it places: room for a
         // vector past the row's voxels.
         mPlaced.resize(count + kMaxLanes);
+        mDetails.resize(count + kMaxLanes);
+        TEXSPLAT_ASSERT(mStamps.values.size() <= FootprintStamps::kLargestTable,
+                        "RowPlacer: a stamp's offset does not fit its PlacedSplat bits");
+        TEXSPLAT_ASSERT(planes.planeStride() <= std::ptrdiff_t{INT32_MAX},
+                        "RowPlacer: a pixel's offset does not fit PlacedSplat::red");
         // The stamps' extents, a byte each (at most kLargestSide): one gather a vector.
         mPackedExtents.reserve(mStamps.extents.size());
         for (const FootprintStamps::Extent& extent : mStamps.extents) {
@@ -203,6 +224,8 @@ public:
 
     // The row's placed splats, in order.
     const PlacedSplat* placed() const { return mPlaced.data(); }
+    // The details of the row's placed splats that are not thin, at the same indices.
+    const PlacedDetail* details() const { return mDetails.data(); }
     std::size_t count() const { return mCount; }
 
 private:
@@ -346,42 +369,48 @@ private:
         // loop below only copies them (where the compiler would pair their scalings in slow
         // 64-bit vector multiplies). The stamps hold at most kLargestTable floats: an int; a
         // pixel's offset is exact in a double.
-        const hn::RebindToSigned<DD> di64;
+        // The stamp's first row composited and its first pixel, as offsets a lane (PlacedSplat):
+        // the loop below only copies them. The stamps hold at most kLargestTable floats, a
+        // plane fewer than 2^31 (the constructor's checks).
         const auto weights =
             hn::Add(hn::Mul(phase, hn::Set(di, static_cast<std::int32_t>(mStamps.stampSize))),
                     hn::Mul(hn::Sub(first, row), hn::Set(di, mStamps.columns)));
-        const auto pixel = hn::ConvertTo(
-            di64, hn::MulAdd(hn::PromoteTo(dd, first), hn::Set(dd, static_cast<double>(mStride)),
-                             hn::PromoteTo(dd, column)));
-        const auto address = [&](const float* base, auto offset) {
-            return hn::Add(hn::Set(di64, static_cast<std::int64_t>(
-                                             reinterpret_cast<std::uintptr_t>(base))),
-                           hn::ShiftLeft<2>(offset));
-        };
-        HWY_ALIGN std::int32_t columns[kMaxLanes], firsts[kMaxLanes], rows[kMaxLanes];
-        HWY_ALIGN std::int64_t weightsAt[kMaxLanes], redAt[kMaxLanes];
+        const auto packed =
+            hn::Or(weights, hn::ShiftLeft<PlacedSplat::kRowsShift>(hn::Sub(last, first)));
+        const auto pixel =
+            hn::Add(hn::Mul(first, hn::Set(di, static_cast<std::int32_t>(mStride))), column);
+        HWY_ALIGN std::int32_t packedAt[kMaxLanes], redAt[kMaxLanes], columns[kMaxLanes],
+            firsts[kMaxLanes];
+        hn::Store(packed, di, packedAt);
         hn::Store(column, di, columns);
         hn::Store(first, di, firsts);
-        hn::Store(hn::Sub(last, first), di, rows);
-        hn::Store(address(mStamps.values.data(), hn::PromoteTo(di64, weights)), di64, weightsAt);
-        hn::Store(address(mRed, pixel), di64, redAt);
+        hn::Store(pixel, di, redAt);
         std::uint8_t shownBits[8] = {};
         hn::StoreMaskBits(di, shown, shownBits);
+        // In locals: the compiler cannot tell the members from the stores below.
+        const bool depthTest = mDepthTest;
+        PlacedDetail* details = mDetails.data() + (out - mPlaced.data());
         for (std::size_t lane = 0; lane < count; ++lane) {
             VoxelMedium medium;
             const bool nonEmpty = mediumOf(run, coordinates[lane], medium);
+            const bool thin = !depthTest && isThin(medium);
             PlacedSplat& splat = *out;
             splat.value = medium.value;
-            splat.weights = reinterpret_cast<const float*>(weightsAt[lane]);
-            splat.red = reinterpret_cast<float*>(redAt[lane]);
-            splat.rows = rows[lane];
-            splat.kind = !mDepthTest && isThin(medium) ? PlacedSplat::kThin
-                                                       : PlacedSplat::kStamped;
-            splat.column = columns[lane];
-            splat.first = firsts[lane];
-            splat.coordinate = coordinates[lane];
-            splat.block = run.block;
-            out += ((shownBits[0] >> lane) & 1u) & static_cast<unsigned>(nonEmpty);
+            splat.packed = static_cast<std::uint32_t>(packedAt[lane]) |
+                           (thin ? std::uint32_t{PlacedSplat::kThin}
+                                 : std::uint32_t{PlacedSplat::kStamped})
+                               << PlacedSplat::kKindShift;
+            splat.red = redAt[lane];
+            if (!thin) {
+                PlacedDetail& detail = *details;
+                detail.column = columns[lane];
+                detail.first = firsts[lane];
+                detail.coordinate = coordinates[lane];
+                detail.block = run.block;
+            }
+            const unsigned placed = ((shownBits[0] >> lane) & 1u) & static_cast<unsigned>(nonEmpty);
+            out += placed;
+            details += placed;
         }
         return out;
     }
@@ -393,20 +422,22 @@ private:
                         PlacedSplat* out) {
         PlacedSplat& splat = *out;
         splat.value = medium.value;
-        splat.weights = mStamps.values.data() +
-                        static_cast<std::size_t>(place.phase) * mStamps.stampSize +
-                        static_cast<std::size_t>(first - place.row) *
-                            static_cast<std::size_t>(mStamps.columns);
-        splat.red = mRed + first * mStride + place.column;
-        splat.rows = last - first;
+        const auto weights = static_cast<std::uint32_t>(
+            static_cast<std::size_t>(place.phase) * mStamps.stampSize +
+            static_cast<std::size_t>(first - place.row) *
+                static_cast<std::size_t>(mStamps.columns));
+        splat.packed = weights | static_cast<std::uint32_t>(last - first)
+                                     << PlacedSplat::kRowsShift;
+        splat.red = static_cast<std::int32_t>(first * mStride + place.column);
         if (!mDepthTest && isThin(medium)) {
-            splat.kind = PlacedSplat::kThin;
+            splat.packed |= std::uint32_t{PlacedSplat::kThin} << PlacedSplat::kKindShift;
         } else {
-            splat.kind = PlacedSplat::kStamped;
-            splat.column = place.column;
-            splat.first = first;
-            splat.coordinate = c;
-            splat.block = run.block;
+            splat.packed |= std::uint32_t{PlacedSplat::kStamped} << PlacedSplat::kKindShift;
+            PlacedDetail& detail = mDetails[static_cast<std::size_t>(out - mPlaced.data())];
+            detail.column = place.column;
+            detail.first = first;
+            detail.coordinate = c;
+            detail.block = run.block;
         }
         return out + 1;
     }
@@ -417,9 +448,10 @@ private:
                               PlacedSplat* out) {
         PlacedSplat& splat = *out;
         splat.value = value;
-        splat.coordinate = c;
-        splat.kind = PlacedSplat::kListed;
-        splat.block = run.block;
+        splat.packed = std::uint32_t{PlacedSplat::kListed} << PlacedSplat::kKindShift;
+        PlacedDetail& detail = mDetails[static_cast<std::size_t>(out - mPlaced.data())];
+        detail.coordinate = c;
+        detail.block = run.block;
         return out + 1;
     }
 
@@ -439,7 +471,6 @@ private:
     double mReach;
     float mPeak;
     std::ptrdiff_t mStride;
-    float* mRed;
     bool mDepthTest;
     std::uint64_t mInnerStride = 1;
     // The voxel centres' inner coordinate, per voxel index, kMaxLanes on: a vector's room
@@ -452,6 +483,7 @@ private:
     VoxelRaster::RowPlace mRow{};
     bool mNearPlanes = true; // a splat of the row may come near the near or far plane
     std::vector<PlacedSplat> mPlaced;
+    std::vector<PlacedDetail> mDetails; // per placed splat that is not thin
     std::size_t mCount = 0;
     const std::uint8_t* mThinEntries; // Palette: VoxelRaster::thinEntries()
 };
@@ -470,33 +502,38 @@ void CompositeVoxelsIn(const VoxelRaster& voxels, ColorPlanes& planes, int rowBe
     RowPlacer<kStorage> placer(voxels, planes, rowBegin, rowEnd);
     glm::u64vec3 rowVoxel(0);
     std::uint64_t placedRow = ~std::uint64_t{0};
+    const float* stampValues = voxels.stamps().values.data();
+    float* red = planes.red(0);
     const auto composite = [&] {
         const StampTag d;
         const PlacedSplat* placed = placer.placed();
         for (std::size_t i = 0; i < placer.count(); ++i) {
             const PlacedSplat& splat = placed[i];
             StampRows rows = rowsOf;
-            rows.weights = splat.weights;
-            rows.red = splat.red;
-            rows.rows = splat.rows;
-            if (splat.kind == PlacedSplat::kThin) {
+            rows.weights = stampValues + splat.weights();
+            rows.red = red + splat.red;
+            rows.rows = splat.rows();
+            const PlacedSplat::Kind kind = splat.kind();
+            if (kind == PlacedSplat::kThin) {
                 const glm::vec4& value = *splat.value;
                 const float color[3] = {value.r, value.g, value.b};
                 CompositeThinStamp(d, rows, ThinMedium<StampTag>(d, color, value.w));
-            } else if (splat.kind == PlacedSplat::kStamped) {
+            } else if (kind == PlacedSplat::kStamped) {
                 // As the list's splat: its depth plane from SplatSetup.
+                const PlacedDetail& detail = placer.details()[i];
                 glm::u64vec3 voxel = rowVoxel;
-                voxel[axes[2]] = splat.coordinate;
-                const SplatRaster raster = voxels.setup().orthographic(
-                    octree::voxelSplat(voxels.voxels().grid(), voxel,
-                                       splat.block + octree::ClassifiedGrid::offsetInBlock(voxel)));
-                const StampDepth depth{raster.depth, splat.column, splat.first};
+                voxel[axes[2]] = detail.coordinate;
+                const SplatRaster raster = voxels.setup().orthographic(octree::voxelSplat(
+                    voxels.voxels().grid(), voxel,
+                    detail.block + octree::ClassifiedGrid::offsetInBlock(voxel)));
+                const StampDepth depth{raster.depth, detail.column, detail.first};
                 CompositeStampOf(rows, *splat.value, peak, planes.hasDepth() ? &depth : nullptr);
             } else {
+                const PlacedDetail& detail = placer.details()[i];
                 glm::u64vec3 voxel = rowVoxel;
-                voxel[axes[2]] = splat.coordinate;
+                voxel[axes[2]] = detail.coordinate;
                 CompositeVoxelAsListed(voxels, voxel,
-                                       splat.block + octree::ClassifiedGrid::offsetInBlock(voxel),
+                                       detail.block + octree::ClassifiedGrid::offsetInBlock(voxel),
                                        planes, rowBegin, rowEnd);
             }
         }
