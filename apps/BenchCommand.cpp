@@ -272,6 +272,7 @@ void runLegibilityBench(const BenchArguments& arguments) {
         std::filesystem::create_directories(arguments.images);
     }
     std::vector<bench::LegibilityResult> rows;
+    std::fprintf(stderr, "%s", bench::legibilityTableHeader().c_str());
     for (const bench::LegibilityCase& what : bench::legibilityCases(backends)) {
         bench::LegibilityOptions options;
         options.repeat = arguments.repeat;
@@ -279,7 +280,7 @@ void runLegibilityBench(const BenchArguments& arguments) {
             options.imagePath = arguments.images + "/" + bench::legibilityImageName(what);
         }
         rows.push_back(bench::measureLegibility(what, options));
-        std::fprintf(stderr, "%s", bench::legibilityTable({rows.back()}).c_str());
+        std::fprintf(stderr, "%s", bench::legibilityTableRow(rows.back()).c_str());
     }
     std::printf("texsplat bench --legibility: median and 90th percentile of the angle between the "
                 "image's streaks (structure tensor of central differences, smoothed over half a "

@@ -12,7 +12,8 @@
 #            order + draw per splat and the peak resident memory, from `render --time-report`
 #
 # The machine may be shared: ratios come from measurements close in time (the same round), and
-# the table says the load. Needs g++, numpy and python3-vtk9 (the reference and the VTK peer),
+# the table says the load. Needs g++, numpy and python3-vtk9 (the reference and the VTK peer:
+# `bash scripts/install-deps.sh --peers`),
 # and texsplat built with GL for the GL image (without it that row is left out).
 # Usage: scripts/cpu-backend-targets.sh [PATH/TO/texsplat or build dir] [ROUNDS]
 #   OUT     where the table goes   [docs/results/cpu-targets.md]

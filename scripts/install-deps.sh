@@ -5,6 +5,9 @@
 #                                          fuzzing, the docs' commands
 #   bash scripts/install-deps.sh --build   only what the texsplat command line needs (the README's
 #                                          first command; the rest is for the test suite)
+#   bash scripts/install-deps.sh --peers   the peers benchmarks measure texsplat against, beside
+#                                          everything: VTK 9 (scripts/cpu-backend-targets.sh,
+#                                          scripts/vtk-peer.py; not needed by CI)
 set -euo pipefail
 export DEBIAN_FRONTEND=noninteractive
 build=(
@@ -32,10 +35,12 @@ tests=(
     # OpenMPI; the README's first command builds without it.
     libopenmpi-dev openmpi-bin
 )
+peers=(python3-vtk9)
 case "${1:-}" in
     --build) packages=("${build[@]}") ;;
     "") packages=("${build[@]}" "${tests[@]}") ;;
-    *) echo "usage: bash scripts/install-deps.sh [--build]" >&2; exit 2 ;;
+    --peers) packages=("${build[@]}" "${tests[@]}" "${peers[@]}") ;;
+    *) echo "usage: bash scripts/install-deps.sh [--build | --peers]" >&2; exit 2 ;;
 esac
 apt-get update
 apt-get install -y --no-install-recommends "${packages[@]}"

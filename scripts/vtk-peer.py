@@ -194,6 +194,11 @@ def main():
                         help="VTK's ray sample distance in voxels")
     parser.add_argument("--out", help="keep the images and the scene in this folder")
     args = parser.parse_args()
+    try:
+        import vtk  # noqa: F401 (checked before anything is rendered)
+    except ImportError:
+        sys.exit("vtk-peer.py: VTK 9's Python module is not installed; as root: "
+                 "bash scripts/install-deps.sh --peers (Debian's python3-vtk9)")
     if not os.environ.get("DISPLAY") and not os.environ.get("TEXSPLAT_UNDER_XVFB"):
         env = dict(os.environ, TEXSPLAT_UNDER_XVFB="1")
         sys.exit(subprocess.run(["xvfb-run", "-a", sys.executable] + sys.argv, env=env).returncode)

@@ -19,7 +19,6 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
-#include <sstream>
 
 namespace texsplat::bench {
 namespace {
@@ -214,34 +213,39 @@ std::string legibilityImageName(const LegibilityCase& what) {
     return name + std::to_string(static_cast<int>(std::lround(what.pixelsPerVoxel))) + ".png";
 }
 
-std::string legibilityTable(const std::vector<LegibilityResult>& rows) {
-    std::ostringstream table;
-    table << "  field        marks      backend  px/voxel  image      median    p90  LIC median  "
-             "LIC p90   skew  orientation  frame\n";
-    for (const LegibilityResult& row : rows) {
-        char line[256];
-        std::string field = fieldName(row.what.field);
-        if (row.what.field == LegibilityField::Uniform) {
-            char angle[32];
-            std::snprintf(angle, sizeof(angle), " %g°", static_cast<double>(row.what.angle));
-            field += angle;
-        }
-        char orientation[32] = "";
-        if (row.what.field == LegibilityField::Uniform) {
-            std::snprintf(orientation, sizeof(orientation), "%.1f°", row.orientation);
-        }
-        std::snprintf(line, sizeof(line),
-                      "  %-12s %-10s %-8s %8g  %4dx%-4d %5.1f° %5.1f°      %5.1f°   %5.1f°  "
-                      "%5.2f  %11s  %.3f s\n",
-                      field.c_str(),
-                      row.what.type == render::MarkType::Scratches ? "SCRATCHES" : "PARTICLES",
-                      row.what.backend == render::Backend::Gl ? "gl" : "cpu",
-                      static_cast<double>(row.what.pixelsPerVoxel), row.width, row.width,
-                      row.marks.median, row.marks.percentile90, row.reference.median,
-                      row.reference.percentile90, row.skew, orientation, row.frameSeconds);
-        table << line;
+std::string legibilityTableHeader() {
+    return "  field        marks      backend  px/voxel  image      median    p90  LIC median  "
+           "LIC p90   skew  orientation  frame\n";
+}
+
+std::string legibilityTableRow(const LegibilityResult& row) {
+    std::string field = fieldName(row.what.field);
+    char orientation[32] = "";
+    if (row.what.field == LegibilityField::Uniform) {
+        char angle[32];
+        std::snprintf(angle, sizeof(angle), " %g°", static_cast<double>(row.what.angle));
+        field += angle;
+        std::snprintf(orientation, sizeof(orientation), "%.1f°", row.orientation);
     }
-    return table.str();
+    char line[256];
+    std::snprintf(line, sizeof(line),
+                  "  %-12s %-10s %-8s %8g  %4dx%-4d %5.1f° %5.1f°      %5.1f°   %5.1f°  "
+                  "%5.2f  %11s  %.3f s\n",
+                  field.c_str(),
+                  row.what.type == render::MarkType::Scratches ? "SCRATCHES" : "PARTICLES",
+                  row.what.backend == render::Backend::Gl ? "gl" : "cpu",
+                  static_cast<double>(row.what.pixelsPerVoxel), row.width, row.width,
+                  row.marks.median, row.marks.percentile90, row.reference.median,
+                  row.reference.percentile90, row.skew, orientation, row.frameSeconds);
+    return line;
+}
+
+std::string legibilityTable(const std::vector<LegibilityResult>& rows) {
+    std::string table = legibilityTableHeader();
+    for (const LegibilityResult& row : rows) {
+        table += legibilityTableRow(row);
+    }
+    return table;
 }
 
 } // namespace texsplat::bench

@@ -75,7 +75,12 @@ std::vector<LegibilityCase> legibilityCases(const std::vector<render::Backend>& 
 /// "uniform30-particles-gl-16.png".
 std::string legibilityImageName(const LegibilityCase& what);
 
-/// @brief The rows as a text table, one per case.
+/// @brief The rows as a text table, one per case: legibilityTableHeader() and a
+/// legibilityTableRow() per row.
 std::string legibilityTable(const std::vector<LegibilityResult>& rows);
+/// @brief The table's column names, one line.
+std::string legibilityTableHeader();
+/// @brief One row of the table, one line (for progress while the cases are measured).
+std::string legibilityTableRow(const LegibilityResult& row);
 
 } // namespace texsplat::bench

@@ -181,7 +181,7 @@ std::uint64_t Compositor::memoryBound(const ImageLayer& layer) const {
     return 3 * image + layer.pixels.size() * sizeof(glm::vec4);
 }
 
-std::vector<glm::vec4> Compositor::composite(ImageLayer layer,
+image::Pixels Compositor::composite(ImageLayer layer,
                                              const std::vector<int>& backToFront) {
     TEXSPLAT_ASSERT(static_cast<int>(backToFront.size()) == mSize,
                     "Compositor::composite(): one position per rank");
@@ -189,7 +189,7 @@ std::vector<glm::vec4> Compositor::composite(ImageLayer layer,
                                           : compositeReduce(layer, backToFront);
 }
 
-std::vector<glm::vec4> Compositor::compositeRadixK(ImageLayer layer,
+image::Pixels Compositor::compositeRadixK(ImageLayer layer,
                                                    const std::vector<int>& backToFront) {
     const int position = static_cast<int>(std::find(backToFront.begin(), backToFront.end(), mRank) -
                                           backToFront.begin());
@@ -239,7 +239,7 @@ std::vector<glm::vec4> Compositor::compositeRadixK(ImageLayer layer,
         MPI_Send(message.data(), static_cast<int>(message.size()), MPI_FLOAT, 0, kGatherTag, mComm);
         return {};
     }
-    std::vector<glm::vec4> image(
+    image::Pixels image(
         static_cast<std::size_t>(mWidth) * static_cast<std::size_t>(mHeight), glm::vec4(0.0f));
     const auto place = [&](const ImageLayer& part) {
         for (int y = part.region.y; y < part.region.y + part.region.height; ++y) {
@@ -256,7 +256,7 @@ std::vector<glm::vec4> Compositor::compositeRadixK(ImageLayer layer,
     return image;
 }
 
-std::vector<glm::vec4> Compositor::compositeReduce(const ImageLayer& layer,
+image::Pixels Compositor::compositeReduce(const ImageLayer& layer,
                                                    const std::vector<int>& backToFront) {
     std::vector<int> position(static_cast<std::size_t>(mSize));
     for (int i = 0; i < mSize; ++i) {
@@ -273,7 +273,7 @@ std::vector<glm::vec4> Compositor::compositeReduce(const ImageLayer& layer,
     MPI_Type_commit(&pixel);
     MPI_Op overOp = MPI_OP_NULL;
     MPI_Op_create(&overPixels, 0, &overOp);
-    std::vector<glm::vec4> image(
+    image::Pixels image(
         static_cast<std::size_t>(mWidth) * static_cast<std::size_t>(mHeight), glm::vec4(0.0f));
     for (int y = 0; y < layer.region.height && !layer.isEmpty(); ++y) {
         std::memcpy(&image[static_cast<std::size_t>(layer.region.y + y) * std::size_t(mWidth) +

@@ -43,7 +43,7 @@ public:
     /// (moved in), so that its pixels are freed as soon as they are passed on.
     /// Cannot fail (it allocates what its first step checked, checkMemory()): no rank
     /// gives up while the others wait for it.
-    std::vector<glm::vec4> composite(ImageLayer layer, const std::vector<int>& backToFront);
+    image::Pixels composite(ImageLayer layer, const std::vector<int>& backToFront);
 
     /// @brief The bytes compositing may allocate on this rank at most, for a step that checks
     /// them (checkMemory()) before compositing starts.
@@ -54,8 +54,8 @@ public:
     static std::vector<int> radixRounds(int ranks);
 
 private:
-    std::vector<glm::vec4> compositeRadixK(ImageLayer layer, const std::vector<int>& backToFront);
-    std::vector<glm::vec4> compositeReduce(const ImageLayer& layer,
+    image::Pixels compositeRadixK(ImageLayer layer, const std::vector<int>& backToFront);
+    image::Pixels compositeReduce(const ImageLayer& layer,
                                            const std::vector<int>& backToFront);
 
     MPI_Comm mComm;

@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/image/ImageRegion.h"
+#include "nodes/image/Pixels.h"
 
 #include <glm/vec4.hpp>
 
@@ -13,7 +14,7 @@ namespace texsplat::distributed {
 /// What a rank draws of its brick (the brick's screen footprint) and what compositing passes on.
 struct ImageLayer {
     image::ImageRegion region;     ///< where the pixels lie in the image; empty: nothing drawn
-    std::vector<glm::vec4> pixels; ///< region.width x region.height, top row first
+    image::Pixels pixels; ///< region.width x region.height, top row first
 
     /// @brief Whether the layer holds no pixel.
     bool isEmpty() const { return region.width <= 0 || region.height <= 0; }

@@ -268,7 +268,7 @@ std::optional<image::Image> SceneRenderer::render(sg::Node& root, bool withDepth
     mStatistics.splats = frame.splats;
     mStatistics.footprint = layer.region;
     Compositor compositor(mComm, mOptions.width, mOptions.height, mCompositing);
-    std::vector<glm::vec4> composite = timed(at(Step::Composite), [&] {
+    image::Pixels composite = timed(at(Step::Composite), [&] {
         runAgreed(mComm, [&] {
             checkMemory("compositing a " + std::to_string(mOptions.width) + "x" +
                             std::to_string(mOptions.height) + " image",
@@ -523,7 +523,7 @@ ImageLayer SceneRenderer::drawBrick(sg::Node& root) {
     return layer;
 }
 
-image::Image SceneRenderer::finish(std::vector<glm::vec4> composite, bool withDepth) {
+image::Image SceneRenderer::finish(image::Pixels composite, bool withDepth) {
     if (mMeshes.meshes.empty()) {
         // The composite over the background, in place: no second image of the frame's size.
         image::Image image(mOptions.width, mOptions.height, std::move(composite));

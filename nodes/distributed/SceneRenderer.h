@@ -134,7 +134,7 @@ private:
     // This rank's image: its splats on its bricks' screen footprint.
     ImageLayer drawBrick(sg::Node& root);
     // Rank 0: the composite over the meshes and the background.
-    image::Image finish(std::vector<glm::vec4> composite, bool withDepth);
+    image::Image finish(image::Pixels composite, bool withDepth);
 
     MPI_Comm mComm;
     int mRank = 0;

@@ -15,8 +15,7 @@ Image::Image(int width, int height) : mWidth(width), mHeight(height) {
     mPixels.assign(checkedPixelCount(), glm::vec4(0.0f));
 }
 
-Image::Image(int width, int height, std::vector<glm::vec4> pixels)
-    : mWidth(width), mHeight(height) {
+Image::Image(int width, int height, Pixels pixels) : mWidth(width), mHeight(height) {
     const std::size_t count = checkedPixelCount();
     if (pixels.size() != count)
         throw DataError("image size " + sizeString() + " needs " + std::to_string(count) +
@@ -47,7 +46,13 @@ std::size_t Image::depthIndex(int x, int y) const {
     return index(x, y);
 }
 
-std::vector<glm::vec4> Image::takePixels() && {
+Image::Image(Unset /*tag*/, int width, int height) : mWidth(width), mHeight(height) {
+    mPixels.resize(checkedPixelCount());
+}
+
+Image Image::uncleared(int width, int height) { return Image(Unset{}, width, height); }
+
+Pixels Image::takePixels() && {
     mWidth = 0;
     mHeight = 0;
     mDepth.clear();

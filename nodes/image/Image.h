@@ -1,6 +1,7 @@
 #pragma once
 
 #include "nodes/image/ImageRegion.h"
+#include "nodes/image/Pixels.h"
 
 #include <glm/vec4.hpp>
 
@@ -49,7 +50,12 @@ public:
     /// @brief A width × height image of `pixels` (premultiplied RGBA, top row first, width ×
     /// height of them), taken without a copy. Throws DataError as above, and when the count of
     /// pixels is not width × height.
-    Image(int width, int height, std::vector<glm::vec4> pixels);
+    Image(int width, int height, Pixels pixels);
+
+    /// @brief A width × height image whose pixels are left unset, for a producer that writes
+    /// every one of them (a read-back): clearing them first would cost a pass over the image.
+    /// Throws DataError as Image(width, height).
+    static Image uncleared(int width, int height);
 
     /// @brief Number of columns.
     int width() const { return mWidth; }
@@ -65,10 +71,10 @@ public:
     /// @brief Sets pixel (x, y) to a premultiplied RGBA value.
     void setPixel(int x, int y, const glm::vec4& rgba) { mPixels[index(x, y)] = rgba; }
     /// @brief All pixels, row by row from the top row, width() per row.
-    const std::vector<glm::vec4>& pixels() const { return mPixels; }
+    const Pixels& pixels() const { return mPixels; }
     /// @brief Moves the pixels out, for a consumer that keeps them (a rank's layer for
     /// compositing), without a copy; the image is left without pixels or depth, 0 x 0.
-    std::vector<glm::vec4> takePixels() &&;
+    Pixels takePixels() &&;
     /// @brief The pixels as one writable array of pixelCount() values in the order of pixels(),
     /// for producers that fill an image in one go (a framebuffer read-back).
     glm::vec4* data() { return mPixels.data(); }
@@ -108,6 +114,8 @@ public:
     std::string sizeString() const;
 
 private:
+    struct Unset {}; // uncleared()'s constructor
+    Image(Unset tag, int width, int height);
     // width × height, after the constructors' checks (DataError).
     std::size_t checkedPixelCount() const;
     std::size_t index(int x, int y) const;
@@ -115,7 +123,7 @@ private:
 
     int mWidth;
     int mHeight;
-    std::vector<glm::vec4> mPixels;
+    Pixels mPixels;
     std::vector<float> mDepth;
 };
 

@@ -47,8 +47,8 @@ std::vector<int> shuffledOrder(int ranks) {
 }
 
 // The composite of every rank's layer in `order`, one pixel at a time in one process.
-std::vector<glm::vec4> serialComposite(const std::vector<int>& order) {
-    std::vector<glm::vec4> image(std::size_t(kWidth) * kHeight, glm::vec4(0.0f));
+image::Pixels serialComposite(const std::vector<int>& order) {
+    image::Pixels image(std::size_t(kWidth) * kHeight, glm::vec4(0.0f));
     for (const int rank : order) {
         const ImageLayer layer = layerOf(rank);
         for (int y = layer.region.y; y < layer.region.y + layer.region.height && !layer.isEmpty();
@@ -68,12 +68,12 @@ class CompositorTest : public ::testing::TestWithParam<Compositing> {};
 TEST_P(CompositorTest, compositesTheRanksLayersInTheGivenOrder) {
     const std::vector<int> order = shuffledOrder(test::ranks());
     Compositor compositor(MPI_COMM_WORLD, kWidth, kHeight, GetParam());
-    const std::vector<glm::vec4> image = compositor.composite(layerOf(test::rank()), order);
+    const image::Pixels image = compositor.composite(layerOf(test::rank()), order);
     if (test::rank() != 0) {
         EXPECT_TRUE(image.empty());
         return;
     }
-    const std::vector<glm::vec4> expected = serialComposite(order);
+    const image::Pixels expected = serialComposite(order);
     ASSERT_EQ(image.size(), expected.size());
     float largest = 0.0f;
     for (std::size_t i = 0; i < image.size(); ++i) {

@@ -7,11 +7,11 @@
 #include <cmath>
 #include <limits>
 #include <utility>
-#include <vector>
 
 using texsplat::DataError;
 using texsplat::image::Image;
 using texsplat::image::ImageRegion;
+using texsplat::image::Pixels;
 
 namespace {
 
@@ -61,19 +61,33 @@ TEST(Image, storesRowsTopFirstAndFillsInOneGo) {
     EXPECT_EQ(image.pixel(1, 1), glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
 }
 
+TEST(Image, unclearedHasTheSizeAndChecksOfAClearedOne) {
+    Image image = Image::uncleared(3, 2);
+    EXPECT_EQ(image.width(), 3);
+    EXPECT_EQ(image.height(), 2);
+    EXPECT_EQ(image.pixelCount(), 6u);
+    EXPECT_FALSE(image.hasDepth());
+    image.fill(glm::vec4(0.5f));
+    EXPECT_EQ(image.pixel(2, 1), glm::vec4(0.5f));
+    EXPECT_EQ(dataErrorMessage([] { Image::uncleared(3, 0); }),
+              "image size 3x0 is empty: width and height must be at least 1");
+    EXPECT_EQ(dataErrorMessage([] { Image::uncleared(1 << 15, 1 << 14); }),
+              "image size 32768x16384 is too large: at most 268435456 pixels");
+}
+
 TEST(Image, takesAndGivesItsPixelsWithoutACopy) {
-    std::vector<glm::vec4> pixels(6, glm::vec4(0.25f));
+    Pixels pixels(6, glm::vec4(0.25f));
     pixels[5] = glm::vec4(1.0f);
     const glm::vec4* storage = pixels.data();
     Image image(3, 2, std::move(pixels));
     EXPECT_EQ(image.pixel(2, 1), glm::vec4(1.0f));
     EXPECT_EQ(image.pixels().data(), storage);
     image.addDepth(1.0f);
-    const std::vector<glm::vec4> taken = std::move(image).takePixels();
+    const Pixels taken = std::move(image).takePixels();
     EXPECT_EQ(taken.data(), storage);
     EXPECT_EQ(image.width(), 0); // NOLINT(bugprone-use-after-move): left empty, as documented
     EXPECT_FALSE(image.hasDepth());
-    EXPECT_EQ(dataErrorMessage([] { Image(3, 2, std::vector<glm::vec4>(5)); }),
+    EXPECT_EQ(dataErrorMessage([] { Image(3, 2, Pixels(5)); }),
               "image size 3x2 needs 6 pixels, got 5");
     EXPECT_EQ(dataErrorMessage([] { Image(0, 2, {}); }),
               "image size 0x2 is empty: width and height must be at least 1");

@@ -1,5 +1,7 @@
 #include "nodes/render/cpu/ColorPlanes.h"
 
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 
 namespace texsplat::render::cpu {
@@ -8,6 +10,8 @@ namespace {
 // Floats per 4 KiB page and per cache line.
 constexpr std::ptrdiff_t kPageFloats = 1024;
 constexpr std::ptrdiff_t kLineFloats = 16;
+// Floats cleared by one task: 64 KiB, a piece of work worth a task and a whole number of pages.
+constexpr std::ptrdiff_t kPieceFloats = 16 * kPageFloats;
 
 } // namespace
 
@@ -22,12 +26,14 @@ ColorPlanes::ColorPlanes(int width, int height, const glm::vec4& background, boo
 }
 
 void ColorPlanes::clear(const glm::vec4& background) {
-    for (int channel = 0; channel < 4; ++channel) {
-        std::fill_n(plane(channel), mPlaneStride, background[channel]);
-    }
-    if (mHasDepth) {
-        std::fill_n(plane(4), mPlaneStride, 1.0f);
-    }
+    const int planes = mHasDepth ? 5 : 4;
+    const std::ptrdiff_t piecesPerPlane = (mPlaneStride + kPieceFloats - 1) / kPieceFloats;
+    tbb::parallel_for(std::ptrdiff_t{0}, planes * piecesPerPlane, [&](std::ptrdiff_t piece) {
+        const int index = static_cast<int>(piece / piecesPerPlane);
+        const std::ptrdiff_t begin = piece % piecesPerPlane * kPieceFloats;
+        std::fill_n(plane(index) + begin, std::min(kPieceFloats, mPlaneStride - begin),
+                    index < 4 ? background[index] : 1.0f);
+    });
 }
 
 void ColorPlanes::copyRows(image::Image& image, int rowBegin, int rowEnd, bool withDepth) const {
@@ -50,7 +56,7 @@ void ColorPlanes::copyRows(image::Image& image, int rowBegin, int rowEnd, bool w
 }
 
 image::Image ColorPlanes::toImage(bool withDepth) const {
-    image::Image result(mWidth, mHeight);
+    image::Image result = image::Image::uncleared(mWidth, mHeight);
     if (withDepth) {
         result.addDepth(1.0f);
     }

@@ -31,7 +31,8 @@ public:
 
     /// @brief Clears the planes to `background` (and the depth plane to 1), as a new object of
     /// the same size and depth would be, in the memory they hold: a frame after frame of the
-    /// same size faults no page in.
+    /// same size faults no page in. Pieces of the planes are cleared in parallel (in the calling
+    /// task arena), so that a new object's pages are also faulted in by all its threads.
     void clear(const glm::vec4& background);
 
     int width() const { return mWidth; }   ///< columns

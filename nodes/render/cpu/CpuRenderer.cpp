@@ -155,21 +155,25 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
     Clock::time_point start = Clock::now();
     const std::vector<PreparedBatch> batches = prepareBatches(frame, *mSamplers);
     const bool withMeshDepth = !frame.meshes.empty();
-    if (mPlanes && mPlanes->width() == frame.width && mPlanes->height() == frame.height &&
-        mPlanes->hasDepth() == withMeshDepth) {
-        mPlanes->clear(frame.background);
-    } else {
-        mPlanes.reset();
-        mPlanes = std::make_unique<ColorPlanes>(frame.width, frame.height, frame.background,
-                                                withMeshDepth);
-    }
-    ColorPlanes& planes = *mPlanes;
     std::optional<image::Image> readBack; // the image, where the draw has read it back
     const Bands bands(frame.height, mThreads);
     // More threads than the hardware has would only wait for each other (and oneTBB warns);
     // the bands still follow mThreads, which changes nothing in the image.
     tbb::task_arena arena(
         std::min(mThreads, static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))));
+    // The planes are cleared by the arena's threads (ColorPlanes::clear()), a new object's pages
+    // faulted in by all of them.
+    arena.execute([&] {
+        if (mPlanes && mPlanes->width() == frame.width && mPlanes->height() == frame.height &&
+            mPlanes->hasDepth() == withMeshDepth) {
+            mPlanes->clear(frame.background);
+        } else {
+            mPlanes.reset();
+            mPlanes = std::make_unique<ColorPlanes>(frame.width, frame.height, frame.background,
+                                                    withMeshDepth);
+        }
+    });
+    ColorPlanes& planes = *mPlanes;
     arena.execute([&] {
         if (!frame.meshes.empty()) {
             const MeshRasterizer meshes(frame.meshes, frame.width, frame.height);
@@ -193,8 +197,9 @@ image::Image CpuRenderer::draw(const Frame& frame, sg::RenderStatistics& statist
             const VoxelBands voxelBands(voxels.rowRange(), mThreads);
             // Each band is copied into the image as soon as it is drawn, by its thread, while
             // its rows are in that core's caches; the rows no band covers as two more pieces.
-            // A read-back after the bands would be one thread's pass over the whole image.
-            readBack.emplace(frame.width, frame.height);
+            // A read-back after the bands would be one thread's pass over the whole image (and
+            // the image is not cleared first: the pieces write all of it).
+            readBack.emplace(image::Image::uncleared(frame.width, frame.height));
             if (withDepth) {
                 readBack->addDepth(1.0f);
             }

@@ -240,7 +240,7 @@ image::Image GlRenderer::draw(const Frame& frame, sg::RenderStatistics& statisti
     const bool isTiled = frame.width > tileSize || frame.height > tileSize;
     useFramebuffer(std::min(frame.width, tileSize), std::min(frame.height, tileSize));
     Prepared prepared = prepare(frame, statistics);
-    image::Image image(frame.width, frame.height);
+    image::Image image = image::Image::uncleared(frame.width, frame.height); // tiles cover it
     if (withDepth) {
         image.addDepth();
     }
