@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace texsplat::render::cpu {
 namespace {
@@ -51,12 +52,6 @@ FootprintStamps::FootprintStamps(const FootprintSampler& sampler, const StampGeo
     columnOffset = static_cast<int>(std::ceil(-halfExtent[0]));
     rowOffset = static_cast<int>(std::ceil(-halfExtent[1]));
     peak = sampler.peak * lengthScale;
-    // The footprint with its centre (px, py) pixels past the centre of pixel (0, 0), at stamp
-    // pixel (column, row).
-    const auto exact = [&](double px, double py, int column, int row) {
-        return footprintAt(sampler, squareFromPixel, lengthScale, column + columnOffset - px,
-                           row + rowOffset - py);
-    };
     for (phaseBits = 4;; ++phaseBits) {
         const int count = phases();
         const double last = static_cast<double>(count - 1) / count;
@@ -69,32 +64,43 @@ FootprintStamps::FootprintStamps(const FootprintSampler& sampler, const StampGeo
         extents.assign(static_cast<std::size_t>(count * count), Extent{columns, 0, rows, 0});
         error = 0.0f;
         // The centres a stamp stands for lie within half a phase of its own, along each axis:
-        // the footprint strays farthest from the stamp at the corners and edges of that square.
-        const double half = 0.5 / count;
-        constexpr double kAround[3] = {-1.0, 0.0, 1.0};
-        for (int qy = 0; qy < count; ++qy) {
-            for (int qx = 0; qx < count; ++qx) {
-                const std::int32_t phase = phaseIndex(qx, qy);
-                float* stamp = values.data() + static_cast<std::size_t>(phase) * stampSize;
-                Extent& extent = extents[static_cast<std::size_t>(phase)];
-                const double px = static_cast<double>(qx) / count;
-                const double py = static_cast<double>(qy) / count;
-                for (int row = 0; row < rows; ++row) {
-                    for (int column = 0; column < columns; ++column) {
-                        const float value = exact(px, py, column, row);
-                        stamp[static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
-                              static_cast<std::size_t>(column)] = value;
+        // the footprint strays farthest from the stamp at the corners and edges of that square,
+        // which lie on the grid of half phases, h/(2·phases()) for h = -1 … 2·phases() - 1
+        // (stamp (qx, qy) at h = 2·qx, 2·qy). Per stamp pixel, the footprint at each of those
+        // centres once, shared by the stamps around it.
+        const int sides = 2 * count + 1;
+        const double halfPhases = 2.0 * count; // half phases a pixel
+        std::vector<float> around(static_cast<std::size_t>(sides * sides));
+        const auto at = [&](int hx, int hy) -> float& {
+            return around[static_cast<std::size_t>((hy + 1) * sides + hx + 1)];
+        };
+        for (int row = 0; row < rows; ++row) {
+            for (int column = 0; column < columns; ++column) {
+                for (int hy = -1; hy < 2 * count; ++hy) {
+                    for (int hx = -1; hx < 2 * count; ++hx) {
+                        const double x = column + columnOffset - hx / halfPhases;
+                        const double y = row + rowOffset - hy / halfPhases;
+                        at(hx, hy) = footprintAt(sampler, squareFromPixel, lengthScale, x, y);
+                    }
+                }
+                for (int qy = 0; qy < count; ++qy) {
+                    for (int qx = 0; qx < count; ++qx) {
+                        const std::int32_t phase = phaseIndex(qx, qy);
+                        const float value = at(2 * qx, 2 * qy);
+                        values[static_cast<std::size_t>(phase) * stampSize +
+                               static_cast<std::size_t>(row) * static_cast<std::size_t>(columns) +
+                               static_cast<std::size_t>(column)] = value;
                         if (value != 0.0f) {
+                            Extent& extent = extents[static_cast<std::size_t>(phase)];
                             extent.columnBegin = std::min(extent.columnBegin, column);
                             extent.columnEnd = std::max(extent.columnEnd, column + 1);
                             extent.rowBegin = std::min(extent.rowBegin, row);
                             extent.rowEnd = std::max(extent.rowEnd, row + 1);
                         }
-                        for (const double dy : kAround) {
-                            for (const double dx : kAround) {
+                        for (int dy = -1; dy <= 1; ++dy) {
+                            for (int dx = -1; dx <= 1; ++dx) {
                                 error = std::max(
-                                    error, std::abs(value - exact(px + dx * half, py + dy * half,
-                                                                  column, row)));
+                                    error, std::abs(value - at(2 * qx + dx, 2 * qy + dy)));
                             }
                         }
                     }
