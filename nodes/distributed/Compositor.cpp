@@ -22,6 +22,16 @@ inline glm::vec4 over(const glm::vec4& front, const glm::vec4& back) {
 // the pixels: one message of a layer's part.
 constexpr std::size_t kHeader = 4;
 
+// The pixels of `layer` in `part` (within its region), row after row, to `out`: a message's
+// or a layer's pixels.
+void copyPart(const ImageLayer& layer, const ImageRegion& part, void* out) {
+    const std::size_t rowBytes = sizeof(glm::vec4) * static_cast<std::size_t>(part.width);
+    auto* bytes = static_cast<unsigned char*>(out);
+    for (int y = part.y; rowBytes > 0 && y < part.y + part.height; ++y, bytes += rowBytes) {
+        std::memcpy(bytes, &layer.at(part.x, y), rowBytes);
+    }
+}
+
 std::vector<float> pack(const ImageLayer& layer, const ImageRegion& window) {
     const ImageRegion part = layer.isEmpty() ? ImageRegion{} : intersect(layer.region, window);
     const auto width = static_cast<std::size_t>(part.width);
@@ -31,10 +41,7 @@ std::vector<float> pack(const ImageLayer& layer, const ImageRegion& window) {
     message[1] = static_cast<float>(part.y);
     message[2] = static_cast<float>(part.width);
     message[3] = static_cast<float>(part.height);
-    for (std::size_t row = 0; row < height; ++row) {
-        const glm::vec4* source = &layer.at(part.x, part.y + static_cast<int>(row));
-        std::memcpy(message.data() + kHeader + 4 * width * row, source, sizeof(glm::vec4) * width);
-    }
+    copyPart(layer, part, message.data() + kHeader);
     return message;
 }
 
@@ -42,11 +49,8 @@ std::vector<float> pack(const ImageLayer& layer, const ImageRegion& window) {
 ImageLayer cut(const ImageLayer& layer, const ImageRegion& window) {
     ImageLayer part;
     part.region = layer.isEmpty() ? ImageRegion{} : intersect(layer.region, window);
-    part.pixels.reserve(std::size_t(part.region.width) * std::size_t(part.region.height));
-    for (int y = part.region.y; y < part.region.y + part.region.height; ++y) {
-        const glm::vec4* row = &layer.at(part.region.x, y);
-        part.pixels.insert(part.pixels.end(), row, row + part.region.width);
-    }
+    part.pixels.resize(std::size_t(part.region.width) * std::size_t(part.region.height));
+    copyPart(layer, part.region, part.pixels.data());
     return part;
 }
 
